@@ -1,0 +1,119 @@
+"""Plain data shared by every cycle: expanded moves, the grooving tool, the
+machine state a cycle starts from.
+
+Coordinates are always *radius* X and absolute Z in the program's length unit.
+Diameter/radius programming, incremental words and dialect syntax are handled
+at the edges (the cycle parsers read them, the dialect writers write them).
+"""
+
+from dataclasses import dataclass, field
+from typing import NamedTuple, Optional
+
+from .errors import CycleError
+
+RAPID = "G0"
+FEED = "G1"
+DWELL = "G4"
+
+
+class Move(NamedTuple):
+    """One expanded move of the tool's reference corner.
+
+    kind  RAPID, FEED or DWELL.
+    x, z  target (radius, absolute); for DWELL the position held.
+    f     feed for FEED moves, None = the feed already in force.
+    p     dwell time in seconds for DWELL, else 0.
+    """
+
+    kind: str
+    x: float
+    z: float
+    f: Optional[float] = None
+    p: float = 0.0
+
+
+def rapid(x, z):
+    return Move(RAPID, x, z)
+
+
+def feed(x, z, f=None):
+    return Move(FEED, x, z, f)
+
+
+def dwell(x, z, seconds):
+    return Move(DWELL, x, z, None, seconds)
+
+
+# Plunge directions: which way the tool's front edge cuts.
+MINUS_X = "-X"  # external longitudinal groove, cut-off
+PLUS_X = "+X"  # internal longitudinal groove
+MINUS_Z = "-Z"  # face groove in a face looking toward +Z
+PLUS_Z = "+Z"  # face groove in a face looking toward -Z
+PLUNGE_DIRECTIONS = (MINUS_X, PLUS_X, MINUS_Z, PLUS_Z)
+
+# Which of the two front corners the moves drive.
+REFERENCE_MINUS = "minus"  # the corner on the tool's -Z side (X plunges) or -X side (Z plunges)
+REFERENCE_PLUS = "plus"
+
+
+@dataclass(frozen=True)
+class GroovingTool:
+    """A grooving/parting blade: a flat front edge ``width`` wide with both front
+    corners rounded by ``corner_radius``.
+
+    Expanded moves drive the *reference corner*: the imaginary sharp corner where
+    the front edge meets a side edge. With ``reference="minus"`` (default) that is
+    the side toward -Z for X plunges (the blade extends from the reference toward
+    +Z) and toward -X for Z plunges (the blade extends toward +X).
+    """
+
+    width: float
+    corner_radius: float = 0.0
+    reference: str = REFERENCE_MINUS
+    length: float = 60.0  # usable blade length behind the front edge (simulation, reach checks)
+
+    def validate(self, cycle=None):
+        if not self.width > 0:
+            raise CycleError("tool width", self.width, "must be greater than 0", cycle=cycle)
+        if self.corner_radius < 0:
+            raise CycleError("tool corner radius", self.corner_radius, "must not be negative", cycle=cycle)
+        if not self.corner_radius < self.width / 2:
+            raise CycleError(
+                "tool corner radius",
+                self.corner_radius,
+                "must be less than half the tool width %g" % self.width,
+                cycle=cycle,
+            )
+        if self.reference not in (REFERENCE_MINUS, REFERENCE_PLUS):
+            raise CycleError("tool reference corner", self.reference, "must be 'minus' or 'plus'", cycle=cycle)
+        return self
+
+    @property
+    def reference_offset(self):
+        """Distance from the blade's minus-side edge to the reference corner."""
+        return 0.0 if self.reference == REFERENCE_MINUS else self.width
+
+
+@dataclass
+class MachineState:
+    """Where the tool is and which modes are in force when a cycle is called.
+
+    x is a radius. ``diameter_mode`` says how X *words* are read (G7/DIAMON...),
+    ``incremental`` whether words are G91-style.
+    """
+
+    x: float = 0.0
+    z: float = 0.0
+    feed: Optional[float] = None
+    diameter_mode: bool = True
+    incremental: bool = False
+    metric: bool = True
+    feed_per_rev: bool = False
+
+
+@dataclass
+class Expansion:
+    """What a cycle expands to: the moves, and the state after them."""
+
+    moves: list = field(default_factory=list)
+    plunge: str = MINUS_X

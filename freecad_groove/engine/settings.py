@@ -1,0 +1,55 @@
+"""Every choice the manuals leave open, as one named setting.
+
+The README lists each of these with its default and the manual text that
+leaves it open; change them here, on the command line or in a post's options.
+"""
+
+from dataclasses import dataclass, field, replace
+
+from .moves import GroovingTool
+
+
+@dataclass(frozen=True)
+class Settings:
+    # The tool the cycle runs with (width and corner radius: CYCLE93 and the
+    # pecking cycles read the width to place grooves and check WIDG).
+    tool: GroovingTool = field(default_factory=lambda: GroovingTool(3.0, 0.2))
+
+    # Peck retract "e" of Allen-Bradley G77/G76 (AMP parameter) and of Haas
+    # G75/G74 (setting 22 style), per side. None: 0.5 mm or 0.02 in.
+    peck_retract: float = None
+
+    # CYCLE93: AXFA, DEPG, FAL1, FAL2 read as diameters (840D with DIAMON)
+    # instead of radius values (the seed manual).
+    cycle93_diameter_input: bool = False
+
+    # CYCLE93: steepest contour (degrees away from the groove's own axis) the
+    # paraxial roughing accepts; beyond it the finishing chip would not be
+    # bounded by the allowances.
+    cycle93_max_contour_tilt: float = 45.0
+
+    # Allen-Bradley: True when G07 selects diameter mode and G08 radius mode;
+    # the 9/Series manual uses both readings.
+    ab_g07_is_diameter: bool = True
+
+    # Clearance kept above the material top before a plunge and on traverses,
+    # when the cycle itself has no retract parameter (per side).
+    clearance: float = 1.0
+
+    def retract_e(self, metric=True):
+        if self.peck_retract is not None:
+            return self.peck_retract
+        return 0.5 if metric else 0.02
+
+    def with_tool(self, width=None, corner_radius=None, reference=None):
+        tool = self.tool
+        tool = replace(
+            tool,
+            width=tool.width if width is None else width,
+            corner_radius=tool.corner_radius if corner_radius is None else corner_radius,
+            reference=tool.reference if reference is None else reference,
+        )
+        return replace(self, tool=tool)
+
+
+DEFAULT_SETTINGS = Settings()
