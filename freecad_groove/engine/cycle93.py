@@ -1,0 +1,616 @@
+"""Siemens CYCLE93: grooving on a straight contour element.
+
+    CYCLE93(AXFA, AXSA, WIDG, DEPG, ANGC, ANG1, ANG2, RCO1, RCO2, RCI1, RCI2,
+            FAL1, FAL2, IDEP, DWT, TYP, VRT [, DN])
+
+(Siemens' own names: SPD, SPL, WIDG, DIAG, STA1, ANG1, ANG2, RCO1, RCO2, RCI1,
+RCI2, FAL1, FAL2, IDEP, DTB, VARI, _VRT, _DN.)
+
+Geometry, as this module reads the seed manual (choices marked *):
+- The contour is the straight line through the start point (AXSA, AXFA) at
+  ANGC to the longitudinal axis, ANGC measured counter-clockwise from +Z with
+  X up (so ANGC = 12 on an external groove is a cone whose diameter grows
+  toward +Z)*. The seed example's approach point X80 Z65 clears it.
+- TYP units digit: 1 longitudinal/external/left, 2 face/external/left,
+  3 longitudinal/internal/left, 4 face/internal/left, 5..8 the same "right".
+  Longitudinal: external plunges -X, internal +X; "left" puts the start point
+  on the groove's -Z edge (groove extends toward +Z), "right" on its +Z edge.
+  Face*: external plunges -Z (a face looking toward +Z), internal +Z; axes
+  swapped as for G76/G74: "left" extends the groove from AXFA toward +X,
+  "right" toward -X.
+- DEPG is the paraxial depth (along the plunge axis) from the contour to the
+  groove base, which runs parallel to the contour. WIDG is the width of the
+  base, measured along the groove's own axis (Z for longitudinal grooves), the
+  width the tool width is checked against*. The start point is the top of the
+  flank on the start side; flanks open outward by ANG1/ANG2 from the plunge
+  direction.
+- RCO1/RCO2 round (>0) or chamfer (<0) the part's edges at the top of the
+  flanks, RCI1/RCI2 the corners at the base. Chamfers are CHF (length of the
+  chamfer) for TYP 1..8 and CHR (leg along each element) for TYP 11..18.
+- FAL1 is kept on the base (paraxially), FAL2 on the flanks (normal to them).
+- AXFA, DEPG, FAL1 (longitudinal) and FAL2 (face) are radius values unless
+  Settings.cycle93_diameter_input says the control reads them as diameters.
+
+Expansion (the seed's four steps), driving the tool's reference corner:
+1+2. Paraxial plunges across the opening, equally spaced at most 95 % of
+  (tool width - 2 x corner radius) apart, from the start side*; each to the
+  roughing profile (final profile less the allowances) in equal infeeds of at
+  most IDEP, each followed by a rapid chip-breaking retract of VRT (0 = 1 mm)
+  and a feed back in; DWT dwell at the bottom; rapid retract to VRT above the
+  contour. Traverses run VRT above the contour, parallel to it.
+3. When flanks are angled, base corners rounded or the contour oblique, a
+  contour-parallel pass on the roughing profile from each edge toward the
+  groove removes the plunges' staircase.
+4. Finishing passes on the final profile from each edge to the groove centre,
+  already compensated for the corner radius (the path is the exact boundary
+  of where the blade may go), when there is an allowance or an edge radius.
+The cycle approaches along the longitudinal axis first for external grooves
+(the facing axis for internal ones), and returns to its start point the
+reverse way*.
+"""
+
+import math
+import re
+from dataclasses import dataclass, fields
+from typing import ClassVar, Optional
+
+from .envelope import Envelope, arc_points
+from .errors import CycleError, format_value
+from .moves import (
+    MINUS_X,
+    MINUS_Z,
+    PLUS_X,
+    PLUS_Z,
+    REFERENCE_PLUS,
+    dwell,
+    feed,
+    rapid,
+)
+from .settings import DEFAULT_SETTINGS
+
+NAME = "CYCLE93"
+PARAMS = (
+    "AXFA", "AXSA", "WIDG", "DEPG", "ANGC", "ANG1", "ANG2", "RCO1", "RCO2",
+    "RCI1", "RCI2", "FAL1", "FAL2", "IDEP", "DWT", "TYP", "VRT", "DN",
+)
+ALARM_TYP = 61002
+ALARM_WIDTH = 61602
+ALARM_FORM = 61603
+MAX_FLANK_ANGLE = 89.999
+WIDTH_STEP_FACTOR = 0.95  # seed: at most 95 % of (tool width - edge radii)
+DEFAULT_VRT_MM = 1.0  # seed: VRT = 0 means 1 mm
+DEFAULT_VRT_INCH = 0.04
+PATH_TOLERANCE = 0.0002  # chord error allowed on contour passes and arcs
+EPS = 1e-9
+
+
+def _err(param, value, rule, alarm=None):
+    return CycleError(param, value, rule, alarm=alarm, cycle=NAME)
+
+
+@dataclass(frozen=True)
+class Cycle93:
+    """One CYCLE93 call, its parameters as programmed (None = left empty)."""
+
+    NAME: ClassVar[str] = NAME
+
+    axfa: Optional[float] = None
+    axsa: Optional[float] = None
+    widg: Optional[float] = None
+    depg: Optional[float] = None
+    angc: Optional[float] = None
+    ang1: Optional[float] = None
+    ang2: Optional[float] = None
+    rco1: Optional[float] = None
+    rco2: Optional[float] = None
+    rci1: Optional[float] = None
+    rci2: Optional[float] = None
+    fal1: Optional[float] = None
+    fal2: Optional[float] = None
+    idep: Optional[float] = None
+    dwt: Optional[float] = None
+    typ: Optional[int] = None
+    vrt: Optional[float] = None
+    dn: Optional[int] = None
+
+    # -- text ---------------------------------------------------------------
+    def emit(self):
+        values = [getattr(self, f.name) for f in fields(self)]
+        if values[-1] is None:
+            values = values[:-1]
+        return "CYCLE93(%s)" % ", ".join("" if v is None else format_value(v) for v in values)
+
+    @classmethod
+    def parse(cls, text):
+        m = re.search(r"CYCLE93\s*\((.*)\)", text, re.IGNORECASE)
+        if not m:
+            raise _err("call", text.strip(), "must read CYCLE93(AXFA, AXSA, ..., VRT)")
+        args = [a.strip() for a in m.group(1).split(",")]
+        if len(args) > len(PARAMS):
+            raise _err("call", len(args), "takes at most %d parameters" % len(PARAMS))
+        values = {}
+        for name, arg in zip(PARAMS, args):
+            if arg == "":
+                continue
+            try:
+                num = float(arg)
+            except ValueError:
+                raise _err(name, arg, "must be a number (variables and expressions are not evaluated)") from None
+            if not math.isfinite(num):
+                raise _err(name, arg, "must be a finite number")
+            if name in ("TYP", "DN"):
+                if num != int(num):
+                    raise _err(name, num, "must be a whole number")
+                num = int(num)
+            values[name.lower()] = num
+        return cls(**values)
+
+    # -- reading the parameters ---------------------------------------------
+    def value(self, name, default=0.0):
+        v = getattr(self, name.lower())
+        return default if v is None else v
+
+    def kind(self):
+        """(longitudinal, external, left, chamfers_as_chr) from TYP."""
+        typ = self.typ
+        if typ is None or typ not in set(range(1, 9)) | set(range(11, 19)):
+            raise _err("TYP", typ, "must be 1..8 or 11..18", ALARM_TYP)
+        unit = typ % 10
+        return unit in (1, 3, 5, 7), unit in (1, 2, 5, 6), unit <= 4, typ > 10
+
+    def validate(self, settings=DEFAULT_SETTINGS, metric=True):
+        self.geometry(settings, metric)
+        return self
+
+    def plunge_direction(self):
+        longitudinal, external, _left, _chr = self.kind()
+        if longitudinal:
+            return MINUS_X if external else PLUS_X
+        return MINUS_Z if external else PLUS_Z
+
+    def geometry(self, settings=DEFAULT_SETTINGS, metric=True):
+        """Validate and return the groove's GrooveGeometry."""
+        return GrooveGeometry(self, settings, metric)
+
+    # -- expansion ----------------------------------------------------------
+    def expand(self, state, settings=DEFAULT_SETTINGS):
+        geo = self.geometry(settings, state.metric)
+        return geo.expand(state.x, state.z)
+
+
+class Frame:
+    """Maps the groove frame (u across the groove from the start point, v out
+    of the material) to world (x radius, z) and blade positions to the
+    reference corner."""
+
+    def __init__(self, x0, z0, longitudinal, su, sv, width, ref_plus):
+        self.x0, self.z0 = x0, z0
+        self.longitudinal = longitudinal
+        self.su, self.sv = su, sv
+        self.width = width
+        self.ref_shift = width if ref_plus else 0.0
+
+    def point(self, u, v):
+        """World (x, z) of a groove-frame point."""
+        if self.longitudinal:
+            return self.x0 + self.sv * v, self.z0 + self.su * u
+        return self.x0 + self.su * u, self.z0 + self.sv * v
+
+    def blade(self, u, v):
+        """World reference corner (x, z) of the blade whose minus-u edge is at u."""
+        lo = u if self.su > 0 else -(u + self.width)
+        along = lo + self.ref_shift
+        if self.longitudinal:
+            return self.x0 + self.sv * v, self.z0 + along
+        return self.x0 + along, self.z0 + self.sv * v
+
+    def blade_of(self, x, z):
+        """Inverse of blade(): the blade position (u, v) for a reference corner."""
+        if self.longitudinal:
+            along, v = z - self.z0, self.sv * (x - self.x0)
+        else:
+            along, v = x - self.x0, self.sv * (z - self.z0)
+        lo = along - self.ref_shift
+        u = lo if self.su > 0 else -lo - self.width
+        return u, v
+
+
+def _unit(du, dv):
+    n = math.hypot(du, dv)
+    return du / n, dv / n
+
+
+def _intersect(p, d, q, e):
+    """Intersection of lines p + t d and q + s e."""
+    den = d[0] * e[1] - d[1] * e[0]
+    if abs(den) < 1e-15:
+        return None
+    t = ((q[0] - p[0]) * e[1] - (q[1] - p[1]) * e[0]) / den
+    return p[0] + t * d[0], p[1] + t * d[1]
+
+
+class _Corner:
+    """A rounded (value > 0) or chamfered (value < 0) corner between the
+    incoming direction a and the outgoing direction b at vertex V."""
+
+    def __init__(self, vertex, a, b, value, chr_mode):
+        self.vertex = vertex
+        self.value = value
+        a, b = _unit(*a), _unit(*b)
+        self.a, self.b = a, b
+        cos_t = max(-1.0, min(1.0, a[0] * b[0] + a[1] * b[1]))
+        self.turn = math.acos(cos_t)  # deflection angle
+        self.left = a[0] * b[1] - a[1] * b[0] > 0
+        half = self.turn / 2
+        if value > 0:
+            self.length = value * math.tan(half)
+        elif value < 0:
+            self.length = -value if chr_mode else -value / (2 * math.cos(half))
+        else:
+            self.length = 0.0
+
+    def points(self, tol=PATH_TOLERANCE):
+        v, a, b, length = self.vertex, self.a, self.b, self.length
+        if length <= 0:
+            return [v]
+        t_in = (v[0] - length * a[0], v[1] - length * a[1])
+        t_out = (v[0] + length * b[0], v[1] + length * b[1])
+        if self.value < 0:
+            return [t_in, t_out]
+        r = self.value
+        n = (-a[1], a[0]) if self.left else (a[1], -a[0])
+        c = (t_in[0] + r * n[0], t_in[1] + r * n[1])
+        a0 = math.atan2(t_in[1] - c[1], t_in[0] - c[0])
+        sweep = self.turn if self.left else -self.turn
+        # Material-side bumps (right turns) get a tangent polygon outside the
+        # arc, bowls get chords inside it: both err toward more material.
+        return arc_points(c, r, a0, a0 + sweep, outside=not self.left, tol=tol)
+
+
+class GrooveGeometry:
+    """A validated CYCLE93 groove: its frame, final and roughing profiles and
+    the expansion into moves."""
+
+    def __init__(self, call, settings, metric=True):
+        self.call = call
+        self.settings = settings
+        self.metric = metric
+        tool = settings.tool.validate(NAME)
+        self.tool = tool
+        longitudinal, external, left, chr_mode = call.kind()
+        self.longitudinal, self.external, self.left = longitudinal, external, left
+        self.chr_mode = chr_mode
+        p = self._read_parameters(call, settings, metric)
+        self.params = p
+        su = 1.0 if left else -1.0
+        sv = 1.0 if external else -1.0
+        self.frame = Frame(p["AXFA"], p["AXSA"], longitudinal, su, sv, tool.width, tool.reference == REFERENCE_PLUS)
+        self.slope = self._contour_slope(p["ANGC"], su, sv)
+        self._build(p)
+
+    # -- parameters ---------------------------------------------------------
+    @staticmethod
+    def _read_parameters(call, settings, metric):
+        p = {}
+        for name in ("AXFA", "AXSA", "WIDG", "DEPG"):
+            v = getattr(call, name.lower())
+            if v is None:
+                raise _err(name, None, "must be programmed")
+            p[name] = float(v)
+        for name in ("ANGC", "ANG1", "ANG2", "RCO1", "RCO2", "RCI1", "RCI2", "FAL1", "FAL2", "DWT", "VRT"):
+            p[name] = float(call.value(name))
+        if call.idep is None:
+            raise _err("IDEP", None, "must be programmed in all cases")
+        p["IDEP"] = float(call.idep)
+        longitudinal = call.kind()[0]
+        if settings.cycle93_diameter_input:
+            p["AXFA"] /= 2
+            if longitudinal:
+                p["DEPG"] /= 2
+                p["FAL1"] /= 2
+            else:
+                p["FAL2"] /= 2
+        if p["WIDG"] < 0:
+            raise _err("WIDG", call.widg, "must be entered without sign")
+        if p["WIDG"] == 0 or settings.tool.width <= 0:
+            pass  # reported below as alarm 61602
+        if settings.tool.width <= 0:
+            raise _err("tool width", settings.tool.width, "must be greater than 0 (cutting edge width 0)", ALARM_WIDTH)
+        if p["WIDG"] < settings.tool.width - EPS:
+            raise _err("WIDG", call.widg, "groove is narrower than the tool width %s" % format_value(settings.tool.width), ALARM_WIDTH)
+        if p["DEPG"] <= 0:
+            raise _err("DEPG", call.depg, "must be greater than 0 (enter without sign)")
+        if not 0 <= p["ANGC"] <= 180:
+            raise _err("ANGC", call.angc, "must be in the range 0 <= ANGC <= 180 degrees")
+        for name in ("ANG1", "ANG2"):
+            if not 0 <= p[name] < MAX_FLANK_ANGLE:
+                raise _err(name, getattr(call, name.lower()), "must be in the range 0 <= %s < 89.999 degrees" % name)
+        if p["IDEP"] <= 0:
+            raise _err("IDEP", call.idep, "must be greater than 0 (enter without sign)")
+        for name in ("FAL1", "FAL2", "DWT", "VRT"):
+            if p[name] < 0:
+                raise _err(name, getattr(call, name.lower()), "must not be negative (enter without sign)")
+        if p["FAL1"] >= p["DEPG"]:
+            raise _err("FAL1", call.fal1, "base allowance must be less than the groove depth DEPG %s" % format_value(call.depg))
+        if 2 * p["FAL2"] >= p["WIDG"]:
+            raise _err("FAL2", call.fal2, "two flank allowances must be less than the groove width WIDG %s" % format_value(call.widg))
+        if p["VRT"] == 0:
+            p["VRT"] = DEFAULT_VRT_MM if metric else DEFAULT_VRT_INCH
+        return p
+
+    def _contour_slope(self, angc, su, sv):
+        a = math.radians(angc)
+        if self.longitudinal:
+            c = math.cos(a)
+            if abs(c) < 1e-9:
+                raise _err("ANGC", angc, "a longitudinal groove needs a contour that is not perpendicular to the longitudinal axis", ALARM_FORM)
+            slope = su * sv * math.tan(a)
+        else:
+            s = math.sin(a)
+            if abs(s) < 1e-9:
+                raise _err("ANGC", angc, "face groove on a contour element parallel to the longitudinal axis", ALARM_FORM)
+            slope = su * sv * math.cos(a) / s
+        tilt = math.degrees(math.atan(abs(slope)))
+        limit = self.settings.cycle93_max_contour_tilt
+        if tilt > limit + 1e-9:
+            axis = "longitudinal" if self.longitudinal else "facing"
+            raise _err(
+                "ANGC", angc,
+                "contour is %.3f degrees off the %s axis; paraxial roughing accepts at most %g (setting cycle93_max_contour_tilt)"
+                % (tilt, axis, limit),
+            )
+        return slope
+
+    # -- profile ------------------------------------------------------------
+    def _build(self, p):
+        m = self.slope
+        depth, width = p["DEPG"], p["WIDG"]
+        t1, t2 = math.tan(math.radians(p["ANG1"])), math.tan(math.radians(p["ANG2"]))
+        contour_dir = (1.0, m)
+        d1 = (t1, -1.0)  # flank 1, going down into the groove
+        d2 = (t2, 1.0)  # flank 2, going up out of it
+        if 1 + m * t1 <= 1e-9:
+            raise _err("ANG1", p["ANG1"], "flank 1 does not reach the groove base on this contour (ANGC %s)" % format_value(p["ANGC"]), ALARM_FORM)
+        if 1 - m * t2 <= 1e-9:
+            raise _err("ANG2", p["ANG2"], "flank 2 does not reach the groove base on this contour (ANGC %s)" % format_value(p["ANGC"]), ALARM_FORM)
+        p1 = (0.0, 0.0)
+        b1 = _intersect(p1, d1, (0.0, -depth), contour_dir)
+        b2 = (b1[0] + width, b1[1] + m * width)
+        p2 = _intersect(b2, d2, p1, contour_dir)
+        self.corners_sharp = (p1, b1, b2, p2)
+        chr_mode = self.chr_mode
+        final = [
+            _Corner(p1, contour_dir, d1, p["RCO1"], chr_mode),
+            _Corner(b1, d1, contour_dir, p["RCI1"], chr_mode),
+            _Corner(b2, contour_dir, d2, p["RCI2"], chr_mode),
+            _Corner(p2, d2, contour_dir, p["RCO2"], chr_mode),
+        ]
+        self._check_form(final, (p1, b1, b2, p2), p)
+        self.final_corners = final
+        # Roughing profile: flanks moved in by FAL2 (normal), base up by FAL1.
+        fal1, fal2 = p["FAL1"], p["FAL2"]
+        n1 = _unit(1.0, t1)
+        n2 = _unit(-1.0, t2)
+        q1 = (p1[0] + fal2 * n1[0], p1[1] + fal2 * n1[1])
+        q2 = (b2[0] + fal2 * n2[0], b2[1] + fal2 * n2[1])
+        base_r = (0.0, -depth + fal1)
+        r1 = _intersect(q1, d1, (0.0, 0.0), contour_dir)
+        rb1 = _intersect(q1, d1, base_r, contour_dir)
+        rb2 = _intersect(q2, d2, base_r, contour_dir)
+        r2 = _intersect(q2, d2, (0.0, 0.0), contour_dir)
+        rough = [
+            _Corner(r1, contour_dir, d1, 0.0, chr_mode),
+            _Corner(rb1, d1, contour_dir, p["RCI1"], chr_mode),
+            _Corner(rb2, contour_dir, d2, p["RCI2"], chr_mode),
+            _Corner(r2, d2, contour_dir, 0.0, chr_mode),
+        ]
+        rough_base = rb2[0] - rb1[0]
+        fits = rough_base >= self.tool.width and rough[1].length + rough[2].length < rough_base * math.hypot(1, m)
+        # When the allowances leave no room for the blade, rough to the final
+        # profile (without its edge features) rather than not at all.
+        if not fits:
+            rough = [_Corner(p1, contour_dir, d1, 0.0, chr_mode)] + final[1:3] + [_Corner(p2, d2, contour_dir, 0.0, chr_mode)]
+        self.rough_corners = rough
+        self.final_top = self._material_top(final)
+        self.rough_top = self._material_top(rough)
+        tool = self.tool
+        self.final_env = Envelope(self.final_top, tool.width, tool.corner_radius)
+        self.rough_env = Envelope(self.rough_top, tool.width, tool.corner_radius)
+
+    def _check_form(self, corners, sharp, p):
+        c_p1, c_b1, c_b2, c_p2 = corners
+        p1, b1, b2, p2 = sharp
+        base_len = math.dist(b1, b2)
+        if c_b1.length + c_b2.length >= base_len - 1e-9 and (c_b1.length > 0 or c_b2.length > 0):
+            raise _err(
+                "RCI1/RCI2", (p["RCI1"], p["RCI2"]),
+                "radii/chamfers at the groove base touch or intersect (they need %s of the %s base)"
+                % (format_value(c_b1.length + c_b2.length), format_value(base_len)),
+                ALARM_FORM,
+            )
+        for name, outer, inner, top, bottom in (
+            ("1", c_p1, c_b1, p1, b1),
+            ("2", c_p2, c_b2, p2, b2),
+        ):
+            flank = math.dist(top, bottom)
+            if outer.length + inner.length > flank + 1e-9:
+                raise _err(
+                    "RCO%s/RCI%s" % (name, name), (p["RCO" + name], p["RCI" + name]),
+                    "radius/chamfer at the edge and at the base of flank %s overlap (they need %s of the %s flank)"
+                    % (name, format_value(outer.length + inner.length), format_value(flank)),
+                    ALARM_FORM,
+                )
+
+    def _material_top(self, corners):
+        pts = []
+        for c in corners:
+            pts.extend(c.points())
+        m = self.slope
+        reach = self.tool.width + self.params["VRT"] + 1.0
+        lo, hi = pts[0][0] - reach, pts[-1][0] + reach
+        return [(lo, m * lo)] + pts + [(hi, m * hi)]
+
+    # -- derived quantities -------------------------------------------------
+    def opening(self, top):
+        """u of the first and last point where the profile leaves the contour."""
+        return top[1][0], top[-2][0]
+
+    def contour_top(self, u):
+        """Highest contour level under the blade at u."""
+        m = self.slope
+        return max(m * u, m * (u + self.tool.width))
+
+    def clearance(self, u):
+        return self.contour_top(u) + self.params["VRT"]
+
+    def region_uv(self):
+        """The finished groove region (closed polygon, groove frame)."""
+        top = self.final_top[1:-1]
+        return top + [top[0]]
+
+    def region_world(self):
+        """The finished groove region as world (x, z) points."""
+        return [self.frame.point(u, v) for u, v in self.region_uv()]
+
+    def stock_world(self, margin=None):
+        """A window of the part's material around the groove, world (x, z):
+        everything below the contour line, for simulation."""
+        m = self.slope
+        lo, hi = self.final_top[0][0], self.final_top[-1][0]
+        if margin is not None:
+            lo, hi = self.final_top[1][0] - margin, self.final_top[-2][0] + margin
+        bottom = min(v for _u, v in self.final_top) - 2 * self.tool.width - 1.0
+        pts = [(lo, m * lo), (hi, m * hi), (hi, bottom), (lo, bottom)]
+        return [self.frame.point(u, v) for u, v in pts]
+
+    def plunge_positions(self):
+        lo, hi = self.opening(self.rough_top)
+        tool = self.tool
+        hi -= tool.width
+        step = WIDTH_STEP_FACTOR * (tool.width - 2 * tool.corner_radius)
+        if hi <= lo + EPS:
+            return [0.5 * (lo + hi)]
+        n = int(math.ceil((hi - lo) / step - 1e-9))
+        return [lo + (hi - lo) * k / n for k in range(n + 1)]
+
+    # -- moves --------------------------------------------------------------
+    def expand(self, x_start, z_start):
+        """Moves from the reference-corner position (x_start radius, z_start)."""
+        p = self.params
+        frame = self.frame
+        out = []
+        vrt, idep, dwt = p["VRT"], p["IDEP"], p["DWT"]
+
+        last = [None]
+
+        def go(kind, u, v):
+            x, z = frame.blade(u, v)
+            move = rapid(x, z) if kind == "r" else feed(x, z)
+            if not out or out[-1] != move:
+                out.append(move)
+            last[0] = u
+
+        us, vs = frame.blade_of(x_start, z_start)
+        positions = self.plunge_positions()
+        u_first = positions[0]
+        along_first = self.longitudinal == self.external  # seed: external grooves move along Z first
+        approach = self._approach(us, vs, u_first, along_first)
+        for u, v in approach:
+            go("r", u, v)
+
+        # Steps 1 and 2: plunges in equal infeeds with chip-breaking retracts.
+        rough = self.rough_env
+        deepest = min(rough.lowest(u) for u in positions)
+        full_depth = []
+        for u in positions:
+            bottom = rough.lowest(u)
+            top = self.contour_top(u)
+            clear = top + vrt
+            if bottom >= top - EPS:
+                continue  # the blade cannot enter here without cutting the allowance
+            go("r", u, clear)
+            total = top - bottom
+            n = max(1, int(math.ceil(total / idep - 1e-9)))
+            inc = total / n
+            for k in range(1, n + 1):
+                level = bottom if k == n else top - k * inc
+                go("f", u, level)
+                if k < n:
+                    go("r", u, level + vrt)
+            if dwt > 0:
+                x, z = frame.blade(u, bottom)
+                out.append(dwell(x, z, dwt))
+            go("r", u, clear)
+            if bottom <= deepest + 1e-6:
+                full_depth.append(u)
+
+        # Step 3: take the plunges' staircase off flanks, base corners and an oblique base.
+        m = self.slope
+        staircase = p["ANG1"] > 0 or p["ANG2"] > 0 or p["RCI1"] != 0 or p["RCI2"] != 0 or m != 0
+        if staircase:
+            if m != 0 or not full_depth:
+                self._contour_passes(rough, self.rough_top, go, None)
+            else:
+                self._contour_passes(rough, self.rough_top, go, (full_depth[0], full_depth[-1]))
+        # Step 4: finishing on the final profile, unless the roughing already
+        # ran on it (no allowances, no edge features).
+        if self.rough_top != self.final_top:
+            self._contour_passes(self.final_env, self.final_top, go, None)
+
+        # Back to the start point the way the approach came.
+        for u, v in self._retreat(us, vs, last[0], along_first):
+            go("r", u, v)
+        return out
+
+    def _contour_passes(self, env, top, go, stop_at):
+        """From each edge of the opening toward the middle along the envelope."""
+        r, w = self.tool.corner_radius, self.tool.width
+        left, right = self.opening(top)
+        ua = left - r
+        ub = right - w + r
+        mid = 0.5 * (ua + ub)
+        ends = (mid, mid) if stop_at is None else (min(stop_at[0], mid), max(stop_at[1], mid))
+        for start, end in ((ua, ends[0]), (ub, ends[1])):
+            go("r", start, self.clearance(start))
+            pts = env.trace(start, end, PATH_TOLERANCE)
+            for u, v in pts:
+                go("f", u, v)
+            go("r", end, self.clearance(end))
+
+    def _leg_clear(self, u_from, u_to, level):
+        """True when a blade moving along u at ``level`` stays above the contour."""
+        lo, hi = min(u_from, u_to), max(u_from, u_to)
+        return level >= max(self.contour_top(lo), self.contour_top(hi)) - 1e-9
+
+    def _approach(self, us, vs, u_first, along_first):
+        if not self._leg_clear(us, us, vs):
+            x, z = self.frame.blade(us, vs)
+            raise _err(
+                "start point", None,
+                "X%s Z%s (radius X) is inside the part: the tool must stand outside the contour before the call"
+                % (format_value(x), format_value(z)),
+            )
+        clear = self.clearance(u_first)
+        if along_first:
+            if not self._leg_clear(us, u_first, vs):
+                x, z = self.frame.blade(us, vs)
+                raise _err(
+                    "start point", None,
+                    "X%s Z%s (radius X): moving from it to the groove along the %s axis would cut the part"
+                    % (format_value(x), format_value(z), "longitudinal" if self.longitudinal else "facing"),
+                )
+            return [(u_first, vs), (u_first, clear)]
+        level = max(clear, max(self.contour_top(us), self.contour_top(u_first)) + self.params["VRT"])
+        legs = [(us, level), (u_first, level)]
+        if level > clear:
+            legs.append((u_first, clear))
+        return legs
+
+    def _retreat(self, us, vs, u_last, along_first):
+        if along_first:
+            if self._leg_clear(u_last, us, vs):
+                return [(u_last, vs), (us, vs)]
+            level = max(self.contour_top(us), self.contour_top(u_last)) + self.params["VRT"]
+            return [(u_last, level), (us, level), (us, vs)]
+        level = max(self.clearance(u_last), max(self.contour_top(us), self.contour_top(u_last)) + self.params["VRT"])
+        return [(u_last, level), (us, level), (us, vs)]
