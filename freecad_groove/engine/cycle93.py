@@ -275,6 +275,8 @@ class GrooveGeometry:
         self.call = call
         self.settings = settings
         self.metric = metric
+        if not settings.tool.width > 0:
+            raise _err("tool width", settings.tool.width, "cutting edge width must be greater than 0", ALARM_WIDTH)
         tool = settings.tool.validate(NAME)
         self.tool = tool
         longitudinal, external, left, chr_mode = call.kind()
@@ -312,10 +314,6 @@ class GrooveGeometry:
                 p["FAL2"] /= 2
         if p["WIDG"] < 0:
             raise _err("WIDG", call.widg, "must be entered without sign")
-        if p["WIDG"] == 0 or settings.tool.width <= 0:
-            pass  # reported below as alarm 61602
-        if settings.tool.width <= 0:
-            raise _err("tool width", settings.tool.width, "must be greater than 0 (cutting edge width 0)", ALARM_WIDTH)
         if p["WIDG"] < settings.tool.width - EPS:
             raise _err("WIDG", call.widg, "groove is narrower than the tool width %s" % format_value(settings.tool.width), ALARM_WIDTH)
         if p["DEPG"] <= 0:

@@ -1,0 +1,339 @@
+"""CYCLE93: parameters, validation (with the Siemens alarms), geometry and the
+moves' structure. The material-removal proof is in test_cycle93_simulation.py."""
+
+import math
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
+from freecad_groove.engine.cycle93 import Cycle93
+from freecad_groove.engine.moves import DWELL, FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID
+
+SEED_CALL = "CYCLE93(35, 60, 30, 25, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)"
+SEED_START = MachineState(x=40.0, z=65.0)  # N30 G00 X80 Z65, X as a diameter
+TOOL = Settings(tool=GroovingTool(3.0, 0.4))
+
+
+def call(**kw):
+    """A plain external longitudinal groove, with overrides."""
+    base = dict(
+        axfa=20.0, axsa=-10.0, widg=6.0, depg=3.0, angc=0.0, ang1=0.0, ang2=0.0,
+        rco1=0.0, rco2=0.0, rci1=0.0, rci2=0.0, fal1=0.0, fal2=0.0, idep=1.0,
+        dwt=0.0, typ=5, vrt=0.0,
+    )
+    base.update(kw)
+    return Cycle93(**base)
+
+
+# -- text -----------------------------------------------------------------------
+
+
+def test_seed_call_parses_field_by_field():
+    c = Cycle93.parse("N40 " + SEED_CALL)
+    assert (c.axfa, c.axsa, c.widg, c.depg, c.angc) == (35, 60, 30, 25, 12)
+    assert (c.ang1, c.ang2, c.rco1, c.rco2, c.rci1, c.rci2) == (15, 16, 0, 0, -2, -2)
+    assert (c.fal1, c.fal2, c.idep, c.dwt, c.typ, c.vrt, c.dn) == (1, 1, 10, 1, 5, 0, None)
+    assert c.emit() == SEED_CALL
+
+
+def test_empty_positions_are_kept_and_dn_is_optional():
+    c = Cycle93.parse("CYCLE93(35, 60, 30, 25, , , , , , , , , , 2, , 5, , 2)")
+    assert c.angc is None and c.vrt is None and c.dn == 2
+    assert c.emit() == "CYCLE93(35, 60, 30, 25, , , , , , , , , , 2, , 5, , 2)"
+    assert Cycle93.parse(c.emit()) == c
+
+
+numbers = st.one_of(st.none(), st.integers(-500, 500).map(float), st.decimals(-500, 500, places=3).map(float))
+
+
+@given(
+    values=st.lists(numbers, min_size=17, max_size=17),
+    typ=st.one_of(st.none(), st.integers(0, 20)),
+    dn=st.one_of(st.none(), st.integers(0, 99)),
+)
+def test_parse_emit_round_trip(values, typ, dn):
+    names = ["axfa", "axsa", "widg", "depg", "angc", "ang1", "ang2", "rco1", "rco2", "rci1", "rci2",
+             "fal1", "fal2", "idep", "dwt", "typ", "vrt"]
+    kw = dict(zip(names, values))
+    kw["typ"] = typ
+    c = Cycle93(**kw, dn=dn)
+    assert Cycle93.parse(c.emit()) == c
+
+
+@pytest.mark.parametrize(
+    "text, param",
+    [
+        ("CYCLE93(35, 60, 30, SPD)", "DEPG"),
+        ("CYCLE93(35, 60, 30, 25, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 5.5)", "TYP"),
+        ("CYCLE93(" + ", ".join(["1"] * 19) + ")", "call"),
+        ("G0 X10", "call"),
+    ],
+)
+def test_unreadable_calls_name_the_parameter(text, param):
+    with pytest.raises(CycleError) as e:
+        Cycle93.parse(text)
+    assert e.value.parameter == param
+    assert str(e.value).startswith("CYCLE93 " + param)
+
+
+# -- validation: every rule, its message and its alarm ------------------------------
+
+
+@pytest.mark.parametrize(
+    "kw, param, alarm, words",
+    [
+        (dict(typ=0), "TYP", 61002, "1..8 or 11..18"),
+        (dict(typ=9), "TYP", 61002, "1..8 or 11..18"),
+        (dict(typ=10), "TYP", 61002, "1..8 or 11..18"),
+        (dict(typ=19), "TYP", 61002, "1..8 or 11..18"),
+        (dict(typ=None), "TYP", 61002, "1..8 or 11..18"),
+        (dict(angc=-0.5), "ANGC", None, "0 <= ANGC <= 180"),
+        (dict(angc=180.5), "ANGC", None, "0 <= ANGC <= 180"),
+        (dict(ang1=89.999), "ANG1", None, "0 <= ANG1 < 89.999"),
+        (dict(ang1=-1), "ANG1", None, "0 <= ANG1 < 89.999"),
+        (dict(ang2=90), "ANG2", None, "0 <= ANG2 < 89.999"),
+        (dict(idep=None), "IDEP", None, "must be programmed"),
+        (dict(idep=0), "IDEP", None, "greater than 0"),
+        (dict(idep=-1), "IDEP", None, "greater than 0"),
+        (dict(widg=-6), "WIDG", None, "without sign"),
+        (dict(widg=2.5), "WIDG", 61602, "narrower than the tool width 3"),
+        (dict(widg=0), "WIDG", 61602, "narrower than the tool width"),
+        (dict(depg=0), "DEPG", None, "greater than 0"),
+        (dict(depg=-3), "DEPG", None, "greater than 0"),
+        (dict(fal1=-0.1), "FAL1", None, "must not be negative"),
+        (dict(fal1=3), "FAL1", None, "less than the groove depth"),
+        (dict(fal2=-0.1), "FAL2", None, "must not be negative"),
+        (dict(fal2=3), "FAL2", None, "less than the groove width"),
+        (dict(vrt=-1), "VRT", None, "must not be negative"),
+        (dict(dwt=-1), "DWT", None, "must not be negative"),
+        (dict(axfa=None), "AXFA", None, "must be programmed"),
+        (dict(depg=None), "DEPG", None, "must be programmed"),
+        (dict(depg=5, rci1=3.5, rci2=2.5), "RCI1/RCI2", 61603, "touch or intersect"),
+        (dict(rci1=3, rci2=3), "RCI1/RCI2", 61603, "touch or intersect"),
+        (dict(typ=15, depg=4, rci1=-3.5, rci2=-3), "RCI1/RCI2", 61603, "touch or intersect"),
+        (dict(typ=2, angc=0), "ANGC", 61603, "face groove on a contour element parallel"),
+        (dict(typ=6, angc=180), "ANGC", 61603, "face groove on a contour element parallel"),
+        (dict(typ=5, angc=90), "ANGC", 61603, "not perpendicular"),
+        (dict(angc=50), "ANGC", None, "cycle93_max_contour_tilt"),
+        (dict(typ=2, angc=40), "ANGC", None, "cycle93_max_contour_tilt"),
+        (dict(rco1=2, rci1=1.5), "RCO1/RCI1", 61603, "overlap"),
+        (dict(typ=1, angc=40, ang2=70), "ANG2", 61603, "does not reach the groove base"),
+    ],
+)
+def test_validation_rule(kw, param, alarm, words):
+    with pytest.raises(CycleError) as e:
+        call(**kw).validate(TOOL)
+    err = e.value
+    assert err.parameter == param
+    assert err.alarm == alarm
+    assert words in str(err)
+    if err.value is not None:
+        assert "=" in str(err)  # the value is printed
+    if alarm is not None:
+        assert str(err).endswith("(alarm %d)" % alarm)
+
+
+def test_message_names_parameter_value_rule_and_alarm():
+    with pytest.raises(CycleError) as e:
+        call(widg=2.5).validate(TOOL)
+    assert str(e.value) == "CYCLE93 WIDG=2.5: groove is narrower than the tool width 3 (alarm 61602)"
+
+
+@pytest.mark.parametrize(
+    "width, radius, alarm, words",
+    [(0.0, 0.0, 61602, "cutting edge width must be greater than 0"), (3.0, 1.5, None, "less than half")],
+)
+def test_tool_rules(width, radius, alarm, words):
+    with pytest.raises(CycleError) as e:
+        call().validate(Settings(tool=GroovingTool(width, radius)))
+    assert e.value.alarm == alarm
+    assert words in str(e.value)
+
+
+def test_start_point_inside_the_part_is_refused():
+    with pytest.raises(CycleError) as e:
+        call().expand(MachineState(x=15.0, z=0.0), TOOL)
+    assert e.value.parameter == "start point"
+    assert "inside the part" in str(e.value)
+
+
+def test_start_point_whose_approach_would_cut_is_refused():
+    # External groove approaches along Z first: from X19 (radius), below the
+    # surface at radius 20 but beside the groove, the Z move would cut.
+    with pytest.raises(CycleError) as e:
+        call(axsa=-10.0).expand(MachineState(x=19.0, z=30.0), TOOL)
+    assert e.value.parameter == "start point"
+
+
+def test_base_radii_that_just_fit_are_accepted():
+    call(rci1=1.4, rci2=1.4).validate(TOOL)  # 2.8 of a 6 mm base
+
+
+# -- geometry ---------------------------------------------------------------------
+
+
+def extent(moves):
+    xs = [m.x for m in moves]
+    zs = [m.z for m in moves]
+    return min(xs), max(xs), min(zs), max(zs)
+
+
+@pytest.mark.parametrize(
+    "typ, plunge",
+    [(1, MINUS_X), (5, MINUS_X), (3, PLUS_X), (7, PLUS_X), (2, MINUS_Z), (6, MINUS_Z), (4, PLUS_Z), (8, PLUS_Z),
+     (11, MINUS_X), (18, PLUS_Z)],
+)
+def test_typ_units_digit_selects_the_plunge_direction(typ, plunge):
+    assert call(typ=typ).plunge_direction() == plunge
+
+
+def test_left_and_right_longitudinal_grooves_extend_toward_plus_and_minus_z():
+    sharp = lambda c: [c.geometry(TOOL).frame.point(u, v) for u, v in c.geometry(TOOL).corners_sharp]
+    right = sharp(call(typ=5))  # start point on the right: groove toward -Z
+    left = sharp(call(typ=1))
+    assert max(z for _x, z in right) == pytest.approx(-10) and min(z for _x, z in right) == pytest.approx(-16)
+    assert min(z for _x, z in left) == pytest.approx(-10) and max(z for _x, z in left) == pytest.approx(-4)
+    assert min(x for x, _z in right) == pytest.approx(17)  # radius 20 minus 3 deep
+    internal = sharp(call(typ=7))
+    assert max(x for x, _z in internal) == pytest.approx(23)  # bore grows outward
+
+
+def test_face_grooves_swap_the_axes():
+    face = call(typ=2, angc=90, axfa=10.0, axsa=0.0)
+    pts = [face.geometry(TOOL).frame.point(u, v) for u, v in face.geometry(TOOL).corners_sharp]
+    assert min(z for _x, z in pts) == pytest.approx(-3)  # plunged 3 deep toward -Z
+    assert min(x for x, _z in pts) == pytest.approx(10) and max(x for x, _z in pts) == pytest.approx(16)  # "left": toward +X
+    right = call(typ=6, angc=90, axfa=16.0, axsa=0.0)
+    pts = [right.geometry(TOOL).frame.point(u, v) for u, v in right.geometry(TOOL).corners_sharp]
+    assert min(x for x, _z in pts) == pytest.approx(10) and max(x for x, _z in pts) == pytest.approx(16)
+    internal = call(typ=4, angc=90, axfa=10.0, axsa=0.0)
+    pts = [internal.geometry(TOOL).frame.point(u, v) for u, v in internal.geometry(TOOL).corners_sharp]
+    assert max(z for _x, z in pts) == pytest.approx(3)  # toward +Z
+
+
+def test_angc_is_measured_counter_clockwise_from_plus_z():
+    # ANGC 12 on the seed's external groove: the contour rises toward +Z, so
+    # the far edge (toward -Z) is lower than the start point.
+    g = Cycle93.parse(SEED_CALL).geometry(TOOL)
+    p1, _b1, _b2, p2 = [g.frame.point(u, v) for u, v in g.corners_sharp]
+    assert p1 == pytest.approx((35.0, 60.0))
+    slope = (p1[0] - p2[0]) / (p1[1] - p2[1])
+    assert slope == pytest.approx(math.tan(math.radians(12)))
+
+
+def test_flank_angles_open_the_groove_and_widg_is_the_base_width():
+    g = call(ang1=20, ang2=10, depg=4.0).geometry(TOOL)
+    p1, b1, b2, p2 = g.corners_sharp
+    assert b2[0] - b1[0] == pytest.approx(6.0)
+    assert b1[0] - p1[0] == pytest.approx(4 * math.tan(math.radians(20)))
+    assert p2[0] - b2[0] == pytest.approx(4 * math.tan(math.radians(10)))
+
+
+def test_chamfer_chf_and_chr_readings_differ_by_the_corner_angle():
+    chf = call(rci1=-1.0, typ=5).geometry(TOOL).final_corners[1]
+    chr_ = call(rci1=-1.0, typ=15).geometry(TOOL).final_corners[1]
+    assert chr_.length == pytest.approx(1.0)  # CHR: 1 mm along each element
+    assert chf.length == pytest.approx(1.0 / math.sqrt(2))  # CHF: the 1 mm chamfer of a 90 degree corner
+
+
+def test_diameter_input_setting_halves_axfa_depg_and_fal1():
+    radius = call(axfa=20.0, depg=3.0, fal1=0.5).geometry(TOOL)
+    dia = call(axfa=40.0, depg=6.0, fal1=1.0).geometry(Settings(tool=TOOL.tool, cycle93_diameter_input=True))
+    assert [c for p in dia.corners_sharp for c in p] == pytest.approx([c for p in radius.corners_sharp for c in p])
+    assert dia.frame.x0 == 20.0
+    assert [c for p in dia.rough_top for c in p] == pytest.approx([c for p in radius.rough_top for c in p])
+
+
+# -- moves ------------------------------------------------------------------------
+
+
+def test_seed_example_moves_follow_the_four_steps():
+    c = Cycle93.parse(SEED_CALL)
+    moves = c.expand(SEED_START, TOOL)
+    assert moves[-1][:3] == (RAPID, 40.0, 65.0)  # back at the start point
+    # External groove: first along Z (the longitudinal axis) at the start X.
+    assert moves[0].kind == RAPID and moves[0].x == 40.0 and moves[0].z != 65.0
+    assert moves[1].kind == RAPID and moves[1].z == moves[0].z
+    dwells = [m for m in moves if m.kind == DWELL]
+    assert dwells and all(m.p == 1.0 for m in dwells)
+    # Every plunge: equal infeeds of at most IDEP (10), each followed by a
+    # 1 mm (VRT = 0) rapid chip-breaking retract, then fed back in.
+    plunges = split_plunges(moves)
+    assert len(plunges) >= 10
+    widths = sorted({round(p["z"], 6) for p in plunges})
+    steps = [b - a for a, b in zip(widths, widths[1:])]
+    assert max(steps) <= 0.95 * (3.0 - 2 * 0.4) + 1e-9
+    assert max(steps) - min(steps) < 1e-5  # equal steps
+    deepest = max(plunges, key=lambda p: p["depth"])
+    assert len(deepest["infeeds"]) == 3  # about 25 mm deep in IDEP 10 infeeds
+    incs = deepest["infeeds"]
+    assert max(incs) - min(incs) < 1e-6 and max(incs) <= 10
+    for retract in deepest["retracts"]:
+        assert retract == pytest.approx(1.0)
+
+
+def split_plunges(moves, vrt=1.0):
+    """The roughing plunges of an external longitudinal groove: a rapid to the
+    clearance, feeds straight down in X with rapid chip-breaking retracts in
+    between, a dwell at the bottom."""
+    out = []
+    for i, m in enumerate(moves):
+        if m.kind != DWELL:
+            continue
+        j = i - 1
+        while moves[j].kind != RAPID or moves[j - 1].kind == FEED:
+            j -= 1  # back to the rapid that brought the tool over this plunge
+        seq = moves[j:i]
+        assert all(s.z == m.z for s in seq)
+        top = seq[0].x - vrt
+        levels = [s.x for s in seq if s.kind == FEED]
+        infeeds = [a - b for a, b in zip([top] + levels, levels)]
+        retracts = [b.x - a.x for a, b in zip(seq, seq[1:]) if a.kind == FEED and b.kind == RAPID]
+        out.append(dict(z=m.z, depth=top - m.x, infeeds=infeeds, retracts=retracts))
+    return out
+
+
+def test_plain_groove_is_plunged_only_with_no_contour_pass():
+    moves = call().expand(MachineState(x=25.0, z=0.0), TOOL)
+    feeds = [m for m in moves if m.kind == FEED]
+    # every feed is a straight plunge (no Z motion while feeding)
+    zs_at = {}
+    prev = None
+    for m in moves:
+        if m.kind == FEED:
+            assert prev is not None and m.z == prev.z
+        prev = m
+    assert min(m.x for m in feeds) == pytest.approx(17.0)
+    # plunge positions cover the groove from -16 to -10 with a 3 mm blade
+    refs = sorted({round(m.z, 9) for m in feeds})
+    assert refs[0] == pytest.approx(-16.0) and refs[-1] == pytest.approx(-13.0)
+
+
+def test_internal_groove_approaches_along_x_first():
+    moves = call(typ=7).expand(MachineState(x=10.0, z=5.0), TOOL)
+    assert moves[0].kind == RAPID and moves[0].z == 5.0 and moves[0].x != 10.0
+    assert moves[-1][:3] == (RAPID, 10.0, 5.0)
+
+
+def test_reference_corner_plus_shifts_every_move_by_the_width():
+    minus = call().expand(MachineState(x=25.0, z=0.0), TOOL)
+    plus_settings = Settings(tool=GroovingTool(3.0, 0.4, reference="plus"))
+    plus = call().expand(MachineState(x=25.0, z=3.0), plus_settings)
+    body = lambda ms: [(m.kind, round(m.x, 9), round(m.z, 9)) for m in ms[:-2]]
+    assert [(k, x, z + 3.0) for k, x, z in body(minus)][1:] == body(plus)[1:]
+
+
+def test_vrt_sets_both_chip_break_and_clearance():
+    moves = call(vrt=0.5, depg=3.0, idep=1.0).expand(MachineState(x=25.0, z=0.0), TOOL)
+    ups = [b.x - a.x for a, b in zip(moves, moves[1:]) if a.kind == FEED and b.kind == RAPID and b.z == a.z]
+    assert ups and all(u == pytest.approx(0.5) for u in ups[:2])
+    top_rapids = {round(m.x, 9) for m in moves if m.kind == RAPID and m.x < 25}
+    assert 20.5 in top_rapids  # 0.5 above the surface at radius 20
+
+
+def test_inch_program_defaults_vrt_to_004():
+    c = call(axfa=1.0, axsa=0.0, widg=0.25, depg=0.1, idep=0.05)
+    moves = c.expand(MachineState(x=1.2, z=0.5, metric=False), Settings(tool=GroovingTool(0.12, 0.01)))
+    assert max(m.x for m in moves if m.kind == RAPID and m.x < 1.2) == pytest.approx(1.04)
