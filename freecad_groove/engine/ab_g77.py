@@ -1,0 +1,519 @@
+"""Allen-Bradley 9/Series lathe G77 (grooving / cut-off) and G76, its face twin.
+
+Also holds the pecking machinery every multi-groove pecking cycle shares
+(:class:`PeckingCycle`, :func:`peck_grooves`, :func:`read_block`,
+:func:`format_number`); ``fanuc_g75`` builds the Fanuc and Haas G75/G74 on it.
+
+The manual (seed 000, 9/Series lathe manual chapter 23) says, for
+``G77 X__ Z__ I__ K__ F__ D__;``:
+
+* **X** - the bottom of the groove, reached from the X the tool held before the
+  block. Absolute or incremental (the modal G90/G91, ``MachineState.incremental``)
+  and read per radius/diameter mode (``MachineState.diameter_mode``). For a
+  cut-off it drives the tool through the centre (or beyond the OD from inside).
+* **Z** - where the *last* groove is cut; not programmed for one groove.
+  Absolute or incremental. Grooves are cut at the start Z, start Z + K, ...
+  and the last one is always at Z even when the final gap is smaller than K.
+* **K** - distance between grooves, always incremental.
+* **I** - infeed per step, always incremental. Each step is followed by a retract
+  of **e** (an AMP parameter: ``Settings.retract_e``); then infeed I + e, retract
+  e, infeed I + e ... until the bottom X is reached.
+* At the bottom: shift **D** at rapid (incremental, signed, "should move the tool
+  away from the part"; must be programmed, 0 when not cutting off), then rapid
+  retract to the starting X.
+* **F** - optional; replaces the active feed for the infeeds.
+
+G76 is the face twin with the axes swapped: Z = groove bottom, X = last groove
+(diameter mode applies), K = infeed per peck along Z, I = distance between grooves
+along X, D = shift along X at full depth.
+
+Choices the manual leaves open (each a named constant here, each with a test):
+
+* ``RETURN_TO_START_Z`` (True): after the last groove the tool rapids back to the
+  start Z at the start X, so the cycle ends where it began. False: it stays at
+  the last groove (shifted by D) at the start X.
+* D's axis is the groove-stepping axis (Z for G77, X for G76); D is done at every
+  groove (the manual's figure), at rapid, signed as programmed, as a per-side
+  (radius) distance. Whether it really points away from the part cannot be
+  checked here: the manual's CAUTION stands.
+* K (G77) and I (G76) are unsigned: the grooves step from the start toward Z
+  (X). A negative value is refused; 0 or missing is refused only when the last
+  groove is away from the start.
+* The peck retract e is not clipped: when e > I the first retract goes beyond the
+  start X (away from the part). With e = 0 no zero-length retract is written;
+  the pecks stay separate FEED moves.
+* Peck depths and groove positions are computed as start + k * step (no
+  accumulated drift); a remainder smaller than ``TOLERANCE`` is merged into the
+  last peck / last groove rather than cut as a sliver.
+* Zero-length moves are not written (the final return when the tool is already
+  at the start).
+* Without F and without an active feed (``MachineState.feed`` None or 0) the
+  cycle is refused (the control would cut at feed 0).
+* An expansion longer than ``MAX_MOVES`` moves is refused, naming the peck or
+  groove-spacing word that caused it (a typo like I0.0001 must not hang FreeCAD).
+* Number format (emit): every word except Fanuc's P/Q is written with a decimal
+  point and trailing zeros dropped: ``X20.``, ``X20.5``, ``F0.1``, ``D0.``. At
+  most ``DECIMALS`` (4) decimals and magnitude below ``MAX_WORD`` (100000):
+  validate() refuses other values, so emit() never rounds and
+  ``parse(emit(m)) == m`` holds for every valid model.
+* parse() refuses a non-zero word written without a decimal point (``X20``):
+  the 9/Series reads it per its AMP zero-suppression format (X20 may be 20. or
+  0.20), Fanuc in least input increments, Haas per setting 162. ``X0`` is
+  accepted. A block holds one G word (the cycle's), an optional leading N number,
+  spaces anywhere, an optional ``;``; each word at most once; no comments.
+"""
+
+import math
+import re
+from dataclasses import dataclass
+from typing import ClassVar, Optional
+
+from .errors import CycleError
+from .moves import FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID, MachineState, Move
+from .settings import DEFAULT_SETTINGS, Settings
+
+RETURN_TO_START_Z = True
+DECIMALS = 4
+MAX_WORD = 100000.0
+MAX_COUNT = 99999999  # Fanuc P/Q: 8 digits
+MAX_MOVES = 1_000_000
+TOLERANCE = 1e-7  # far below the 0.0001 word resolution, far above float noise
+
+# ---------------------------------------------------------------- numbers, words
+
+
+def format_number(value):
+    """A decimal word value as written: always a decimal point, no trailing zeros."""
+    if value == 0:
+        return "0."
+    return ("%.*f" % (DECIMALS, value)).rstrip("0")
+
+
+def check_number(cycle, letter, value, counted=False):
+    """Refuse a word value the control cannot read back exactly as held."""
+    if counted:
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise CycleError(
+                letter, value, "must be an integer in least input increments (P2000 = 2 mm or 0.2 in)", cycle=cycle
+            )
+        if abs(value) > MAX_COUNT:
+            raise CycleError(letter, value, "must have at most 8 digits", cycle=cycle)
+        return
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise CycleError(letter, value, "must be a number", cycle=cycle)
+    if not math.isfinite(value):
+        raise CycleError(letter, value, "must be a finite number", cycle=cycle)
+    if not abs(value) < MAX_WORD:
+        raise CycleError(letter, value, "must be less than %d in magnitude" % MAX_WORD, cycle=cycle)
+    if round(value, DECIMALS) != value:
+        raise CycleError(letter, value, "must have at most %d decimal places" % DECIMALS, cycle=cycle)
+
+
+_WORD = re.compile(r"([A-Z])([+-]?(?:\d+\.?\d*|\.\d+))")
+_BLOCK_NUMBER = re.compile(r"N\d+")
+
+
+def read_block(text, cycle, letters, counted=()):
+    """Read one block ``G77 X40. Z-30. ...`` into {letter: value}.
+
+    ``cycle`` is the G word expected ("G77"); ``letters`` the words the block may
+    hold; ``counted`` those that are integers in least input increments.
+    """
+    block = "".join(text.split()).upper()
+    if block.endswith(";"):
+        block = block[:-1]
+    match = _BLOCK_NUMBER.match(block)
+    pos = match.end() if match else 0
+    code = int(cycle[1:])
+    words = {}
+    seen_g = False
+    while pos < len(block):
+        match = _WORD.match(block, pos)
+        if not match:
+            raise CycleError(block[pos], None, "cannot read %r as a %s word" % (block[pos:], cycle), cycle=cycle)
+        letter, number = match.groups()
+        pos = match.end()
+        if letter == "G":
+            if seen_g or "." in number or int(number) != code:
+                raise CycleError("G", float(number), "only %s may be programmed in this block" % cycle, cycle=cycle)
+            seen_g = True
+            continue
+        if letter not in letters:
+            raise CycleError(
+                letter, float(number), "is not a word of %s (words: %s)" % (cycle, " ".join(letters)), cycle=cycle
+            )
+        if letter in words:
+            raise CycleError(letter, float(number), "is programmed twice", cycle=cycle)
+        if letter in counted:
+            if "." in number:
+                raise CycleError(
+                    letter,
+                    float(number),
+                    "must be an integer in least input increments, without a decimal point (P2000 = 2 mm or 0.2 in)",
+                    cycle=cycle,
+                )
+            words[letter] = int(number)
+        else:
+            value = float(number)
+            if "." not in number and value != 0:
+                raise CycleError(
+                    letter,
+                    value,
+                    "needs a decimal point: without one the control reads it in least input increments "
+                    "or per its zero-suppression setting; write %s%s." % (letter, number),
+                    cycle=cycle,
+                )
+            words[letter] = value
+    if not seen_g:
+        raise CycleError("G", None, "the block must hold %s" % cycle, cycle=cycle)
+    return words
+
+
+# ---------------------------------------------------------------- the shared pecking loop
+
+
+def _count(length, step):
+    """How many points start + k*step (k = 0, 1, ...) lie before ``length`` (less TOLERANCE)."""
+    return max(1, math.ceil((length - TOLERANCE) / step))
+
+
+def _points(start, end, step, count):
+    """start, start +- step, ... (``count`` points toward end), then end itself."""
+    sign = 1.0 if end > start else -1.0
+    points = [start + sign * k * step for k in range(count)]
+    points.append(end)
+    return points
+
+
+def peck_grooves(
+    axis, start, bottom, positions, peck, retract, relief=0.0, relief_on_first=True, feed=None, return_to_start=True
+):
+    """Expand pecked grooves: the loop every pecking cycle shares.
+
+    axis       plunge axis, "X" (grooves along Z) or "Z" (face grooves along X).
+    start      (x radius, z) of the tool before the cycle.
+    bottom     groove bottom on the plunge axis (radius for "X").
+    positions  groove positions on the other axis, in cutting order; the first
+               is the start's own coordinate.
+    peck       infeed per peck (> 0); the last infeed is shortened to the bottom.
+    retract    peck retract e (>= 0): FEED peck, RAPID back e, FEED peck + e ...
+    relief     signed rapid move along the stepping axis at the bottom, before
+               the rapid retract (Allen-Bradley D, Fanuc R(dd), Haas D).
+    relief_on_first  False: not at the first groove (Fanuc/Haas).
+    feed       F for the infeed FEED moves (None = the active feed).
+    return_to_start  end with a rapid to the start position.
+
+    Between grooves the tool rapids along the stepping axis at the start plunge
+    coordinate. Returns a list of moves.Move.
+    """
+    if axis == "X":
+        p0, s0 = float(start[0]), float(start[1])
+    else:
+        s0, p0 = float(start[0]), float(start[1])
+    sign = 1.0 if bottom > p0 else -1.0
+    depth = abs(bottom - p0)
+    targets = _points(p0, bottom, peck, _count(depth, peck))[1:]
+    pecks = [(t, t - sign * retract) for t in targets[:-1]]
+
+    if axis == "X":
+        def move(kind, p, s, f=None):
+            return Move(kind, p, s, f)
+    else:
+        def move(kind, p, s, f=None):
+            return Move(kind, s, p, f)
+
+    out = []
+    add = out.append
+    s = s0
+    for index, s in enumerate(positions):
+        if index:
+            add(move(RAPID, p0, s))
+        for target, back in pecks:
+            add(move(FEED, target, s, feed))
+            if retract:
+                add(move(RAPID, back, s))
+        add(move(FEED, bottom, s, feed))
+        if relief and (index or relief_on_first):
+            s += relief
+            add(move(RAPID, bottom, s))
+        add(move(RAPID, p0, s))
+    if return_to_start and s != s0:
+        add(move(RAPID, p0, s0))
+    return out
+
+
+# ---------------------------------------------------------------- the shared cycle model
+
+
+class PeckingCycle:
+    """Validation, expansion, emit and parse shared by the pecking cycles.
+
+    A concrete cycle is a frozen dataclass whose fields are named after its
+    words, and which sets these class attributes:
+
+    NAME      the G word ("G77").
+    AXIS      plunge axis, "X" or "Z".
+    WORDS     letters in the order emit() writes them.
+    BOTTOM    the words that may give the groove bottom (("X",) or ("X", "U")).
+    LAST      the words that may give the last groove position.
+    PECK, PITCH, RELIEF   the letters of the peck depth, the groove spacing and
+              the shift/relief at the bottom.
+    COUNTED   words that are integers in least input increments (Fanuc P, Q).
+    SHIFT_D   True: RELIEF is Allen-Bradley's D: required, signed, done at every
+              groove. False: Fanuc/Haas relief: optional, unsigned, toward the
+              grooves already cut, not at the first.
+    """
+
+    NAME: ClassVar[str]
+    AXIS: ClassVar[str]
+    WORDS: ClassVar[tuple]
+    BOTTOM: ClassVar[tuple]
+    LAST: ClassVar[tuple]
+    PECK: ClassVar[str]
+    PITCH: ClassVar[str]
+    RELIEF: ClassVar[str]
+    COUNTED: ClassVar[tuple] = ()
+    SHIFT_D: ClassVar[bool] = False
+
+    # -- hooks a dialect may override
+
+    def _returns_to_start(self):
+        return True
+
+    def _retract(self, settings, metric):
+        """(peck retract e, the name to blame when it is wrong)."""
+        return settings.retract_e(metric), "e"
+
+    # -- reading words
+
+    def _programmed(self, letters):
+        """The one programmed letter among ``letters`` (None when none is)."""
+        found = [letter for letter in letters if getattr(self, letter) is not None]
+        if len(found) > 1:
+            raise CycleError(
+                found[1], getattr(self, found[1]), "must not be programmed together with %s" % found[0], cycle=self.NAME
+            )
+        return found[0] if found else None
+
+    def _length(self, letter, metric):
+        value = getattr(self, letter)
+        if letter in self.COUNTED:
+            return value * (0.001 if metric else 0.0001)
+        return float(value)
+
+    def _position(self, letter, state):
+        """Absolute coordinate (X as a radius) a position word programs."""
+        axis = "X" if letter in ("X", "U") else "Z"
+        value = getattr(self, letter)
+        if axis == "X" and state.diameter_mode:
+            value = value / 2.0
+        if letter in ("U", "W") or state.incremental:
+            return (state.x if axis == "X" else state.z) + value
+        return float(value)
+
+    def _bottom_letter(self):
+        letter = self._programmed(self.BOTTOM)
+        if letter is None:
+            rule = "must be programmed (%s: the groove bottom)" % " or ".join(self.BOTTOM)
+            raise CycleError(self.BOTTOM[0], None, rule, cycle=self.NAME)
+        return letter
+
+    def _bottom(self, state):
+        letter = self._bottom_letter()
+        bottom = self._position(letter, state)
+        start = state.x if self.AXIS == "X" else state.z
+        if abs(bottom - start) <= TOLERANCE:
+            raise CycleError(
+                letter,
+                getattr(self, letter),
+                "puts the groove bottom at the start %s: nothing to cut" % self.AXIS,
+                cycle=self.NAME,
+            )
+        return bottom, start
+
+    # -- the common API
+
+    def validate(self, settings=DEFAULT_SETTINGS):
+        """Check every rule that does not depend on the machine state; returns self."""
+        name = self.NAME
+        for letter in self.WORDS:
+            value = getattr(self, letter)
+            if value is not None:
+                check_number(name, letter, value, letter in self.COUNTED)
+        self._bottom_letter()
+        self._programmed(self.LAST)
+        peck = getattr(self, self.PECK)
+        if peck is None:
+            raise CycleError(self.PECK, None, "must be programmed (the infeed per peck)", cycle=name)
+        if not peck > 0:
+            raise CycleError(self.PECK, peck, "peck depth must be greater than 0", cycle=name)
+        pitch = getattr(self, self.PITCH)
+        if pitch is not None and pitch < 0:
+            raise CycleError(
+                self.PITCH,
+                pitch,
+                "groove spacing must not be negative (it is unsigned: the grooves step from the start toward %s)"
+                % "/".join(self.LAST),
+                cycle=name,
+            )
+        relief = getattr(self, self.RELIEF)
+        if self.SHIFT_D:
+            if relief is None:
+                raise CycleError(self.RELIEF, None, "must be programmed (0 when not cutting off)", cycle=name)
+        elif relief is not None and relief < 0:
+            raise CycleError(
+                self.RELIEF, relief, "relief at the groove bottom must not be negative (it is unsigned)", cycle=name
+            )
+        if self.F is not None and not self.F > 0:
+            raise CycleError("F", self.F, "feed must be greater than 0", cycle=name)
+        for metric in (True, False):
+            retract, word = self._retract(settings, metric)
+            if isinstance(retract, bool) or not isinstance(retract, (int, float)) or not retract >= 0:
+                raise CycleError(word, retract, "peck retract must be a number not less than 0", cycle=name)
+        return self
+
+    def plunge_direction(self, state: MachineState) -> str:
+        """MINUS_X / PLUS_X (AXIS "X") or MINUS_Z / PLUS_Z: bottom below or above the start."""
+        bottom, start = self._bottom(state)
+        if self.AXIS == "X":
+            return MINUS_X if bottom < start else PLUS_X
+        return MINUS_Z if bottom < start else PLUS_Z
+
+    def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> list:
+        """The moves the control makes, from ``state`` (x radius, z)."""
+        self.validate(settings)
+        name = self.NAME
+        bottom, p0 = self._bottom(state)
+        s0 = state.z if self.AXIS == "X" else state.x
+        last_letter = self._programmed(self.LAST)
+        last = s0 if last_letter is None else self._position(last_letter, state)
+        span = abs(last - s0)
+        pitch = getattr(self, self.PITCH)
+        if span > TOLERANCE:
+            if pitch is None or pitch == 0:
+                raise CycleError(
+                    self.PITCH,
+                    pitch,
+                    "groove spacing must be programmed and greater than 0 when %s puts the last groove away from "
+                    "the start" % last_letter,
+                    cycle=name,
+                )
+            pitch = self._length(self.PITCH, state.metric)
+            grooves = _count(span, pitch) + 1
+        else:
+            grooves = 1
+        if self.F is None and not state.feed:
+            raise CycleError("F", None, "must be programmed: no feed is active before the cycle", cycle=name)
+        peck = self._length(self.PECK, state.metric)
+        pecks = _count(abs(bottom - p0), peck)
+        if grooves * (2 * pecks + 3) + 1 > MAX_MOVES:
+            letter = self.PITCH if grooves > pecks else self.PECK
+            raise CycleError(
+                letter,
+                getattr(self, letter),
+                "gives %d grooves of %d pecks: more than the %d moves an expansion may hold"
+                % (grooves, pecks, MAX_MOVES),
+                cycle=name,
+            )
+        positions = [s0] if grooves == 1 else _points(s0, last, pitch, grooves - 1)
+        relief = float(getattr(self, self.RELIEF) or 0.0)
+        if not self.SHIFT_D:
+            relief = relief if last < s0 else -relief  # back toward the grooves already cut
+        return peck_grooves(
+            self.AXIS,
+            (state.x, state.z),
+            bottom,
+            positions,
+            peck,
+            self._retract(settings, state.metric)[0],
+            relief,
+            self.SHIFT_D,
+            self.F,
+            self._returns_to_start(),
+        )
+
+    def _words_text(self):
+        parts = [self.NAME]
+        for letter in self.WORDS:
+            value = getattr(self, letter)
+            if value is not None:
+                parts.append(letter + (str(value) if letter in self.COUNTED else format_number(value)))
+        return " ".join(parts)
+
+    def emit(self) -> str:
+        """The block as the control reads it (no N number, no end of block)."""
+        return self._words_text()
+
+    @classmethod
+    def parse(cls, text: str):
+        """The model of a block as written; raises CycleError naming the word."""
+        return cls(**read_block(text, cls.NAME, cls.WORDS, cls.COUNTED)).validate()
+
+
+# ---------------------------------------------------------------- Allen-Bradley
+
+
+class _AllenBradley(PeckingCycle):
+    WORDS = ("X", "Z", "I", "K", "F", "D")
+    SHIFT_D = True
+
+    def _returns_to_start(self):
+        return RETURN_TO_START_Z
+
+
+@dataclass(frozen=True)
+class G77(_AllenBradley):
+    """Allen-Bradley 9/Series ``G77 X__ Z__ I__ K__ F__ D__`` (seed 000).
+
+    X groove bottom (abs/inc per G90/G91, diameter per mode; required, must
+    differ from the start X: below it = external/cut-off, MINUS_X; above = internal,
+    PLUS_X). Z last groove (abs/inc; omitted = one groove). K groove spacing along Z,
+    incremental, unsigned, > 0 when Z is away from the start. I infeed per peck
+    (> 0, incremental, per side). D rapid shift along Z at full depth, every groove,
+    signed (required, 0 = none). F feed of the infeeds (optional).
+
+    Per groove: FEED I, RAPID back e, FEED I + e, ... the last infeed lands on X;
+    RAPID D along Z (if D != 0); RAPID to the start X; RAPID along Z to the next
+    groove. After the last: RAPID to the start Z (``RETURN_TO_START_Z``).
+    """
+
+    NAME: ClassVar[str] = "G77"
+    AXIS: ClassVar[str] = "X"
+    BOTTOM: ClassVar[tuple] = ("X",)
+    LAST: ClassVar[tuple] = ("Z",)
+    PECK: ClassVar[str] = "I"
+    PITCH: ClassVar[str] = "K"
+    RELIEF: ClassVar[str] = "D"
+
+    X: Optional[float] = None
+    Z: Optional[float] = None
+    I: Optional[float] = None  # noqa: E741 - the control's word
+    K: Optional[float] = None
+    F: Optional[float] = None
+    D: Optional[float] = None
+
+
+@dataclass(frozen=True)
+class G76(_AllenBradley):
+    """Allen-Bradley 9/Series ``G76 X__ Z__ I__ K__ F__ D__``: G77 with the axes swapped.
+
+    Z groove bottom (abs/inc; below the start Z = MINUS_Z, above = PLUS_Z). X last
+    groove (abs/inc, diameter per mode; omitted = one groove). I groove spacing
+    along X (per side, unsigned). K infeed per peck along Z (> 0). D rapid shift
+    along X at full depth (per side, signed, required, 0 = none). F as in G77.
+    """
+
+    NAME: ClassVar[str] = "G76"
+    AXIS: ClassVar[str] = "Z"
+    BOTTOM: ClassVar[tuple] = ("Z",)
+    LAST: ClassVar[tuple] = ("X",)
+    PECK: ClassVar[str] = "K"
+    PITCH: ClassVar[str] = "I"
+    RELIEF: ClassVar[str] = "D"
+
+    X: Optional[float] = None
+    Z: Optional[float] = None
+    I: Optional[float] = None  # noqa: E741 - the control's word
+    K: Optional[float] = None
+    F: Optional[float] = None
+    D: Optional[float] = None
