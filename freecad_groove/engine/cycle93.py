@@ -412,8 +412,8 @@ class GrooveGeometry:
         self.final_top = self._material_top(final)
         self.rough_top = self._material_top(rough)
         tool = self.tool
-        self.final_env = Envelope(self.final_top, tool.width, tool.corner_radius)
-        self.rough_env = Envelope(self.rough_top, tool.width, tool.corner_radius)
+        self.final_env = Envelope(self.final_top, tool.width, tool.corner_radius, self._element_ends(final))
+        self.rough_env = Envelope(self.rough_top, tool.width, tool.corner_radius, self._element_ends(rough))
 
     def _check_form(self, corners, sharp, p):
         c_p1, c_b1, c_b2, c_p2 = corners
@@ -438,6 +438,14 @@ class GrooveGeometry:
                     % (name, format_value(outer.length + inner.length), format_value(flank)),
                     ALARM_FORM,
                 )
+
+    def _element_ends(self, corners):
+        """u of the points where one profile element meets the next."""
+        ends = [self.final_top[0][0], self.final_top[-1][0]]
+        for c in corners:
+            pts = c.points()
+            ends += [pts[0][0], pts[-1][0]]
+        return ends
 
     def _material_top(self, corners):
         pts = []

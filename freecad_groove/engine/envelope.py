@@ -20,12 +20,15 @@ JUMP_PROBE = 1e-7
 
 
 class Envelope:
-    def __init__(self, points, width, radius):
+    def __init__(self, points, width, radius, corners=None):
         if radius < 0 or width <= 2 * radius:
             raise ValueError("blade width must exceed twice its corner radius")
         self.width = width
         self.radius = radius
         self.points = points
+        # Where the top changes from one element to the next (the polyline's
+        # other points only approximate arcs): the trace starts from these.
+        self.corners = sorted(set(p[0] for p in points)) if corners is None else sorted(corners)
         segs = []
         for (u1, v1), (u2, v2) in zip(points, points[1:]):
             if u2 < u1 - 1e-12:
@@ -61,7 +64,19 @@ class Envelope:
         segs = self.segments
         i = bisect_left(self._ends, u)
         n = len(segs)
-        bottom = self.bottom
+        sqrt = math.sqrt
+        rr = r * r
+        wr = w - r
+
+        def bottom(s):
+            if s < r:
+                d = r - s
+            elif s > wr:
+                d = s - wr
+            else:
+                return 0.0
+            t = rr - d * d
+            return r - (sqrt(t) if t > 0 else 0.0)
         while i < n:
             u1, v1, u2, v2, q = segs[i]
             i += 1
@@ -105,20 +120,32 @@ class Envelope:
                         best = val
         return best
 
+    def walls(self, lo, hi):
+        """Blade positions in (lo, hi) where a side edge passes a vertical step."""
+        out = set()
+        for u1, _v1, _u2, _v2, q in self.segments:
+            if q is None:
+                for c in (u1, u1 - self.width):
+                    if lo < c < hi:
+                        out.add(c)
+        return out
+
     def breakpoints(self, lo, hi):
         """Blade positions in [lo, hi] where ``lowest`` may change its formula."""
         r, w = self.radius, self.width
         offsets = (0.0, r, w - r, w) if r > 0 else (0.0, w)
         cands = {lo, hi}
-        for pu, _pv in self.points:
+        corners = self.corners
+        for pu in corners:
             for off in offsets:
                 c = pu - off
                 if lo < c < hi:
                     cands.add(c)
         if r > 0:
+            keys = set(corners)
             for u1, _v1, u2, _v2, q in self.segments:
-                if q is None or q == 0:
-                    continue
+                if q is None or q == 0 or u1 not in keys or u2 not in keys:
+                    continue  # arc chords: the refinement follows them
                 if q < 0:
                     s = r - r * (-q) / math.sqrt(1 + q * q)
                 else:
@@ -135,14 +162,18 @@ class Envelope:
             return [(u, v) for u, v in reversed(self.trace(hi, lo, tol))]
         f = self.lowest
         us = self.breakpoints(lo, hi)
+        walls = self.walls(lo, hi)
         out = []
         prev = (us[0], f(us[0]))
         out.append(prev)
         for u in us[1:]:
             # The boundary jumps where the blade passes a wall: move straight along it.
-            before, after = f(u - JUMP_PROBE), f(u + JUMP_PROBE)
             cur = (u, f(u))
-            if u < hi and abs(before - after) > tol:
+            if u in walls:
+                before, after = f(u - JUMP_PROBE), f(u + JUMP_PROBE)
+            else:
+                before = after = cur[1]
+            if abs(before - after) > tol:
                 first, second = (u, max(before, cur[1])), (u, max(after, cur[1]))
                 self._refine(prev, first, tol, out, 0)
                 out.append(first)
@@ -157,16 +188,15 @@ class Envelope:
     def _refine(self, p, q, tol, out, depth):
         if q[0] - p[0] < 1e-6 or depth > 24:
             return
-        for t in (0.5, 0.25, 0.75):
-            um = p[0] + t * (q[0] - p[0])
-            vm = self.lowest(um)
-            if abs(vm - (p[1] + t * (q[1] - p[1]))) > tol:
-                um = 0.5 * (p[0] + q[0])
-                m = (um, self.lowest(um))
-                self._refine(p, m, tol, out, depth + 1)
-                out.append(m)
-                self._refine(m, q, tol, out, depth + 1)
-                return
+        # Between breakpoints the boundary is a maximum of lines and arcs of the
+        # corner radius: the chord's error is largest near its middle, and at
+        # most twice the middle's for a kink elsewhere.
+        um = 0.5 * (p[0] + q[0])
+        m = (um, self.lowest(um))
+        if abs(m[1] - 0.5 * (p[1] + q[1])) > tol:
+            self._refine(p, m, tol, out, depth + 1)
+            out.append(m)
+            self._refine(m, q, tol, out, depth + 1)
 
 
 def _drop_collinear(pts, eps=1e-9):
