@@ -16,7 +16,7 @@ from freecad_groove.engine.dialects import (
     write_program,
 )
 from freecad_groove.engine.errors import ProgramError
-from freecad_groove.engine.moves import DWELL, FEED, RAPID, MachineState, Move, dwell, feed, rapid
+from freecad_groove.engine.moves import FEED, RAPID, MachineState, Move, dwell, feed, rapid
 
 # A plunge from X80 Z65 (radius 40): rapid to Z60, feed to X60 at F0.2, dwell
 # 1.5 s, rapid out, rapid back to Z65.

@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 
 from freecad_groove.engine.dialects import Writer
 from freecad_groove.engine.errors import ProgramError
-from freecad_groove.engine.moves import DWELL, FEED, RAPID, MachineState
+from freecad_groove.engine.moves import DWELL, RAPID, MachineState
 from freecad_groove.engine.program import (
     DIALECTS,
     Translator,

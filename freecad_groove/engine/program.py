@@ -92,7 +92,7 @@ Choices where the manuals are silent (each has a test)
 
 import math
 import re
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import NamedTuple, Optional
 
 from .dialects import MAX_LINE, Writer, comment, spec
@@ -765,7 +765,6 @@ class Translator:
 
     def _spindle(self, b, groups, out, early):
         s = self.state
-        wr = self.writer
         sw = b.get("S")
         lims = b.get("LIMS")
         speed = None
@@ -1033,7 +1032,6 @@ class Translator:
                        "(I and K are radius values, incremental from the start)" % (r1, r2))
 
     def _dwell_block(self, b, groups):
-        s = self.state
         d = self.dialect
         others = [w for w in b.words if w.letter != "G"]
         if len(b.all("G")) > 1 or b.keywords:
