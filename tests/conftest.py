@@ -1,0 +1,25 @@
+"""Test configuration shared by every test module.
+
+* Puts the repository root (for ``freecad_groove``) and this folder (for the
+  helper modules such as ``rs274``) on sys.path.
+* Hypothesis profiles: "ci" (derandomized, 200 examples) when the CI
+  environment variable is set (and not 0/false/no), else "dev" (60
+  examples). Override with ``--hypothesis-profile ci``. Neither has a
+  deadline: a simulated groove takes 10-50 ms.
+"""
+
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+for path in (ROOT, HERE):
+    if path not in sys.path:
+        sys.path.insert(0, path)
+
+from hypothesis import settings  # noqa: E402
+
+settings.register_profile("ci", deadline=None, derandomize=True, max_examples=200)
+settings.register_profile("dev", deadline=None, max_examples=60)
+IN_CI = os.environ.get("CI", "").strip().lower() not in ("", "0", "false", "no")
+settings.load_profile("ci" if IN_CI else "dev")

@@ -1,0 +1,199 @@
+"""Run LinuxCNC's own G-code interpreter (rs274, Debian package linuxcnc-uspace)
+as an independent reader of the programs we write.
+
+    canon = run_rs274(text)          # [(kind, x, z, feed, dwell), ...]
+    problems = canonical_matches(expansion.moves, canon, start=1)
+    assert not problems, "\\n".join(problems)
+
+``kind`` is "G0" (STRAIGHT_TRAVERSE), "G1" (STRAIGHT_FEED), "G4" (DWELL) or
+"ARC" (ARC_FEED: we never emit arcs, so a comparison fails on it). x is the
+radius (rs274 converts G7 diameter words), z absolute, in the program's length
+unit. feed is the feed rate in force as rs274 last set it (None for G0, and
+before the first SET_FEED_RATE), dwell is seconds for G4 and 0.0 otherwise. A G4 carries
+the position it holds.
+
+rs274 reports an error by printing the message and the offending line (and,
+in the version tested, exiting 1); any output line that is not a numbered
+canonical call, any stderr text other than its "executing" banner, or a
+non-zero exit raises RS274Error.
+
+Notes on the interpreter (LinuxCNC 2.9, Debian 12):
+* it starts at X0 Z0 and needs M2/M30 (or %) at the end;
+* G95 (feed per revolution) feeds need a turning spindle (S... M3), or it
+  stops with "Cannot feed with zero spindle speed in feed per rev mode";
+* it keeps its tool table in $HOME/.tool.mmap (created with O_TRUNC, mapped
+  shared): runs sharing a HOME crash each other with SIGBUS, so every run
+  here gets its own temporary HOME.
+"""
+
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+
+RS274 = "/usr/bin/rs274"
+
+_CANON = re.compile(r"^\s*\d+\s+N\S*\s+([A-Z_][A-Z0-9_]*)\((.*)\)\s*$")
+
+
+class RS274Error(Exception):
+    """rs274 rejected the program (or printed something we do not understand)."""
+
+    def __init__(self, message, line=None, output=""):
+        self.message = message
+        self.line = line  # the offending program line rs274 printed, if any
+        self.output = output  # everything it printed
+        text = message if line is None else "%s (at: %s)" % (message, line)
+        super().__init__(text)
+
+
+def rs274_path():
+    found = shutil.which("rs274")
+    if found:
+        return found
+    if os.path.isfile(RS274) and os.access(RS274, os.X_OK):
+        return RS274
+    return None
+
+
+def rs274_available():
+    return rs274_path() is not None
+
+
+def _ci():
+    return os.environ.get("CI", "").strip().lower() not in ("", "0", "false", "no")
+
+
+def require_rs274():
+    """Call at the top of a test (or from a fixture) that needs rs274: returns
+    its path; fails the test when CI is set and rs274 is missing, else skips."""
+    import pytest
+
+    path = rs274_path()
+    if path is None:
+        message = "rs274 (Debian package linuxcnc-uspace) is not installed; scripts/test installs it"
+        if _ci():
+            pytest.fail(message)
+        pytest.skip(message)
+    return path
+
+
+def _numbers(args, count, line):
+    try:
+        values = [float(a) for a in args.split(",")]
+    except ValueError:
+        raise RS274Error("cannot read the arguments of a canonical call", line=line)
+    if len(values) < count:
+        raise RS274Error("canonical call has %d arguments, expected %d" % (len(values), count), line=line)
+    return values
+
+
+def parse_canonical(output):
+    """Canonical moves from rs274's standard output (see module docstring)."""
+    moves = []
+    x = z = 0.0  # the interpreter starts at the origin
+    feed = None
+    for raw in output.splitlines():
+        if not raw.strip():
+            continue
+        m = _CANON.match(raw)
+        if not m:
+            raise RS274Error("rs274 printed a line that is not a canonical call", line=raw.strip(), output=output)
+        name, args = m.group(1), m.group(2)
+        if name == "STRAIGHT_TRAVERSE":
+            x, _, z = _numbers(args, 6, raw)[:3]
+            moves.append(("G0", x, z, None, 0.0))
+        elif name == "STRAIGHT_FEED":
+            x, _, z = _numbers(args, 6, raw)[:3]
+            moves.append(("G1", x, z, feed, 0.0))
+        elif name == "SET_FEED_RATE":
+            feed = _numbers(args, 1, raw)[0]
+        elif name == "DWELL":
+            moves.append(("G4", x, z, feed, _numbers(args, 1, raw)[0]))
+        elif name == "ARC_FEED":
+            # XZ plane: first_end (Z), second_end (X), first_axis, second_axis, rotation, ...
+            values = _numbers(args, 5, raw)
+            z, x = values[0], values[1]
+            moves.append(("ARC", x, z, feed, 0.0))
+    return moves
+
+
+def run_rs274(program_text, timeout=60):
+    """Interpret ``program_text`` with rs274 and return its canonical moves."""
+    path = rs274_path()
+    if path is None:
+        raise RS274Error("rs274 is not installed (Debian package linuxcnc-uspace)")
+    with tempfile.TemporaryDirectory(prefix="rs274-") as tmp:
+        ngc = os.path.join(tmp, "program.ngc")
+        tbl = os.path.join(tmp, "empty.tbl")
+        with open(ngc, "w") as f:
+            f.write(program_text if program_text.endswith("\n") else program_text + "\n")
+        open(tbl, "w").close()
+        # rs274 keeps its tool table in $HOME/.tool.mmap, created with
+        # O_TRUNC and mapped shared: two runs with the same HOME (parallel
+        # tests, another shell) truncate each other's map and die of SIGBUS.
+        env = dict(os.environ, HOME=tmp)
+        proc = subprocess.run(
+            [path, "-t", tbl, "-g", ngc],
+            cwd=tmp,
+            env=env,
+            stdin=subprocess.DEVNULL,
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+        )
+    output = proc.stdout
+    errors = [l for l in proc.stderr.splitlines() if l.strip() and l.strip() != "executing"]
+    if errors:
+        # rs274 prints the message, then the offending line.
+        message = errors[0].strip()
+        line = errors[1].strip() if len(errors) > 1 else None
+        raise RS274Error(message, line=line, output=output + proc.stderr)
+    moves = parse_canonical(output)
+    if proc.returncode != 0:
+        if proc.returncode < 0:
+            how = "was killed by signal %d" % -proc.returncode
+        else:
+            how = "exited with status %d" % proc.returncode
+        raise RS274Error("rs274 " + how, output=output + proc.stderr)
+    return moves
+
+
+def canonical_matches(engine_moves, canon, start=0, tol=1e-4, trailing=False):
+    """Compare engine moves (moves.Move, x radius) with rs274's ``canon``
+    moves pairwise, from ``canon[start]`` on (``start`` skips the moves a test
+    program makes before the cycle). Kinds must match (RAPID "G0", FEED "G1",
+    DWELL "G4"; any "ARC" is a mismatch), x and z within ``tol``, a FEED's f
+    (when not None) the feed in force, a DWELL's seconds. Unless ``trailing``,
+    canon must have no moves after the last engine move. Returns a list of
+    mismatch descriptions (empty: they match).
+    """
+    problems = []
+    canon = list(canon)
+    arcs = [i for i, c in enumerate(canon) if c[0] == "ARC"]
+    for i in arcs:
+        problems.append("canonical move %d is an ARC_FEED to X%.4f Z%.4f" % (i, canon[i][1], canon[i][2]))
+    part = canon[start:]
+    engine = list(engine_moves)
+    for i, (m, c) in enumerate(zip(engine, part)):
+        kind, x, z, feed, dwell = c
+        where = "move %d (canonical %d)" % (i, start + i)
+        if m.kind != kind:
+            problems.append("%s: engine %s X%.4f Z%.4f, rs274 %s X%.4f Z%.4f" % (where, m.kind, m.x, m.z, kind, x, z))
+            continue
+        if abs(m.x - x) > tol or abs(m.z - z) > tol:
+            problems.append("%s %s: engine X%.6f Z%.6f, rs274 X%s Z%s" % (where, kind, m.x, m.z, x, z))
+        if kind == "G1" and m.f is not None and (feed is None or abs(m.f - feed) > tol):
+            problems.append("%s G1: engine F%g, rs274 feed %s" % (where, m.f, feed))
+        if kind == "G4" and abs(m.p - dwell) > tol:
+            problems.append("%s G4: engine P%g s, rs274 dwell %g s" % (where, m.p, dwell))
+    if len(part) < len(engine):
+        problems.append("rs274 has %d moves after canonical %d, engine has %d" % (len(part), start, len(engine)))
+    elif len(part) > len(engine) and not trailing:
+        extra = part[len(engine)]
+        problems.append(
+            "rs274 has %d extra moves after the engine's %d, first %s X%.4f Z%.4f"
+            % (len(part) - len(engine), len(engine), extra[0], extra[1], extra[2])
+        )
+    return problems
