@@ -348,6 +348,8 @@ class GrooveGeometry:
             if abs(s) < 1e-9:
                 raise _err("ANGC", angc, "face groove on a contour element parallel to the longitudinal axis", ALARM_FORM)
             slope = su * sv * math.cos(a) / s
+        if abs(slope) < 1e-12:
+            slope = 0.0  # cos(90 degrees) is 6e-17 in floating point: keep faces exactly square
         tilt = math.degrees(math.atan(abs(slope)))
         limit = self.settings.cycle93_max_contour_tilt
         if tilt > limit + 1e-9:

@@ -85,12 +85,16 @@ class Envelope:
             if q is None:
                 # A vertical step: the material stands on its high side. When
                 # that side lies just outside the blade's span, the blade only
-                # slides along the wall and the low point is what counts.
+                # slides along the wall; the elements beside it count instead.
                 s = u1 - u
                 if v1 > v2:  # stepping down: material to the left
-                    top = v2 if s <= EDGE_EPS else v1
+                    if s <= EDGE_EPS:
+                        continue  # the wall stands just outside the blade
+                    top = v1
                 else:  # stepping up: material to the right
-                    top = v1 if s >= w - EDGE_EPS else v2
+                    if s >= w - EDGE_EPS:
+                        continue
+                    top = v2
                 val = top - bottom(s)
                 if val > best:
                     best = val
@@ -170,19 +174,15 @@ class Envelope:
             # The boundary jumps where the blade passes a wall: move straight along it.
             cur = (u, f(u))
             if u in walls:
-                before, after = f(u - JUMP_PROBE), f(u + JUMP_PROBE)
+                # Passing a wall the boundary may jump, or dip at just this u
+                # (a groove exactly as wide as the blade): go straight along it.
+                seq = [(u, f(u - JUMP_PROBE)), cur, (u, f(u + JUMP_PROBE))]
+                seq = [p for i, p in enumerate(seq) if i == 0 or abs(p[1] - seq[i - 1][1]) > tol / 10]
             else:
-                before = after = cur[1]
-            if abs(before - after) > tol:
-                first, second = (u, max(before, cur[1])), (u, max(after, cur[1]))
-                self._refine(prev, first, tol, out, 0)
-                out.append(first)
-                out.append(second)
-                prev = second
-                continue
-            self._refine(prev, cur, tol, out, 0)
-            out.append(cur)
-            prev = cur
+                seq = [cur]
+            self._refine(prev, seq[0], tol, out, 0)
+            out.extend(seq)
+            prev = seq[-1]
         return _drop_collinear(out)
 
     def _refine(self, p, q, tol, out, depth):
@@ -206,7 +206,8 @@ def _drop_collinear(pts, eps=1e-9):
     for i in range(1, len(pts) - 1):
         (u0, v0), (u1, v1), (u2, v2) = out[-1], pts[i], pts[i + 1]
         cross = (u1 - u0) * (v2 - v0) - (v1 - v0) * (u2 - u0)
-        if abs(cross) > eps * max(1.0, abs(u2 - u0) + abs(v2 - v0)):
+        turns_back = (u1 - u0) * (u2 - u1) + (v1 - v0) * (v2 - v1) < 0
+        if turns_back or abs(cross) > eps * max(1.0, abs(u2 - u0) + abs(v2 - v0)):
             out.append(pts[i])
     out.append(pts[-1])
     return out
