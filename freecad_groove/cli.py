@@ -569,9 +569,18 @@ def build_parser():
     return parser
 
 
+_TRAILING_POINT = re.compile(r"^-\d+\.$")
+
+
+def _negative_words(argv):
+    """argparse takes "-30." (a G-code style number) for an option; "-30.0" it
+    reads as the negative number it is."""
+    return [a + "0" if _TRAILING_POINT.match(a) else a for a in argv]
+
+
 def main(argv=None):
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(_negative_words(sys.argv[1:] if argv is None else list(argv)))
     try:
         if args.command == "expand":
             text = _expand(args)

@@ -197,3 +197,23 @@ def canonical_matches(engine_moves, canon, start=0, tol=1e-4, trailing=False):
             % (len(part) - len(engine), len(engine), extra[0], extra[1], extra[2])
         )
     return problems
+
+
+def written_moves(moves, metric=True):
+    """The moves as the LinuxCNC writer puts them on paper: a move whose written
+    X and Z equal the previous ones is dropped (it does not move the tool), so
+    the list compares one to one with rs274's canonical moves."""
+    from freecad_groove.engine.dialects import Writer
+    from freecad_groove.engine.moves import DWELL
+
+    w = Writer("linuxcnc", metric)
+    out, prev = [], None
+    for m in moves:
+        if m.kind == DWELL:
+            out.append(m)
+            continue
+        key = (w.x_word(m.x), w.z_word(m.z))
+        if key != prev:
+            out.append(m)
+            prev = key
+    return out

@@ -319,3 +319,10 @@ def test_demo_script(tmp_path):
     assert len(names) == 8 and "seed_cycle93.ngc" in names and "haas_g75.fanuc.nc" in names
     for name in names:
         assert str(tmp_path / name) in proc.stdout.decode()
+
+
+def test_emit_reads_negative_words_written_g_code_style():
+    # "-30." is how a machinist writes it; argparse alone would take it for an option.
+    proc = run("emit", "g77", "-X", "40.", "-Z", "-30.", "-I", "2.", "-K", "5.", "-D", "-1.", "-F", "0.08")
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout == b"G77 X40. Z-30. I2. K5. F0.08 D-1.\n"

@@ -15,12 +15,18 @@ from shapely.geometry import Polygon
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
 from freecad_groove.engine import simulate as sim
 from freecad_groove.engine.cycle93 import Cycle93
+from freecad_groove.engine.dialects import write_program
+from rs274 import canonical_matches, require_rs274, run_rs274, written_moves
 
 SEED_CALL = "CYCLE93(35, 60, 30, 25, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)"
 
 
-def run(call, tool, start=None):
-    """Expand, simulate and judge one groove; returns (verdict, moves)."""
+def run(call, tool, start=None, interpreter=True):
+    """Expand, simulate and judge one groove; returns (verdict, moves).
+
+    The moves are also written as a LinuxCNC program and read back by
+    LinuxCNC's own interpreter: rs274 must accept it, and its canonical moves
+    must be the moves the oracle simulates."""
     settings = Settings(tool=tool)
     geo = call.geometry(settings)
     if start is None:
@@ -29,7 +35,13 @@ def run(call, tool, start=None):
         u = lo - tool.width - 4.0
         v = max(geo.contour_top(u), geo.contour_top(hi)) + 3.0
         start = geo.frame.blade(u, v)
-    moves = call.expand(MachineState(x=start[0], z=start[1]), settings)
+    state = MachineState(x=start[0], z=start[1], feed=0.1, feed_per_rev=False)
+    moves = call.expand(state, settings)
+    if interpreter:
+        require_rs274()
+        canon = run_rs274(write_program(moves, "linuxcnc", state))
+        problems = canonical_matches(written_moves(moves), canon, start=1, trailing=True)
+        assert not problems, "\n".join(problems[:5])
     stock = Polygon([(z, x) for x, z in geo.stock_world()])
     target = Polygon([(z, x) for x, z in geo.region_world()]).buffer(0)
     result = sim.simulate(moves, tool, call.plunge_direction(), start, stock)
@@ -40,6 +52,8 @@ def test_seed_example_cuts_the_groove_exactly():
     verdict, moves = run(Cycle93.parse(SEED_CALL), GroovingTool(3.0, 0.4), start=(40.0, 65.0))
     sim.assert_clean(verdict, allow_infeasible=True)
     assert moves[-1].x == 40.0 and moves[-1].z == 65.0
+    # Everything but the corners a flat blade cannot enter is cut.
+    assert verdict.unreachable.area < 0.5
 
 
 def test_seed_example_with_a_sharp_tool_and_the_other_reference_corner():

@@ -11,9 +11,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from freecad_groove.engine.dialects import Writer
 from freecad_groove.engine.errors import ProgramError
-from freecad_groove.engine.moves import DWELL, RAPID, MachineState
+from freecad_groove.engine.moves import RAPID, MachineState
 from freecad_groove.engine.program import (
     DIALECTS,
     Translator,
@@ -626,22 +625,6 @@ def test_rs274_accepts_every_example(name):
     assert last[0] == "G0"
 
 
-def _written(moves, metric=True):
-    """The moves as the writer puts them on paper: moves whose written X and Z
-    equal the previous ones are dropped (they do not move the tool)."""
-    w = Writer("linuxcnc", metric)
-    out, prev = [], None
-    for m in moves:
-        if m.kind == DWELL:
-            out.append(m)
-            continue
-        key = (w.x_word(m.x), w.z_word(m.z))
-        if key != prev:
-            out.append(m)
-            prev = key
-    return out
-
-
 CASES = [
     ("sinumerik", "G95 F0.2 S400 M3\nG0 X80 Z65\n",
      "CYCLE93(35, 60, 30, 25, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)", "G0 X50 Z65\nM2"),
@@ -659,7 +642,7 @@ CASES = [
 def test_rs274_moves_equal_the_cycle_moves(dialect, before, call, after):
     """The canonical moves rs274 reads from the translation, from the cycle on,
     are the cycle's own expand() moves (rounded to the written resolution)."""
-    from rs274 import canonical_matches
+    from rs274 import canonical_matches, written_moves
 
     from freecad_groove.engine.program import cycle_class
 
@@ -675,7 +658,7 @@ def test_rs274_moves_equal_the_cycle_moves(dialect, before, call, after):
     moves = model.expand(state, DEFAULT_SETTINGS)
     canon = run_rs274_with_tools(out)
     first = [i for i, c in enumerate(canon) if c[0] == "G0"][0]  # the approach to the start point
-    problems = canonical_matches(_written(moves, state.metric), canon, start=first + 1, trailing=True)
+    problems = canonical_matches(written_moves(moves, state.metric), canon, start=first + 1, trailing=True)
     assert not problems, "\n".join(problems[:5])
 
 
