@@ -15,9 +15,11 @@ import time
 
 import pytest
 import shapely
+import shapely.affinity
 from hypothesis import given, strategies as st
 from shapely.geometry import Point, box
 
+from freecad_groove.engine import simulate as simulate_module
 from freecad_groove.engine.moves import (
     MINUS_X,
     MINUS_Z,
@@ -654,3 +656,212 @@ def test_blade_as_wide_as_a_groove_with_a_rounded_floor_corner():
     assert verdict.unreachable_depth == pytest.approx(0.1, abs=1e-3)
     _, short = run(plunge(-10.0, 15.102), tool=SHARP, target=target)
     assert short.incomplete
+
+
+# --------------------------------------------------------------------------- robustness
+#
+# Shapes of generated CYCLE93 grooves (tests/test_cycle93_simulation.py) on
+# which the oracle broke, copied here so that the tests do not depend on the
+# engine or on hypothesis finding them again. (z, x) as everywhere here.
+
+# CYCLE93(15, 0, 1.5, 0.8, 60, 0, 0.1, 0, 0.16, 0, 0, 0, 0, 0.3, 0, 2, 0), blade
+# 1.5 sharp, -Z: a face groove at 60 degrees. The last segment of the R0.16
+# arc lies on the flank (1e-15 from it) and the ring runs back along it: a
+# zero-width spike. Sweeping it raised "TopologyException: unable to assign
+# free hole to a shell" (also when snapped to 1e-9).
+SPIKE_STOCK = shapely.Polygon(
+    [(-2.0207259421636907, 11.5), (2.933653277111674, 20.081236527748356), (-6.020725942163691, 20.081236527748356), (-6.020725942163691, 11.5)]
+)
+SPIKE_TARGET = shapely.Polygon(
+    [(0.0, 15.0), (-0.8, 15.0), (0.06602540378443889, 16.5), (0.7746425228810166, 16.50123677144223),
+     (0.78225152861023, 16.501250051675992), (0.7973983405269923, 16.502720652561845),
+     (0.8123372375424327, 16.50562202019958), (0.8269333809400229, 16.509927966799832),
+     (0.8410550257027134, 16.515599626821697), (0.8545747096455047, 16.52258580777371),
+     (0.8673704038911089, 16.53082345227807), (0.8793266143044912, 16.54023820722752),
+     (0.890335423944728, 16.55074509489763), (0.9002974671249906, 16.56224927995707),
+     (0.9091228262887798, 16.574646925452782), (0.9129273349479831, 16.581236527748356)]
+)
+
+
+def test_reach_past_a_zero_width_spike_in_the_target():
+    tool = GroovingTool(1.5, 0.0)
+    unreachable = unreachable_region(SPIKE_TARGET, SPIKE_STOCK, tool, MINUS_Z)
+    # The blade (as wide as the groove across X) goes down -Z until its front
+    # meets the 60 degree flank's upper end at Z0.066: the part of the groove
+    # beyond that is out of reach, nothing else.
+    beyond = shapely.intersection(SPIKE_TARGET, box(-1.0, 14.0, 0.06602540378443889, 17.0))
+    assert shapely.symmetric_difference(unreachable, beyond).area < 1e-6
+    assert beyond.area == pytest.approx(0.5 * 1.5 * 0.8660254 - 0.5 * 0.0660254 * 0.0660254 * math.sqrt(3), abs=1e-6)
+
+
+# CYCLE93(15, 0, 2.56, 0.8, 0, 0, 0, 0, 0.52, 0.6, 0, 0, 0, 0.3, 0, 1, 0), blade
+# 2.56 sharp, -X: the floor's -Z corner is rounded R0.6 (material stays), the
+# mouth's +Z corner R0.52. What the blade cannot reach is a thin sliver at one
+# end, and shapely.segmentize of it (used to find its farthest point) came
+# back empty.
+SLIVER_STOCK = region(8.08, 15.0, -4.5600000000000005, 7.640000000000001)
+SLIVER_TARGET = shapely.Polygon(
+    [(0.0, 15.0), (0.0, 14.8)]
+    + [(0.6 - 0.6 * math.cos(a), 14.8 - 0.6 * math.sin(a)) for a in [k * math.pi / 64 for k in range(1, 32)]]
+    + [(0.6, 14.2), (2.56, 14.2), (2.56, 14.48)]
+    + [(3.08 - 0.52 * math.cos(a), 14.48 + 0.52 * math.sin(a)) for a in [k * math.pi / 64 for k in range(1, 32)]]
+    + [(3.08, 15.0)]
+)
+SLIVER_TARGET_GENERATED = shapely.Polygon(
+    [(0.0, 15.0), (0.0, 14.8), (0.0007700956973683004, 14.769610498696773), (0.0030784059648628626, 14.73929900680754),
+     (0.006919005403133172, 14.709143333497254), (0.012282035248503353, 14.679220887946803),
+     (0.019153728680277426, 14.649608480644767), (0.02751644615997062, 14.620382126215985),
+     (0.03734872071175177, 14.591616848293107), (0.04862531302786155, 14.563386486932009),
+     (0.06131727625755501, 14.535763509065418), (0.0753920303132507, 14.508818822481352),
+     (0.0908134455031494, 14.482621593803822), (0.1075419352756341, 14.457239070943125),
+     (0.12553455783738082, 14.432736410471403), (0.14474512638432535, 14.409176510366667),
+     (0.165124327662528, 14.386619848554588), (0.18661984855458796, 14.365124327662528),
+     (0.20917651036666646, 14.344745126384325), (0.23273641047140237, 14.325534557837381),
+     (0.2572390709431246, 14.307541935275633), (0.28262159380382235, 14.290813445503149),
+     (0.30881882248135156, 14.27539203031325), (0.33576350906541946, 14.261317276257556),
+     (0.3633864869320088, 14.248625313027862), (0.3916168482931076, 14.237348720711752),
+     (0.4203821262159849, 14.22751644615997), (0.44960848064476766, 14.219153728680277),
+     (0.47922088794680384, 14.212282035248503), (0.5091433334972537, 14.206919005403133),
+     (0.5392990068075408, 14.203078405964863), (0.5696104986967724, 14.200770095697369),
+     (0.5999999999999999, 14.2), (2.56, 14.2), (2.56, 14.48), (2.56, 14.494086445725303),
+     (2.5615252495948315, 14.522218019203532), (2.564571274964635, 14.550225759957367),
+     (2.569129141592178, 14.578027516457508), (2.575185480469332, 14.605541741361957),
+     (2.5827225273106764, 14.632687730708433), (2.591718174659209, 14.659385860632987),
+     (2.6021460367313276, 14.685557820920524), (2.613975526810877, 14.711126844702152),
+     (2.6271719469652592, 14.73601793362563), (2.641696589820448, 14.760158077838472),
+     (2.657506852096386, 14.783476470138407), (2.6745563595697446, 14.80590471366311),
+     (2.6927951030975135, 14.82737702250999), (2.712169585302431, 14.847830414697569),
+     (2.7326229774900095, 14.867204896902487), (2.75409528633689, 14.885443640430255),
+     (2.7765235298615942, 14.902493147903614), (2.7998419221615283, 14.918303410179552),
+     (2.8239820663743695, 14.932828053034742), (2.848873155297849, 14.946024473189123),
+     (2.874442179079476, 14.957853963268672), (2.900614139367013, 14.96828182534079),
+     (2.927312269291568, 14.977277472689323), (2.954458258638043, 14.984814519530667),
+     (2.9819724835424926, 14.990870858407822), (3.0097742400426326, 14.995428725035366),
+     (3.0377819807964683, 14.998474750405169), (3.065913554274698, 15.0), (3.08, 15.0)]
+)
+
+
+def _lowest_blade_between_two_arcs():
+    """Lowest radius the bottom of a 2.56 sharp blade reaches in SLIVER_TARGET:
+    its -Z corner must clear the R0.6 floor fillet centred (0.6, 14.8), its
+    +Z corner stay inside the R0.52 mouth rounding centred (3.08, 14.48)."""
+    def gap(x):  # room for the blade's Z position at bottom radius x
+        s_min = 0.6 - math.sqrt(0.36 - (14.8 - x) ** 2)
+        s_max = 0.52 - math.sqrt(0.2704 - (x - 14.48) ** 2)
+        return s_max - s_min
+    lo, hi = 14.49, 14.79  # gap(lo) < 0 < gap(hi)
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if gap(mid) < 0 else (lo, mid)
+    return hi
+
+
+@pytest.mark.parametrize("target", [SLIVER_TARGET_GENERATED, SLIVER_TARGET], ids=["generated", "rebuilt"])
+def test_farthest_point_of_a_thin_unreachable_sliver(target):
+    tool = GroovingTool(2.56, 0.0)
+    result = simulate([], tool, MINUS_X, (20.0, 0.0), SLIVER_STOCK)
+    verdict = check_groove(result, target, tool)
+    assert verdict.incomplete and verdict.infeasible
+    # The farthest unreachable point is on the floor (R14.2) under the
+    # lowest the blade gets (up to the arcs' chords, 2e-4 inside the circles).
+    assert verdict.unreachable_depth == pytest.approx(_lowest_blade_between_two_arcs() - 14.2, abs=1e-3)
+
+
+# CYCLE93(18.13, 0.01, 2.36, 5.85, 70.7, 0, 0.1, 0, 0.1, 0, 0.46, 0, 0, 0.3, 0, 8,
+# 0), blade 2.36 R0.23, +Z: a face groove into a slanted front face. The
+# target's mouth edge lies on the stock's face only up to rounding, so the
+# plain union of target and air kept a zero-width wall of stock across the
+# mouth, which the corner radius's erosion made 0.46 thick: the whole groove
+# came out unreachable ("infeasible"), and nothing in it was checked.
+CRACK_STOCK = shapely.Polygon(
+    [(1.5368502853406727, 22.49), (-2.3702899981809105, 11.332958736878906), (11.58, 11.332958736878906), (11.58, 22.49)]
+)
+CRACK_TARGET = shapely.Polygon(
+    [(0.01, 18.13), (5.859999999999999, 18.13), (5.1411876816740385, 16.0773942285036), (5.13152469994402, 16.052196265489396),
+     (5.1204006726636075, 16.027608329971255), (5.107853887859706, 16.003715051689184), (5.093927530578709, 15.980598669427643),
+     (5.078669534246956, 15.958338747956084), (5.06213241568766, 15.937011904173296), (5.044373094362126, 15.916691543398048),
+     (5.025452696457445, 15.897447606713776), (5.005436344494965, 15.879346330236858), (4.984392933183696, 15.862450017137116),
+     (4.96239489229014, 15.846816823195212), (4.9395179373407325, 15.832500556635019), (4.915840809014955, 15.819550492919948),
+     (4.89144500212611, 15.808011205150683), (4.8664144851225855, 15.797922410648068), (4.840835411075059, 15.789318834249217),
+     (4.814795821144403, 15.782230088787355), (4.788385341550941, 15.776680573166777), (4.761694875088039, 15.772689388383734),
+     (4.734816288241843, 15.77027027178231), (4.707842094994066, 15.769431549771568), (-0.7492341505185041, 15.75990714529891),
+     (-0.7554029605746942, 15.759896378683338), (-0.7676443900598952, 15.75835860825954), (-0.7796039995424187, 15.755327919436352),
+     (-0.7911004331730871, 15.750850269662969), (-0.8019593587141587, 15.744993558144468), (-0.8120161111182056, 15.737846596216407),
+     (-0.8211181895134498, 15.729517760607255), (-0.829127569731204, 15.720133350010691), (-0.835922797308185, 15.709835669888719),
+     (-0.8414008292253558, 15.698780874547694), (-0.8434397128402371, 15.692958736878905)]
+)
+
+
+@pytest.mark.parametrize("model", ["blade", "disk"])
+def test_a_target_flush_with_a_slanted_face_is_reached_through_its_mouth(model):
+    tool = GroovingTool(2.36, 0.23)
+    unreachable = unreachable_region(CRACK_TARGET, CRACK_STOCK, tool, PLUS_Z, model=model)
+    # The groove's body (the blade fits it: 2.3606..2.3701 wide) is reached...
+    assert shapely.intersection(unreachable, box(-0.5, 15.0, 4.5, 19.0)).area < 1e-6
+    if model == "blade":
+        # ...and the flat front leaves the wedge of the 70.7 degree floor.
+        wedge = shapely.intersection(unreachable, box(4.5, 15.0, 6.0, 19.0))
+        assert 1.0 < wedge.area < 1.2
+        assert unreachable.area == pytest.approx(wedge.area, abs=1e-3)
+
+
+# --------------------------------------------------------------------------- Minkowski sum with a segment
+
+
+def _slow_sum_segment(geom, v):
+    """The sum as the union of many translated copies (exact to a step)."""
+    n = 100
+    return shapely.union_all([shapely.affinity.translate(geom, v[0] * k / n, v[1] * k / n) for k in range(n + 1)])
+
+
+polygons_with_holes = st.builds(
+    lambda radii, hole, clockwise, v: (radii, hole, clockwise, v),
+    st.lists(st.floats(1.0, 3.0), min_size=5, max_size=14),
+    st.booleans(),
+    st.booleans(),
+    st.sampled_from([(2.5, 0.0), (0.0, -4.0), (1.5, 1.0), (-0.3, 7.0), (1e-3, 0.0)]),
+)
+
+
+@given(polygons_with_holes)
+def test_property_sum_with_a_segment_matches_the_swept_copies(case):
+    radii, hole, clockwise, v = case
+    n = len(radii)
+    ring = [(r * math.cos(2 * math.pi * k / n), r * math.sin(2 * math.pi * k / n)) for k, r in enumerate(radii)]
+    ring = ring[::-1] if clockwise else ring  # _sum_segment orients the rings itself
+    geom = shapely.Polygon(ring, [[(0.3 * c, 0.3 * s) for c, s in [(math.cos(a), math.sin(a)) for a in (0, 2.1, 4.2)]]] if hole else None)
+    got = simulate_module._sum_segment(geom, v)
+    assert got.is_valid
+    slow = _slow_sum_segment(geom, v)
+    # Contains every copy; no larger than the copies by more than the
+    # slivers between two steps (|v|/100 times the perimeter).
+    assert shapely.difference(slow, got).area < 1e-9
+    step = math.hypot(*v) / 100
+    assert shapely.difference(got, slow).area <= step * 2 * 3.0 * n + 1e-9
+
+
+@pytest.mark.parametrize(
+    "target, v",
+    [(SLIVER_TARGET_GENERATED, (0.0, 7.3)), (SLIVER_TARGET, (-3.1, 0.0)), (shapely.difference(TUBE, GROOVE), (0.7, -2.0)), (SPIKE_TARGET, (64.8, 0.0))],
+)
+def test_sum_with_a_segment_falls_back_to_a_snapped_union(monkeypatch, target, v):
+    plain = simulate_module._sum_segment(target, v)
+    real = shapely.union_all
+
+    def failing(geoms, grid_size=None, **kwargs):
+        if grid_size is None:
+            raise shapely.errors.GEOSException("TopologyException: unable to assign free hole to a shell")
+        return real(geoms, grid_size=grid_size, **kwargs)
+
+    monkeypatch.setattr(shapely, "union_all", failing)
+    snapped = simulate_module._sum_segment(target, v)
+    assert snapped.is_valid
+    if target is SPIKE_TARGET:
+        # The plain sum sweeps the zero-width spike too (R16.5746..16.5812),
+        # the snapped one drops it: both are the shape swept 64.8 along Z.
+        assert plain.area == pytest.approx(target.area + 64.8 * (16.581236527748356 - 15.0), abs=1e-6)
+        assert snapped.area == pytest.approx(target.area + 64.8 * (16.574646925452782 - 15.0), abs=1e-6)
+        assert shapely.difference(snapped, plain).area < 1e-9
+    else:
+        assert shapely.symmetric_difference(plain, snapped).area < 1e-8
+        assert shapely.hausdorff_distance(plain, snapped) < 1e-10

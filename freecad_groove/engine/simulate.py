@@ -345,12 +345,34 @@ def _bisect(lo, hi, outside):
     return hi
 
 
+def _flat_parts(geom):
+    """The points, lines and polygons in geom, however nested."""
+    parts = shapely.get_parts(geom)
+    while True:
+        nested = shapely.get_type_id(parts) >= 4  # Multi* and collections
+        if not nested.any():
+            return parts
+        parts = np.concatenate([parts[~nested], shapely.get_parts(parts[nested])])
+
+
+def _densified_vertices(geom, step):
+    """Vertices of geom with extra ones on every edge, at most step apart.
+
+    The rings are densified, not the polygons: GEOS repairs a densified
+    polygon with buffer(0), which can turn a valid but thin sliver into
+    nothing at all."""
+    parts = _flat_parts(geom)
+    polygons = shapely.get_type_id(parts) == 3
+    lines = np.concatenate([shapely.get_rings(parts[polygons]), parts[~polygons]])
+    return shapely.get_coordinates(shapely.segmentize(lines, step))
+
+
 def _farthest_from(excess, target):
     """Largest distance of a point of ``excess`` from ``target`` (inf when
     target is empty)."""
     if target.is_empty:
         return math.inf
-    pts = shapely.points(_vertices(shapely.segmentize(excess, max(0.01, excess.length / 20000.0))))
+    pts = shapely.points(_densified_vertices(excess, max(0.01, excess.length / 20000.0)))
     lo = float(np.max(shapely.distance(target, pts)))
 
     def outside(d):
@@ -389,23 +411,131 @@ def _depth_inside(region, remaining, tol):
     return _bisect(max(lo, tol), hi, outside), core
 
 
-def _translate(geom, v):
-    return shapely.transform(geom, lambda c: c + np.asarray(v, dtype=float))
+# Grid (mm) to which _sum_segment snaps its input and its union when the plain
+# floating union fails or is implausible: far below every tolerance the checks
+# use and far below FIT_SLACK, yet some hundred float ulps of the coordinates.
+SUM_GRID = 1e-11
 
 
-def _sum_segment(geom, v):
-    """Minkowski sum of a polygonal geometry with the segment from 0 to v."""
-    if geom.is_empty or (v[0] == 0 and v[1] == 0):
+# Parts of a swept geometry thinner than this (mm, on average) are overlay
+# debris (a polygon collapsed to a line, its sides a few ulps apart): swept, one
+# would add a whole band of reach. Far below FIT_SLACK.
+SLIVER_WIDTH = 1e-10
+
+
+def _polygonal(geom):
+    """geom as a valid (Multi)Polygon without slivers: invalid input is
+    repaired, and lines, points and parts thinner than SLIVER_WIDTH (the
+    debris of an overlay, zero-area spikes) are dropped."""
+    if geom.is_empty:
+        return _EMPTY
+    if not geom.is_valid:
+        geom = shapely.make_valid(geom)
+    parts = _flat_parts(geom)
+    polygons = parts[shapely.get_type_id(parts) == 3]
+    keep = shapely.area(polygons) > 0.25 * SLIVER_WIDTH * shapely.length(polygons)
+    if keep.all() and len(polygons) == len(parts) and geom.geom_type in ("Polygon", "MultiPolygon"):
         return geom
-    v = np.asarray(v, dtype=float)
+    polygons = polygons[keep]
+    if len(polygons) == 0:
+        return _EMPTY
+    if len(polygons) == 1:
+        return polygons[0]
+    return _union_all(polygons)
+
+
+def _sweep_quads(geom, v):
+    """The parallelograms swept by the edges of geom's rings that face v
+    (outward normal . v > 0). geom's rings must be oriented (exteriors
+    counter-clockwise, holes clockwise)."""
     quads = []
     for ring in shapely.get_rings(shapely.get_parts(geom)):
         c = shapely.get_coordinates(ring)
         a, b = c[:-1], c[1:]
-        quads.append(np.stack([a, b, b + v, a + v, a], axis=1))
+        d = b - a
+        # outward normal of an edge d of a counter-clockwise exterior (or a
+        # clockwise hole) is (d_x, -d_z) in (z, x)
+        facing = d[:, 1] * v[0] - d[:, 0] * v[1] > 0.0
+        if facing.any():
+            a, b = a[facing], b[facing]
+            quads.append(np.stack([a, b, b + v, a + v, a], axis=1))
+    if not quads:
+        return np.empty(0, dtype=object)
     quads = shapely.polygons(np.concatenate(quads))
-    quads = quads[shapely.area(quads) > 1e-14]  # edges parallel to v sweep nothing
-    return _union_all(np.concatenate([[geom, _translate(geom, v)], quads]))
+    bad = ~shapely.is_valid(quads)
+    if bad.any():  # a sliver the translation's rounding turned into a bow tie
+        quads[bad] = [_polygonal(q) for q in quads[bad]]
+    return quads
+
+
+def _plausible_union(result, pieces):
+    """Cheap sanity check of a union: valid, polygonal, and no smaller than
+    its largest piece nor larger than all pieces together. (GEOS has been
+    seen to return a wrong union of nearly degenerate input without any
+    error.)"""
+    if not result.is_valid or result.geom_type not in ("Polygon", "MultiPolygon"):
+        return False
+    areas = shapely.area(pieces)
+    slack = 1e-9 * float(np.sum(areas)) + NOISE_AREA
+    return float(np.max(areas)) - slack <= result.area <= float(np.sum(areas)) + slack
+
+
+def _snapped(geom):
+    """geom on the SUM_GRID, valid, without the features thinner than that
+    grid (a spike whose two sides lie 1e-15 apart: GEOS keeps it as valid)."""
+    try:
+        return _polygonal(shapely.set_precision(geom, SUM_GRID))
+    except shapely.errors.GEOSException:
+        return geom
+
+
+def _sum_segment(geom, v):
+    """Minkowski sum of a polygonal geometry with the segment from 0 to v.
+
+    A point q is in the sum when the path from q - v to q meets geom; if q is
+    not in geom that path leaves geom through an edge facing v, so the sum
+    is geom united with the parallelograms swept by the edges that face v.
+    (The translated copy of geom is not needed, it is covered too; and it
+    need not even be valid: the rounding of the translation can make a
+    zero-width spike cross itself, on which GEOS failed with "unable to
+    assign free hole to a shell" or, worse, returned a wrong union.)
+
+    The plain floating union is tried first: it keeps the coordinates of
+    edges along v exact, so that the reach of a blade that fits a groove
+    exactly does not fall short of the groove's walls by a rounding error.
+    When GEOS fails on it or returns something implausible, geom is snapped
+    to SUM_GRID (which also drops zero-width spikes) and the union done with
+    snap rounding on that grid; as a last resort in small batches.
+    """
+    if geom.is_empty or (v[0] == 0 and v[1] == 0):
+        return geom
+    v = np.asarray(v, dtype=float)
+    geom = _polygonal(geom)
+    if geom.is_empty:
+        return geom
+    geom = shapely.orient_polygons(geom)
+    pieces = np.concatenate([[geom], _sweep_quads(geom, v)])
+    try:
+        result = shapely.union_all(pieces)
+        if _plausible_union(result, pieces):
+            return result
+    except shapely.errors.GEOSException:
+        pass
+    geom = shapely.orient_polygons(_snapped(geom))
+    pieces = np.concatenate([[geom], _sweep_quads(geom, v)])
+    try:
+        result = shapely.union_all(pieces, grid_size=SUM_GRID)
+        if _plausible_union(result, pieces):
+            return result
+    except shapely.errors.GEOSException:
+        pass
+    result = pieces[0]
+    for k in range(1, len(pieces), 16):
+        batch = shapely.union_all(pieces[k : k + 16], grid_size=SUM_GRID)
+        result = shapely.union(result, batch, grid_size=SUM_GRID)
+    if not _plausible_union(result, pieces):
+        raise shapely.errors.GEOSException("Minkowski sum with a segment failed: %s by %r" % (geom.wkt[:200], v.tolist()))
+    return result
 
 
 def _erode_segment(geom, v, frame):
@@ -413,6 +543,29 @@ def _erode_segment(geom, v, frame):
     around geom, larger by more than |v|)."""
     outside = _difference(frame, geom)
     return _difference(frame, _sum_segment(outside, (-v[0], -v[1])))
+
+
+# Gaps (mm) narrower than twice this between the target and the air are closed
+# (see _free_space).
+JOIN_GAP = 1e-9
+
+
+def _free_space(target, air):
+    """target united with the air, with the cracks between them closed.
+
+    The target's edges that run along the stock's surface lie on it only up
+    to float rounding: the plain union can leave a zero-width wall of stock
+    between the target and the air, which eroding by the corner radius turns
+    into a wall 2r thick across the groove's mouth (and the whole groove
+    unreachable). A closing by JOIN_GAP removes walls thinner than 2 JOIN_GAP;
+    it is added to the plain union, not put in its place, so that the edges
+    keep their exact coordinates (the closing recomputes them, off by
+    rounding, and a reach that falls short of the target's wall by 1e-15
+    leaves a sliver of "unreachable" target that the check would then excuse
+    a tol-wide band around)."""
+    free = _union(target, air)
+    closed = free.buffer(JOIN_GAP, join_style="mitre").buffer(-JOIN_GAP, join_style="mitre")
+    return _union(free, closed)
 
 
 def _air(stock, target, margin):
@@ -448,7 +601,7 @@ def reachable_region(target, stock, tool, plunge, tol=0.001, model="blade"):
         r = 0.0
     if model == "disk":
         frame, air = _air(stock, target, 2 * r + 1.0)
-        free = _union(target, air)
+        free = _free_space(target, air)
         if r == 0.0:
             return free
         return free.buffer(-r, quad_segs=QUAD_SEGS).buffer(r, quad_segs=QUAD_SEGS)
@@ -467,7 +620,7 @@ def reachable_region(target, stock, tool, plunge, tol=0.001, model="blade"):
     reach = length + width + _diagonal(target) + 1.0
     frame, air = _air(stock, target, reach + 1.0)
     column = _sum_segment(target, (back[0] * reach, back[1] * reach))
-    free = _intersection(column, _union(target, air))
+    free = _intersection(column, _free_space(target, air))
     zmin, xmin, zmax, xmax = frame.bounds
     big = box(zmin - reach, xmin - reach, zmax + reach, xmax + reach)
     core = free.buffer(-r, quad_segs=QUAD_SEGS) if r > 0 else free
