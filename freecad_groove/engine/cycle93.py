@@ -405,7 +405,12 @@ class GrooveGeometry:
             _Corner(r2, d2, contour_dir, 0.0, chr_mode),
         ]
         rough_base = rb2[0] - rb1[0]
-        fits = rough_base >= self.tool.width and rough[1].length + rough[2].length < rough_base * math.hypot(1, m)
+        fits = (
+            rough_base >= self.tool.width
+            and rough[1].length + rough[2].length < rough_base * math.hypot(1, m)
+            and rough[1].length <= math.dist(r1, rb1)
+            and rough[2].length <= math.dist(r2, rb2)
+        )
         # When the allowances leave no room for the blade, rough to the final
         # profile (without its edge features) rather than not at all.
         if not fits:
@@ -414,6 +419,9 @@ class GrooveGeometry:
         self.final_top = self._material_top(final)
         self.rough_top = self._material_top(rough)
         tool = self.tool
+        for top in (self.final_top, self.rough_top):
+            if any(b[0] < a[0] - 1e-9 for a, b in zip(top, top[1:])):
+                raise _err("call", None, "groove form wrong: the profile folds back on itself", ALARM_FORM)
         self.final_env = Envelope(self.final_top, tool.width, tool.corner_radius, self._element_ends(final))
         self.rough_env = Envelope(self.rough_top, tool.width, tool.corner_radius, self._element_ends(rough))
 
@@ -577,7 +585,9 @@ class GrooveGeometry:
         ua = left - r
         ub = right - w + r
         mid = 0.5 * (ua + ub)
-        ends = (mid, mid) if stop_at is None else (min(stop_at[0], mid), max(stop_at[1], mid))
+        # Between the first and the last full-depth plunge the plunges left
+        # nothing: the passes need only reach those.
+        ends = (mid, mid) if stop_at is None else stop_at
         for start, end in ((ua, ends[0]), (ub, ends[1])):
             go("r", start, self.clearance(start))
             pts = env.trace(start, end, PATH_TOLERANCE)
