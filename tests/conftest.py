@@ -6,6 +6,9 @@
   environment variable is set (and not 0/false/no), else "dev" (60
   examples). Override with ``--hypothesis-profile ci``. Neither has a
   deadline: a simulated groove takes 10-50 ms.
+* tests/freecad/ holds FreeCAD-level tests: they run inside FreeCAD
+  (tests/freecad/run_suite.py, driven by tests/test_freecad.py), so the host's
+  pytest, which has no FreeCAD, does not collect them.
 """
 
 import os
@@ -16,6 +19,9 @@ ROOT = os.path.dirname(HERE)
 for path in (ROOT, HERE):
     if path not in sys.path:
         sys.path.insert(0, path)
+
+# Inside FreeCAD (run_suite.py) FreeCAD is already imported; on the host it is not.
+collect_ignore = [] if "FreeCAD" in sys.modules else ["freecad"]
 
 from hypothesis import settings  # noqa: E402
 

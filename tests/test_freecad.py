@@ -1,0 +1,144 @@
+"""The FreeCAD-level tests (tests/freecad/), run inside each FreeCAD.
+
+For every FreeCAD that `scripts/freecad-roots` provides (1.1 and 1.0: Debian
+sid and trixie roots, or the host's own freecadcmd) this runs
+tests/freecad/run_suite.py under `freecadcmd`, with a directory shared with
+the run: the host writes the seed CYCLE93 moves there (the FreeCAD side
+compares its own expansion with them) and the run writes its JSON result
+there. A FreeCAD that is not available skips, with how to get it; under
+CI=true it fails.
+"""
+
+import ast
+import functools
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+from conftest import IN_CI, ROOT
+
+sys.path.insert(0, os.path.join(ROOT, "tests", "freecad"))
+import seed_case  # noqa: E402  (no FreeCAD in it)
+
+SCRIPT = os.path.join(ROOT, "scripts", "freecad-roots")
+SUITE = os.path.join(ROOT, "tests", "freecad", "run_suite.py")
+LABELS = ["1.1", "1.0"]  # 1.1 first: the primary target
+TIMEOUT = 1800  # seconds for one FreeCAD's suite (about 30 s on a 2-core machine)
+# Short: FreeCAD 1.1 crashes on a -c text of 256 characters or more.
+RUN_SUITE_CODE = "import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT'] + '/tests/freecad/run_suite.py').read())"
+CROSS_CHECK = "tests/freecad/test_environment.py::test_seed_cycle93_expands_to_the_hosts_moves"
+HOW_TO_GET = "`scripts/freecad-roots ensure` (as root) builds FreeCAD 1.1 and 1.0 (about 5 GB, a few minutes)"
+
+
+def engine_test_files():
+    """ENGINE_TESTS of run_suite.py (read, not imported: it runs on import)."""
+    with open(SUITE) as f:
+        tree = ast.parse(f.read())
+    for node in tree.body:
+        if isinstance(node, ast.Assign) and [t.id for t in node.targets] == ["ENGINE_TESTS"]:
+            return list(ast.literal_eval(node.value))
+    raise AssertionError("ENGINE_TESTS not found in " + SUITE)
+
+
+@functools.lru_cache(maxsize=None)
+def available():
+    """{label: where} from `scripts/freecad-roots list`; {} if it fails."""
+    try:
+        out = subprocess.run([SCRIPT, "list"], capture_output=True, text=True, timeout=120).stdout
+    except (OSError, subprocess.SubprocessError):
+        return {}
+    found = {}
+    for line in out.splitlines():
+        fields = line.split("\t")
+        if len(fields) >= 2:
+            found[fields[0]] = fields[1]
+    return found
+
+
+def not_available(label, why):
+    message = "FreeCAD %s is not available: %s. %s" % (label, why.strip(), HOW_TO_GET)
+    if IN_CI:
+        pytest.fail(message + " (CI: a missing FreeCAD is a failure)", pytrace=False)
+    pytest.skip(message)
+
+
+def describe_failures(result):
+    parts = []
+    if result.get("internal_error"):
+        parts.append("run_suite.py itself failed:\n" + result["internal_error"])
+    for entry in result.get("collection_errors", []):
+        parts.append("COLLECTION ERROR %s\n%s" % (entry["nodeid"], entry["longrepr"]))
+    for key in ("failed", "errors"):
+        for entry in result.get(key, []):
+            text = "%s %s (%s)\n%s" % (key.upper()[:-1] if key == "errors" else "FAILED",
+                                       entry["nodeid"], entry["when"], entry["longrepr"])
+            for stream in ("stdout", "stderr"):
+                if entry.get(stream):
+                    text += "\n--- captured %s ---\n%s" % (stream, entry[stream])
+            parts.append(text)
+    return "\n\n".join(parts)
+
+
+def publish_artifacts(src):
+    """Move the FreeCAD run's post artifacts to out/post-artifacts/<version>/."""
+    if not src.is_dir():
+        return
+    for sub in src.iterdir():
+        dest = os.path.join(ROOT, "out", "post-artifacts", sub.name)
+        shutil.rmtree(dest, ignore_errors=True)
+        shutil.copytree(sub, dest)
+
+
+def tail(text, lines=40):
+    return "\n".join(text.splitlines()[-lines:])
+
+
+@pytest.mark.parametrize("label", LABELS + sorted(set(available()) - set(LABELS)))
+def test_freecad_level_suite(label, tmp_path):
+    where = available().get(label)
+    if where is None:
+        not_available(label, "`scripts/freecad-roots list` does not list it")
+
+    with open(tmp_path / seed_case.HOST_MOVES_FILE, "w") as f:
+        json.dump(seed_case.as_json(), f)
+    env = dict(os.environ)
+    env.pop("FREECAD_GROOVE_PYTEST_ARGS", None)
+    env["FREECAD_GROOVE_RESULT"] = "result.json"  # in the shared directory
+    env["FREECAD_GROOVE_SUITE_EXIT"] = "1"
+    # The posts' LinuxCNC output and groove geometry, for the host-side rs274
+    # and simulation checks in test_post_artifacts.py (runs after this file).
+    env["FREECAD_GROOVE_ARTIFACTS"] = "artifacts"
+    command = [
+        SCRIPT, "run", label, "--share", str(tmp_path), "--",
+        # -M: the checkout is loaded as a FreeCAD Mod, like an installed add-on.
+        "sh", "-c", 'exec freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$1"', "sh", RUN_SUITE_CODE,
+    ]
+    proc = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUT, env=env)
+    if proc.returncode == 77:
+        not_available(label, proc.stderr)
+    output = "exit status %d\n--- stdout ---\n%s\n--- stderr ---\n%s" % (
+        proc.returncode, tail(proc.stdout), tail(proc.stderr))
+
+    result_file = tmp_path / "result.json"
+    assert result_file.exists(), "FreeCAD %s (%s) wrote no result:\n%s" % (label, where, output)
+    result = json.loads(result_file.read_text())
+    counts = result["counts"]
+    summary = "FreeCAD %s (%s, %s): %s" % (
+        ".".join(result["freecad_version"][:3]) if result["freecad_version"] else "?",
+        where, result["python"].split()[0], ", ".join("%s %d" % kv for kv in counts.items() if kv[1]))
+    print(summary)
+
+    publish_artifacts(tmp_path / "artifacts")
+    failures = describe_failures(result)
+    assert not failures, "%s\n\n%s\n\nexit status %d" % (summary, failures, proc.returncode)
+    assert result["exitstatus"] == 0 and proc.returncode == 0, "%s\n%s" % (summary, output)
+    assert counts["passed"] > 0, summary
+    assert CROSS_CHECK in result["passed"], "%s: %s did not pass (skipped: %s)" % (
+        summary, CROSS_CHECK, result["skipped"])
+    for name in engine_test_files():
+        ran = [n for n in result["passed"] if n.startswith(name + "::")]
+        assert ran, "%s: no test of %s passed under FreeCAD's Python" % (summary, name)
