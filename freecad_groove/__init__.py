@@ -1,7 +1,16 @@
 """freecad-groove: lathe grooving and canned cycles for FreeCAD's CAM workbench.
 
 ``freecad_groove.engine`` is the pure-Python cycle engine (no FreeCAD import);
-the FreeCAD operation and GUI layers import FreeCAD only when they are used.
+the FreeCAD operation and GUI layers import FreeCAD only when they are used:
+``freecad_groove.make_groove`` loads the FreeCAD layer on its first call.
 """
 
 __version__ = "0.1.0"
+
+
+def make_groove(*args, **kwargs):
+    """Create a Groove operation in a CAM Job (needs FreeCAD); see
+    freecad_groove.freecad.api.make_groove for the arguments."""
+    from .freecad.api import make_groove as _make_groove
+
+    return _make_groove(*args, **kwargs)

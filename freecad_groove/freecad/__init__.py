@@ -1,0 +1,14 @@
+"""The FreeCAD layer of freecad-groove, headless part: the Groove operation.
+
+Imports FreeCAD, Part and Path (never Qt or FreeCADGui), so it works in
+``freecadcmd`` scripts. The GUI layer (task panel, commands, view provider)
+builds on it.
+
+    faces.py      what a picked face of a turned part means for a groove
+    groove_op.py  ObjectGroove (the op's proxy) and Create()
+    api.py        make_groove(): a groove op in a job from a script
+"""
+
+from .api import make_groove
+
+__all__ = ["make_groove"]

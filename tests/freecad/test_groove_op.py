@@ -1,0 +1,558 @@
+"""The Groove operation inside FreeCAD (1.1 and 1.0; run by tests/freecad/run_suite.py).
+
+A stepped shaft turned about Z (a revolved profile) carries a face of every
+kind: a cylinder, a cone growing toward +Z, a cone shrinking toward +Z, a
+shoulder face looking +Z, the left end face looking -Z and a blind bore open
+toward +Z. A Job and tool controller are built by script and a Groove op put
+on each face.
+"""
+
+import ast
+import math
+import os
+
+import FreeCAD
+import Part
+import Path.Main.Job as PathJob
+import pytest
+
+from freecad_groove import make_groove
+from freecad_groove.engine.moves import DWELL, FEED, RAPID
+from freecad_groove.freecad import faces as faces_mod
+from freecad_groove.freecad import groove_op
+
+V = FreeCAD.Vector
+
+# (radius, z) of the shaft's half section, revolved about Z.
+PROFILE = [(0, 0), (16, 0), (20, 10), (20, 30), (14, 30), (14, 50), (10, 60), (6, 60), (6, 25), (0, 25), (0, 0)]
+CONE_ANGLE = math.degrees(math.atan2(4, 10))  # both cones change radius by 4 over 10 in Z
+FEED_MM_MIN = 120.0
+
+
+def shaft_shape():
+    wire = Part.makePolygon([V(r, 0, z) for r, z in PROFILE])
+    return Part.Face(wire).revolve(V(0, 0, 0), V(0, 0, 1), 360)
+
+
+# name -> predicate on the analysed face
+FACES = {
+    "cylinder": lambda f: f.surface == "cylinder" and f.external and abs(f.r_max - 20) < 1e-9,
+    "cone_up": lambda f: f.surface == "cone" and abs(f.z_min) < 1e-9,
+    "cone_down": lambda f: f.surface == "cone" and abs(f.z_max - 60) < 1e-9,
+    "shoulder": lambda f: f.surface == "plane" and abs(f.z_min - 30) < 1e-9,
+    "left_end": lambda f: f.surface == "plane" and abs(f.z_min) < 1e-9,
+    "bore": lambda f: f.surface == "cylinder" and not f.external,
+}
+
+# name -> (make_groove keywords, GrooveKind, AXFA, AXSA, ANGC, TYP)
+CASES = {
+    "cylinder": (dict(position=5), "longitudinal, external", 20.0, 25.0, 0.0, 5),
+    "cone_up": (dict(position=3), "oblique (ANGC 21.801°), external", 18.8, 7.0, CONE_ANGLE, 5),
+    "cone_down": (dict(position=2), "oblique (ANGC 158.199°), external", 10.8, 58.0, 180 - CONE_ANGLE, 5),
+    "shoulder": (dict(position=1, width=3.5), "face, external", 19.0, 30.0, 90.0, 6),
+    "left_end": (dict(position=2), "face, internal", 14.0, 0.0, 90.0, 8),
+    "bore": (dict(position=10, depth=1.5), "longitudinal, internal", 6.0, 50.0, 0.0, 7),
+}
+
+
+def face_name(shape, key):
+    hits = []
+    for i, face in enumerate(shape.Faces):
+        try:
+            gf = faces_mod.analyse_face(face, "Face%d" % (i + 1))
+        except ValueError:
+            continue
+        if FACES[key](gf):
+            hits.append("Face%d" % (i + 1))
+    assert len(hits) == 1, (key, hits)
+    return hits[0]
+
+
+@pytest.fixture
+def doc():
+    d = FreeCAD.newDocument("GrooveOpTest")
+    name = d.Name
+    FreeCAD.setActiveDocument(name)
+    yield d
+    if name in FreeCAD.listDocuments():
+        FreeCAD.closeDocument(name)
+
+
+@pytest.fixture
+def shop(doc):
+    """(doc, shaft, job, tc): the shaft in a Job with one tool controller."""
+    shaft = doc.addObject("Part::Feature", "Shaft")
+    shaft.Shape = shaft_shape()
+    doc.recompute()
+    job = PathJob.Create("Job", [shaft])
+    tc = job.Tools.Group[0]
+    tc.HorizFeed = "%g mm/min" % FEED_MM_MIN
+    tc.VertFeed = "%g mm/min" % FEED_MM_MIN
+    doc.recompute()
+    return doc, shaft, job, tc
+
+
+def groove(shop, key, **extra):
+    doc, shaft, job, tc = shop
+    kw = dict(width=4, depth=2, infeed=1, tool_width=3, tool_corner_radius=0.2)
+    kw.update(CASES[key][0])
+    kw.update(extra)
+    return make_groove(job, (shaft, face_name(shaft.Shape, key)), name="Groove_" + key, **kw)
+
+
+def path_moves(op):
+    """[(name, params)] of the op's Path without comments and G18."""
+    out = []
+    for c in op.Path.Commands:
+        if c.Name.startswith("(") or c.Name == "G18":
+            continue
+        out.append((c.Name, dict(c.Parameters)))
+    return out
+
+
+def expected_moves(op):
+    """What the Path must hold after G18: per groove the link rapids, then the
+    engine's own expansion of the derived call from the derived start point."""
+    f = op.ToolController.HorizFeed.Value
+    out = []
+    for plan in op.Proxy.plan(op):
+        for x, z in plan.link:
+            params = {}
+            if x is not None:
+                params["X"] = x
+            if z is not None:
+                params["Z"] = z
+            out.append(("G0", params))
+        for m in plan.cycle.expand(plan.start, plan.settings):
+            if m.kind == RAPID:
+                out.append(("G0", {"X": m.x, "Z": m.z}))
+            elif m.kind == FEED:
+                out.append(("G1", {"X": m.x, "Z": m.z, "F": f}))
+            else:
+                assert m.kind == DWELL
+                out.append(("G4", {"P": m.p}))
+    return out
+
+
+def assert_same_moves(actual, expected, tol=1e-6):
+    assert len(actual) == len(expected)
+    for i, ((an, ap), (en, ep)) in enumerate(zip(actual, expected)):
+        assert an == en, (i, an, en)
+        assert sorted(ap) == sorted(ep), (i, ap, ep)
+        for k in ep:
+            assert ap[k] == pytest.approx(ep[k], abs=tol), (i, k, ap, ep)
+
+
+# -- deriving CYCLE93 from the faces --------------------------------------------
+
+
+@pytest.mark.parametrize("key", sorted(CASES))
+def test_derived_parameters_and_path(shop, key):
+    op = groove(shop, key)
+    _kw, kind, axfa, axsa, angc, typ = CASES[key]
+    assert op.isValid(), op.getStatusString()
+    assert op.GrooveKind == kind
+    assert op.AXFA.Value == pytest.approx(axfa, abs=1e-9)
+    assert op.AXSA.Value == pytest.approx(axsa, abs=1e-9)
+    assert op.ANGC.Value == pytest.approx(angc, abs=1e-9)
+    assert op.TYP == typ
+    (call, settings, start), = op.Proxy.cycles(op)
+    assert (call.axfa, call.axsa, call.typ) == (pytest.approx(axfa, abs=1e-9), pytest.approx(axsa, abs=1e-9), typ)
+    assert (call.widg, call.depg, call.idep) == (op.Width.Value, op.Depth.Value, 1.0)
+    assert (settings.tool.width, settings.tool.corner_radius, settings.tool.reference) == (3.0, 0.2, "minus")
+    assert start.feed == pytest.approx(FEED_MM_MIN) and not start.feed_per_rev
+    commands = op.Path.Commands
+    assert commands[0].Name == "(%s)" % op.Label
+    assert commands[1].Name == "G18"
+    moves = path_moves(op)
+    assert_same_moves(moves, expected_moves(op))
+    assert any(name == "G1" for name, _p in moves)
+    assert all("Y" not in p for _n, p in moves)
+    assert all(p["F"] == pytest.approx(FEED_MM_MIN / 60.0) for n, p in moves if n == "G1")
+
+
+def test_path_in_model_coordinates(shop):
+    """X is the radius: the 2 mm deep groove in the R20 cylinder bottoms at X18,
+    between Z21 and Z25 (the minus reference corner, blade 3 wide)."""
+    op = groove(shop, "cylinder")
+    feeds = [p for n, p in path_moves(op) if n == "G1"]
+    assert min(p["X"] for p in feeds) == pytest.approx(18.0, abs=1e-9)
+    assert max(p["X"] for p in feeds) <= 20.0 + 1e-9
+    assert min(p["Z"] for p in feeds) == pytest.approx(21.0, abs=1e-9)
+    assert max(p["Z"] + 3.0 for p in feeds) == pytest.approx(25.0, abs=1e-9)
+    plan, = op.Proxy.plan(op)
+    # start point: 1 mm (Retract 0 = 1 mm) outside the model's largest radius, beside the groove
+    assert (plan.start.x, plan.start.z, plan.start_on) == (pytest.approx(21.0), pytest.approx(22.0), "side")
+    # from wherever the tool is: out to the safe radius first, then along Z
+    assert plan.link == [(21.0, None), (21.0, 22.0)]
+
+
+def test_internal_groove_enters_the_bore_from_its_open_end(shop):
+    op = groove(shop, "bore")
+    plan, = op.Proxy.plan(op)
+    assert plan.start_on == "top"
+    assert plan.start.z == pytest.approx(61.0)  # 1 mm beyond the part's +Z end
+    assert plan.start.x == pytest.approx(5.0)  # 1 mm inside the bore wall
+    # from wherever the tool is: beyond the part's +Z end first, then in X
+    assert plan.link == [(None, 61.0), (5.0, 61.0)]
+    feeds = [p for n, p in path_moves(op) if n == "G1"]
+    assert max(p["X"] for p in feeds) == pytest.approx(7.5, abs=1e-9)
+
+
+def test_chr_chamfers_add_ten_to_typ(shop):
+    op = groove(shop, "cylinder", chamfer_measure="Leg length (CHR)", edge_corner1=0.5, edge_corner1_type="Chamfer",
+                base_corner2=0.3, base_corner2_type="Radius")
+    assert op.isValid(), op.getStatusString()
+    assert op.TYP == 15
+    (call, _s, _st), = op.Proxy.cycles(op)
+    assert (call.rco1, call.rco2, call.rci1, call.rci2) == (-0.5, 0.0, 0.0, 0.3)
+    assert_same_moves(path_moves(op), expected_moves(op))
+
+
+def test_several_grooves_pitch_toward_minus_z(shop):
+    op = groove(shop, "cylinder", position=2, groove_count=3, pitch=6, dwell=0.5)
+    assert op.isValid(), op.getStatusString()
+    plans = op.Proxy.plan(op)
+    assert [p.cycle.axsa for p in plans] == [28.0, 22.0, 16.0]
+    assert [c.Name for c in op.Path.Commands].count("G18") == 1
+    assert sum(1 for c in op.Path.Commands if "groove" in c.Name) == 3
+    assert plans[1].link == [(21.0, plans[1].start.z)]  # along Z on the safe cylinder
+    moves = path_moves(op)
+    assert_same_moves(moves, expected_moves(op))
+    assert any(n == "G4" and p["P"] == pytest.approx(0.5) for n, p in moves)
+
+
+def test_tool_size_comes_from_the_bit_when_it_has_one(shop):
+    doc, shaft, job, tc = shop
+    bit = tc.Tool
+    bit.addProperty("App::PropertyLength", "Width", "Groove test")
+    bit.addProperty("App::PropertyLength", "CornerRadius", "Groove test")
+    bit.Width = 2.5
+    bit.CornerRadius = 0.1
+    op = groove(shop, "cylinder", tool_width=3, tool_corner_radius=0.2)
+    (_c, settings, _st), = op.Proxy.cycles(op)
+    assert (settings.tool.width, settings.tool.corner_radius) == (2.5, 0.1)
+    assert_same_moves(path_moves(op), expected_moves(op))
+
+
+# -- errors -----------------------------------------------------------------------
+
+
+def test_engine_error_marks_the_op_invalid_and_a_fix_recovers(shop):
+    doc, shaft, job, tc = shop
+    other = groove(shop, "shoulder")
+    op = groove(shop, "cylinder")
+    assert op.isValid()
+    op.Width = 2  # narrower than the 3 mm tool
+    doc.recompute()
+    assert not op.isValid()
+    status = op.getStatusString()
+    assert "WIDG=2" in status and "narrower than the tool width 3" in status and "(alarm 61602)" in status
+    # the stale moves are gone: one comment repeats the message
+    assert [c.Name for c in op.Path.Commands] == ["(%s: %s)" % (op.Label, status.replace("(", "[").replace(")", "]"))]
+    for o in (shaft, job, tc, other):
+        assert o.isValid(), o.Name
+    assert other.Path.Commands and "Invalid" not in other.State
+    op.Width = 4
+    doc.recompute()
+    assert op.isValid(), op.getStatusString()
+    assert "Invalid" not in op.State
+    assert_same_moves(path_moves(op), expected_moves(op))
+
+
+def test_groove_past_the_face_is_refused(shop):
+    doc, shaft, job, tc = shop
+    op = groove(shop, "cylinder", position=18)  # 18 + 4 > the 20 mm long face
+    assert not op.isValid()
+    assert "past the face" in op.getStatusString() and "Shaft.Face" in op.getStatusString()
+    op.Position = 15
+    doc.recompute()
+    assert op.isValid(), op.getStatusString()
+
+
+def test_pitch_is_required_for_several_grooves(shop):
+    op = groove(shop, "cylinder", groove_count=2)
+    assert not op.isValid()
+    assert "Pitch" in op.getStatusString()
+
+
+def test_unsupported_faces_name_the_face(doc):
+    box = doc.addObject("Part::Box", "Block")
+    box.Length = box.Width = box.Height = 10
+    ball = doc.addObject("Part::Sphere", "Ball")
+    off = doc.addObject("Part::Cylinder", "OffAxis")
+    off.Placement.Base = V(30, 0, 0)
+    tilted = doc.addObject("Part::Cylinder", "Tilted")
+    tilted.Placement.Rotation = FreeCAD.Rotation(V(1, 0, 0), 90)
+    doc.recompute()
+    with pytest.raises(ValueError, match=r"^Ball\.Face1: a sphere face"):
+        faces_mod.analyse_face(ball.Shape.Face1, "Ball.Face1")
+    with pytest.raises(ValueError, match=r"^Block\.Face1: a plane whose normal .* is not along Z"):
+        faces_mod.analyse_face(box.Shape.Face1, "Block.Face1")
+    with pytest.raises(ValueError, match=r"^OffAxis\.Face1: the cylinder's axis passes through X30 Y0"):
+        faces_mod.analyse_face(off.Shape.Face1, "OffAxis.Face1")
+    with pytest.raises(ValueError, match=r"^Tilted\.Face1: the cylinder's axis .* is not the Z axis"):
+        faces_mod.analyse_face(tilted.Shape.Face1, "Tilted.Face1")
+    # in an op: the recompute fails with the message naming the face
+    job = PathJob.Create("Job", [box])
+    doc.recompute()
+    op = make_groove(job, (box, "Face1"))
+    assert not op.isValid()
+    assert op.getStatusString().startswith("Block.Face1: a plane whose normal")
+    assert job.isValid()
+
+
+def test_face_analysis_directions():
+    shape = shaft_shape()
+    by_key = {k: faces_mod.analyse_face(shape.getElement(face_name(shape, k)), k) for k in FACES}
+    assert (by_key["cylinder"].kind, by_key["cylinder"].external) == ("longitudinal", True)
+    assert (by_key["bore"].kind, by_key["bore"].external) == ("longitudinal", False)
+    assert (by_key["shoulder"].kind, by_key["shoulder"].external, by_key["shoulder"].r_min) == ("face", True, 14.0)
+    assert (by_key["left_end"].kind, by_key["left_end"].external, by_key["left_end"].r_min) == ("face", False, 0.0)
+    assert 0 < by_key["cone_up"].angc < 90 < by_key["cone_down"].angc < 180
+    # a steep cone (60 degrees off Z) takes face grooves; its Z normal decides external/internal
+    steep = Part.makeCone(20, 10, 10 * math.tan(math.radians(30)))  # radius 20 -> 10 over 5.77 in Z
+    cone = [f for f in steep.Faces if isinstance(f.Surface, Part.Cone)][0]
+    gf = faces_mod.analyse_face(cone, "Steep")
+    assert (gf.kind, gf.external) == ("face", True)
+    assert gf.angc == pytest.approx(180 - 60)
+    assert gf.describe() == "oblique face (ANGC 120°), external"
+
+
+def test_rapids_through_the_part_are_detected():
+    env = groove_op.SafeEnvelope([shaft_shape()], 1.0)
+    assert (env.r_safe, env.z_top, env.z_bottom) == (21.0, 61.0, -1.0)
+    assert env.hits((21.0, 20.0), (5.0, 20.0))  # radially into the R20 cylinder
+    assert not env.hits((21.0, 20.0), (21.0, 65.0))
+    assert not env.hits((5.0, 61.0), (5.0, 30.0))  # down the bore
+    assert env.hits((5.0, 61.0), (5.0, 20.0))  # through the bore's bottom
+
+
+# -- documents ----------------------------------------------------------------------
+
+
+def _values(op):
+    out = {}
+    for name in groove_op.PROPERTY_NAMES:
+        v = getattr(op, name)
+        out[name] = round(v.Value, 9) if hasattr(v, "Value") else v
+    return out
+
+
+def _commands(op):
+    return [(c.Name, {k: round(v, 6) for k, v in c.Parameters.items()}) for c in op.Path.Commands]
+
+
+def test_save_and_reopen(shop, tmp_path):
+    doc, shaft, job, tc = shop
+    op = groove(shop, "cone_up", flank_angle1=10, edge_corner2=0.5, edge_corner2_type="Radius", base_allowance=0.2,
+                flank_allowance=0.1, dwell=0.3, retract=0.5)
+    assert op.isValid(), op.getStatusString()
+    values, commands, name = _values(op), _commands(op), op.Name
+    path = str(tmp_path / "groove.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    doc2 = FreeCAD.openDocument(path)
+    try:
+        op2 = doc2.getObject(name)
+        assert op2 is not None
+        assert isinstance(op2.Proxy, groove_op.ObjectGroove)
+        assert _values(op2) == values
+        assert _commands(op2) == commands
+        assert op2.getEditorMode("AXFA") == ["ReadOnly"]
+        doc2.recompute()
+        assert op2.isValid(), op2.getStatusString()
+        assert _commands(op2) == commands
+    finally:
+        FreeCAD.closeDocument(doc2.Name)
+
+
+def test_missing_properties_come_back_with_defaults(shop, tmp_path):
+    doc, shaft, job, tc = shop
+    op = groove(shop, "cylinder", pitch=5)
+    name = op.Name
+    for prop in ("Pitch", "ChamferMeasure", "GrooveCount", "AXFA"):
+        op.removeProperty(prop)
+    assert not hasattr(op, "Pitch")
+    op.Proxy.onDocumentRestored(op)
+    assert op.Pitch.Value == 0.0
+    assert op.ChamferMeasure == "Chamfer length (CHF)"
+    assert op.GrooveCount == 1
+    assert op.getEditorMode("AXFA") == ["ReadOnly"]
+    doc.recompute()
+    assert op.isValid() and op.AXFA.Value == 20.0
+    # the same through a saved document that lacks the properties
+    op.removeProperty("Dwell")
+    op.removeProperty("ReferenceCorner")
+    path = str(tmp_path / "old.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    doc2 = FreeCAD.openDocument(path)
+    try:
+        op2 = doc2.getObject(name)
+        assert op2.Dwell == 0.0
+        assert op2.ReferenceCorner == "minus"
+        doc2.recompute()
+        assert op2.isValid(), op2.getStatusString()
+    finally:
+        FreeCAD.closeDocument(doc2.Name)
+
+
+def test_layer_rule_no_qt_no_gui():
+    """freecad_groove/freecad/* imports FreeCAD, Part and Path, never Qt or the GUI."""
+    here = os.path.dirname(groove_op.__file__)
+    checked = 0
+    for fname in sorted(os.listdir(here)):
+        if not fname.endswith(".py"):
+            continue
+        tree = ast.parse(open(os.path.join(here, fname), encoding="utf-8").read())
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                names = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom):
+                names = [node.module or ""]
+            else:
+                continue
+            for name in names:
+                parts = name.split(".")
+                assert not any(p in ("FreeCADGui", "PySide", "PySide2", "PySide6", "PyQt5", "PyQt6", "Gui") for p in parts), (fname, name)
+            checked += 1
+    assert checked
+
+
+# -- start points that avoid the part -----------------------------------------------
+
+
+def _revolved(doc, name, profile):
+    obj = doc.addObject("Part::Feature", name)
+    obj.Shape = Part.Face(Part.makePolygon([V(r, 0, z) for r, z in profile])).revolve(V(0, 0, 0), V(0, 0, 1), 360)
+    doc.recompute()
+    return obj
+
+
+def _find(obj, predicate):
+    for i, face in enumerate(obj.Shape.Faces):
+        try:
+            gf = faces_mod.analyse_face(face, "Face%d" % (i + 1))
+        except ValueError:
+            continue
+        if predicate(gf):
+            return "Face%d" % (i + 1)
+    raise AssertionError("no such face")
+
+
+def _rapids_outside(op, part):
+    """Every rapid of the approach and of the final retreat stays out of the part."""
+    env = groove_op.SafeEnvelope([part.Shape], 1.0)
+    for plan in op.Proxy.plan(op):
+        assert groove_op._rapids_clear(env, (plan.start.x, plan.start.z), plan.moves)
+
+
+def test_bore_open_toward_minus_z_is_entered_from_below(doc):
+    # blind bore R6 from the -Z end (z 0..35) in an R20 x 50 body
+    part = _revolved(doc, "Sleeve", [(6, 0), (20, 0), (20, 50), (0, 50), (0, 35), (6, 35), (6, 0)])
+    job = PathJob.Create("Job", [part])
+    doc.recompute()
+    op = make_groove(job, (part, _find(part, lambda f: f.surface == "cylinder" and not f.external)),
+                     position=5, width=4, depth=1, tool_width=3, tool_corner_radius=0.2)
+    assert op.isValid(), op.getStatusString()
+    assert (op.TYP, op.AXFA.Value, op.AXSA.Value) == (7, 6.0, 30.0)
+    plan, = op.Proxy.plan(op)
+    assert plan.start_on == "bottom"
+    assert plan.start.z == pytest.approx(-4.0)  # the 3 mm blade wholly 1 mm below the part
+    assert plan.start.x == pytest.approx(5.0)
+    _rapids_outside(op, part)
+    assert_same_moves(path_moves(op), expected_moves(op))
+
+
+def test_face_groove_inside_a_recess_is_approached_along_z(doc):
+    # R20 x 30 body with an annular recess R10..R15, 5 deep, in its +Z end:
+    # the recess floor (Z25, looking +Z) cannot be reached radially at Z26
+    part = _revolved(doc, "Ring", [(0, 0), (20, 0), (20, 30), (15, 30), (15, 25), (10, 25), (10, 30), (0, 30), (0, 0)])
+    job = PathJob.Create("Job", [part])
+    doc.recompute()
+    floor = _find(part, lambda f: f.surface == "plane" and abs(f.z_min - 25) < 1e-9)
+    op = make_groove(job, (part, floor), position=0.5, width=3.5, depth=2, tool_width=3, tool_corner_radius=0.2)
+    assert op.isValid(), op.getStatusString()
+    assert (op.TYP, op.AXFA.Value, op.AXSA.Value, op.GrooveKind) == (6, 14.5, 25.0, "face, external")
+    plan, = op.Proxy.plan(op)
+    assert plan.start_on == "top" and plan.start.z == pytest.approx(31.0)
+    _rapids_outside(op, part)
+    assert_same_moves(path_moves(op), expected_moves(op))
+    # the shoulder-like outer end face (R15..R20 at Z30) is reached radially
+    rim = _find(part, lambda f: f.surface == "plane" and abs(f.z_min - 30) < 1e-9 and f.r_min > 14)
+    op2 = make_groove(job, (part, rim), position=0.5, width=3.2, depth=1, tool_width=3, tool_corner_radius=0.2)
+    assert op2.isValid(), op2.getStatusString()
+    assert op2.Proxy.plan(op2)[0].start_on == "side"
+
+
+def test_steep_cone_takes_a_face_groove(doc):
+    # a 60 degree (off Z) cone R30 -> R10 over 11.547 in Z on top of an R30 cylinder
+    h = 20 * math.tan(math.radians(30))
+    part = _revolved(doc, "Cone", [(0, 0), (30, 0), (30, 10), (10, 10 + h), (0, 10 + h), (0, 0)])
+    job = PathJob.Create("Job", [part])
+    doc.recompute()
+    cone = _find(part, lambda f: f.surface == "cone")
+    op = make_groove(job, (part, cone), position=4, width=4, depth=2, tool_width=3, tool_corner_radius=0.2)
+    assert op.isValid(), op.getStatusString()
+    assert op.GrooveKind == "oblique face (ANGC 120°), external"
+    assert op.TYP == 6
+    assert op.ANGC.Value == pytest.approx(120.0)
+    assert op.AXFA.Value == pytest.approx(26.0)
+    assert op.AXSA.Value == pytest.approx(10 + 4 * math.tan(math.radians(30)))
+    _rapids_outside(op, part)
+    assert_same_moves(path_moves(op), expected_moves(op))
+
+
+def test_one_op_on_several_faces_links_along_the_envelope(shop):
+    doc, shaft, job, tc = shop
+    names = [face_name(shaft.Shape, k) for k in ("bore", "cylinder", "left_end")]
+    op = make_groove(job, (shaft, names), position=5, width=4, depth=1, tool_width=3, tool_corner_radius=0.2,
+                     comment="three faces")
+    assert op.isValid(), op.getStatusString()
+    assert op.GrooveKind == "longitudinal, internal; longitudinal, external; face, internal"
+    assert (op.TYP, op.AXFA.Value, op.AXSA.Value) == (7, 6.0, 55.0)  # the first face's first groove
+    plans = op.Proxy.plan(op)
+    assert [p.start_on for p in plans] == ["top", "side", "side"]
+    assert [c.Name for c in op.Path.Commands[:3]] == ["(%s)" % op.Label, "(three faces)", "G18"]
+    assert_same_moves(path_moves(op), expected_moves(op))
+    for plan in plans[1:]:
+        prev = None
+        for x, z in plan.link:  # one axis at a time, never inside R21 x Z-1..61
+            assert not (x < 21 - 1e-9 and -1 + 1e-9 < z < 61 - 1e-9), (x, z)
+            if prev is not None:
+                assert (x == prev[0]) != (z == prev[1])
+            prev = (x, z)
+    assert plans[1].link == [(21.0, 61.0), (21.0, plans[1].start.z)]
+
+
+@pytest.mark.parametrize("key", sorted(CASES))
+def test_plus_reference_corner(shop, key):
+    doc, shaft, job, tc = shop
+    op = groove(shop, key, reference_corner="plus", flank_angle2=5, base_corner1=0.3, base_corner1_type="Radius",
+                base_allowance=0.1, flank_allowance=0.1)
+    assert op.isValid(), op.getStatusString()
+    (_c, settings, _st), = op.Proxy.cycles(op)
+    assert settings.tool.reference == "plus"
+    assert_same_moves(path_moves(op), expected_moves(op))
+    _rapids_outside(op, shaft)
+
+
+def test_a_job_without_tool_controller_gets_one(shop):
+    doc, shaft, job, tc = shop
+    job.Tools.removeObject(tc)
+    doc.removeObject(tc.Name)
+    doc.recompute()
+    assert not job.Tools.Group
+    op = groove(shop, "cylinder")
+    assert len(job.Tools.Group) == 1
+    assert op.ToolController == job.Tools.Group[0]
+    assert op.ToolController.Label == "TC: Grooving tool"
+    assert op.isValid(), op.getStatusString()
+    assert_same_moves(path_moves(op), expected_moves(op))
+
+
+def test_make_groove_rejects_unknown_keywords(shop):
+    doc, shaft, job, tc = shop
+    with pytest.raises(TypeError, match="widht"):
+        make_groove(job, (shaft, "Face3"), widht=4)
