@@ -1,6 +1,29 @@
 # freecad-groove: runs when FreeCAD starts, with or without the GUI.
 #
 # FreeCAD puts this folder on sys.path, so `import freecad_groove` works in
-# scripts and in freecadcmd. The cycle engine (freecad_groove.engine) needs
-# nothing from FreeCAD; the Groove operation and the lathe posts register
-# themselves here once they exist (see README, "Status").
+# scripts and in freecadcmd. Here the lathe posts in postprocessors/ are added
+# to CAM's post list (freecad_groove/freecad/registration.py). That module is
+# loaded by its file name: importing it as freecad_groove.freecad.registration
+# would first import the whole FreeCAD layer (about a second). A failure only
+# prints a warning: it must never stop FreeCAD from starting.
+
+
+def _freecad_groove_register_posts():
+    import importlib.util
+    import os
+
+    import freecad_groove
+
+    path = os.path.join(os.path.dirname(freecad_groove.__file__), "freecad", "registration.py")
+    spec = importlib.util.spec_from_file_location("_freecad_groove_registration", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    module.register()
+
+
+try:
+    _freecad_groove_register_posts()
+except Exception as e:
+    import FreeCAD
+
+    FreeCAD.Console.PrintWarning("freecad-groove: the lathe posts are not in CAM's post list: %s\n" % e)

@@ -1,0 +1,30 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Siemens Sinumerik 840D lathe: grooves as native CYCLE93 calls.
+
+A FreeCAD CAM script post of freecad-groove: this file is the argument parser
+and a call into the shared post logic, freecad_groove/freecad/posts.py (which
+documents the output, the options and every choice). `--help` in the Job's
+post-processor arguments returns the options instead of a program.
+"""
+
+import os
+import sys
+
+try:
+    from freecad_groove.freecad import posts as _posts
+except ModuleNotFoundError as _e:  # this folder added to the post path without the add-on on sys.path
+    if not (_e.name or "").startswith("freecad_groove"):
+        raise
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    from freecad_groove.freecad import posts as _posts
+
+CONTROL = "sinumerik"
+UNITS = "G21"  # metric (FreeCAD's WrapperPost reads this)
+parser = _posts.make_parser(CONTROL)
+TOOLTIP = _posts.tooltip(CONTROL)
+TOOLTIP_ARGS = parser.format_help()
+
+
+def export(objectslist, filename, argstring):
+    """The program for ``objectslist``; ``filename`` "-" only returns it."""
+    return _posts.export(CONTROL, objectslist, filename, argstring)

@@ -1,0 +1,168 @@
+"""The lathe posts' programs, checked on the host by LinuxCNC's rs274 and the
+simulation oracle (neither exists inside the FreeCAD roots).
+
+tests/freecad/test_posts.py::test_write_artifacts (run inside FreeCAD 1.1
+and 1.0 by tests/test_freecad.py) writes one JSON per case into
+<artifacts>/<FreeCAD major.minor>/: a Groove op's programs from every post,
+the engine's moves from the op's first start point on, and per groove the
+finished region and a stock window (engine geometry, world (x radius, z)),
+the tool (with the reference corner the programs use), the plunge direction
+and the peck retract. Here, for every case and post:
+
+* linuxcnc_lathe: rs274 must accept the program; its canonical moves from
+  the moment the tool reaches the start point must be the engine's moves;
+* sinumerik/ab9/fanuc/haas: the engine's program translator reads the native
+  program (CYCLE93, G77/G76, G75/G74 or expanded moves) and writes it for
+  LinuxCNC, which rs274 must accept;
+* for every post, the canonical moves (rs274's own reading) from the start
+  point on are swept through the stock by the oracle: no gouge, the groove
+  complete within the blade's reach, no rapid into stock.
+
+The artifacts directory is $FG_ARTIFACTS (a host path) or out/post-artifacts/
+in the checkout. tests/test_freecad.py must hand the FreeCAD runs a place to
+write them and bring them back (see the notes at the end of this module). When
+there are none this test skips, except under CI=true, where it fails.
+"""
+
+import glob
+import json
+import os
+import re
+import subprocess
+import tempfile
+
+import pytest
+from shapely.geometry import Polygon
+from shapely.ops import unary_union
+
+from conftest import IN_CI, ROOT
+from freecad_groove.engine import GroovingTool, Settings
+from freecad_groove.engine import simulate as sim
+from freecad_groove.engine.moves import DWELL, FEED, RAPID, Move
+from freecad_groove.engine.program import translate_program
+from rs274 import RS274Error, canonical_matches, parse_canonical, require_rs274, written_moves
+
+ARTIFACTS = os.environ.get("FG_ARTIFACTS") or os.path.join(ROOT, "out", "post-artifacts")
+LABELS = ["1.1", "1.0"]
+POSTS = ["linuxcnc", "sinumerik", "ab9", "fanuc", "haas"]
+START_TOL = 1e-3  # how close a canonical move must end to the start point (3-decimal output)
+KINDS = {"G0": RAPID, "G1": FEED, "G4": DWELL}
+
+
+def cases(label):
+    """The artifacts of FreeCAD ``label``; skips (fails in CI) when there are none."""
+    files = sorted(glob.glob(os.path.join(ARTIFACTS, label, "*.json")))
+    if not files:
+        message = ("no post artifacts of FreeCAD %s in %s: run the FreeCAD suites (tests/test_freecad.py) "
+                   "with an artifacts directory first" % (label, ARTIFACTS))
+        if IN_CI:
+            pytest.fail(message + " (CI: missing artifacts are a failure)", pytrace=False)
+        pytest.skip(message)
+    out = []
+    for name in files:
+        with open(name) as f:
+            out.append(json.load(f))
+    return out
+
+
+def run_rs274(text, tools):
+    """tests/rs274.run_rs274 with a tool table holding ``tools`` (rs274 refuses
+    a T word for a tool it does not know; run_rs274's table is empty)."""
+    path = require_rs274()
+    with tempfile.TemporaryDirectory(prefix="rs274-") as tmp:
+        ngc = os.path.join(tmp, "program.ngc")
+        tbl = os.path.join(tmp, "tools.tbl")
+        with open(ngc, "w") as f:
+            f.write(text if text.endswith("\n") else text + "\n")
+        with open(tbl, "w") as f:
+            for t in sorted(tools):
+                f.write("T%d P%d Z0 ;\n" % (t, t))
+        proc = subprocess.run([path, "-t", tbl, "-g", ngc], cwd=tmp, env=dict(os.environ, HOME=tmp),
+                              stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=120)
+    errors = [line for line in proc.stderr.splitlines() if line.strip() and line.strip() != "executing"]
+    if errors:
+        raise RS274Error(errors[0].strip(), line=errors[1].strip() if len(errors) > 1 else None,
+                         output=proc.stdout + proc.stderr)
+    if proc.returncode != 0:
+        raise RS274Error("rs274 exited with status %d" % proc.returncode, output=proc.stdout + proc.stderr)
+    return parse_canonical(proc.stdout)
+
+
+def linuxcnc_text(case, post):
+    """The program as LinuxCNC text: the linuxcnc_lathe output as is, the
+    others through the engine's translator."""
+    program = case["programs"][post]
+    text = program["text"]
+    if post == "linuxcnc":
+        return text
+    tool = case["tool"]
+    settings = Settings(tool=GroovingTool(tool["width"], tool["corner_radius"], reference=tool["reference"]),
+                        peck_retract=case["retract"])
+    return translate_program(text, post, settings, source_name="%s %s" % (case["case"], post))
+
+
+def arrival(canon, start):
+    """Index of the first canonical move that ends at ``start``."""
+    for i, c in enumerate(canon):
+        if c[0] in ("G0", "G1") and abs(c[1] - start[0]) <= START_TOL and abs(c[2] - start[1]) <= START_TOL:
+            return i
+    raise AssertionError("the program never reaches the start point X%.4f Z%.4f (radius)" % tuple(start))
+
+
+def judge(case, canon, index, label):
+    """Sweep the canonical moves after ``index`` through the stock: the oracle's verdict."""
+    tool = case["tool"]
+    blade = GroovingTool(tool["width"], tool["corner_radius"], reference=tool["reference"])
+    moves = []
+    for kind, x, z, _feed, dwell in canon[index + 1:]:
+        assert kind != "ARC", "%s: an arc in a groove program" % label
+        moves.append(Move(KINDS[kind], x, z, None, dwell if kind == "G4" else 0.0))
+    stock = unary_union([Polygon([(z, x) for x, z in g["stock"]]) for g in case["grooves"]])
+    target = unary_union([Polygon([(z, x) for x, z in g["region"]]).buffer(0) for g in case["grooves"]])
+    start = tuple(canon[index][1:3])
+    result = sim.simulate(moves, blade, case["plunge"], start, stock)
+    verdict = sim.check_groove(result, target, blade, tol=0.001, plunge=case["plunge"], label=label)
+    sim.assert_clean(verdict, allow_infeasible=True)
+    return verdict
+
+
+@pytest.mark.parametrize("post", POSTS)
+@pytest.mark.parametrize("label", LABELS)
+def test_posted_grooves_run_in_rs274_and_cut_cleanly(label, post):
+    require_rs274()
+    checked = 0
+    for case in cases(label):
+        name = "FreeCAD %s %s %s_lathe %s" % (case["freecad"], case["case"], post, case["programs"][post]["args"])
+        program = case["programs"][post]
+        if program["text"] is None:
+            # the one refusal the FreeCAD tests expect: a dwell on the Allen-Bradley 9/Series
+            assert post == "ab9" and "Dwell" in program["error"], "%s: %s" % (name, program["error"])
+            continue
+        text = linuxcnc_text(case, post)
+        tools = {int(t) for t in re.findall(r"^T(\d+) M6", text, re.M)}
+        try:
+            canon = run_rs274(text, tools)
+        except RS274Error as e:
+            raise AssertionError("%s: rs274 refused the program: %s\n%s" % (name, e, text)) from None
+        index = arrival(canon, case["start"])
+        if post == "linuxcnc":
+            expected = [Move(k, x, z, f, p) for k, x, z, f, p in case["expected"]]
+            problems = canonical_matches(written_moves(expected), canon, start=index)
+            assert not problems, "%s:\n%s" % (name, "\n".join(problems[:8]))
+        judge(case, canon, index, name)
+        checked += 1
+    assert checked, "no %s program of FreeCAD %s was checked" % (post, label)
+
+
+def test_every_case_has_native_calls_where_the_control_has_them():
+    """The cases cover native CYCLE93, G77/G76 and G75/G74 calls, not only expanded moves."""
+    seen = {post: set() for post in POSTS}
+    for label in LABELS:
+        for case in cases(label):
+            for post in POSTS:
+                text = case["programs"][post]["text"] or ""
+                seen[post] |= set(re.findall(r"^(CYCLE93|G7[4-7])\b", text, re.M))
+    assert seen["sinumerik"] == {"CYCLE93"}
+    assert seen["ab9"] == {"G77", "G76"}
+    assert seen["fanuc"] == {"G75", "G74"} and seen["haas"] == {"G75", "G74"}
+    assert seen["linuxcnc"] == set()
