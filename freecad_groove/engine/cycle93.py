@@ -536,10 +536,10 @@ class GrooveGeometry:
 
         # Steps 1 and 2: plunges in equal infeeds with chip-breaking retracts.
         rough = self.rough_env
-        deepest = min(rough.lowest(u) for u in positions)
+        bottoms = [rough.lowest(u) for u in positions]
+        deepest = min(bottoms)
         full_depth = []
-        for u in positions:
-            bottom = rough.lowest(u)
+        for u, bottom in zip(positions, bottoms):
             top = self.contour_top(u)
             clear = top + vrt
             if bottom >= top - EPS:
