@@ -2,6 +2,7 @@
 as an independent reader of the programs we write.
 
     canon = run_rs274(text)          # [(kind, x, z, feed, dwell), ...]
+    canon = run_rs274(text, tool_table=[3])   # a program with T3 M6
     problems = canonical_matches(expansion.moves, canon, start=1)
     assert not problems, "\\n".join(problems)
 
@@ -119,17 +120,33 @@ def parse_canonical(output):
     return moves
 
 
-def run_rs274(program_text, timeout=60):
-    """Interpret ``program_text`` with rs274 and return its canonical moves."""
+def tool_table_text(tools):
+    """A LinuxCNC tool table with one line per tool number (pocket = number, no offsets)."""
+    return "".join("T%d P%d Z0 ;\n" % (t, t) for t in sorted({int(t) for t in tools}))
+
+
+def run_rs274(program_text, timeout=60, tool_table=None):
+    """Interpret ``program_text`` with rs274 and return its canonical moves.
+
+    ``tool_table``: None (default) runs with an empty tool table, in which rs274
+    refuses every T word; an iterable of tool numbers gives a table holding
+    them (see tool_table_text); a str is the table's text as is."""
     path = rs274_path()
     if path is None:
         raise RS274Error("rs274 is not installed (Debian package linuxcnc-uspace)")
+    if tool_table is None:
+        table = ""
+    elif isinstance(tool_table, str):
+        table = tool_table
+    else:
+        table = tool_table_text(tool_table)
     with tempfile.TemporaryDirectory(prefix="rs274-") as tmp:
         ngc = os.path.join(tmp, "program.ngc")
-        tbl = os.path.join(tmp, "empty.tbl")
+        tbl = os.path.join(tmp, "tools.tbl")
         with open(ngc, "w") as f:
             f.write(program_text if program_text.endswith("\n") else program_text + "\n")
-        open(tbl, "w").close()
+        with open(tbl, "w") as f:
+            f.write(table)
         # rs274 keeps its tool table in $HOME/.tool.mmap, created with
         # O_TRUNC and mapped shared: two runs with the same HOME (parallel
         # tests, another shell) truncate each other's map and die of SIGBUS.

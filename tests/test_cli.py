@@ -312,8 +312,9 @@ def test_emit_expand_is_a_whole_program_accepted_by_rs274():
 
 
 def test_demo_script(tmp_path):
+    # The command-line part only: the FreeCAD part is tests/test_demo.py's.
     proc = subprocess.run(["bash", os.path.join(ROOT, "scripts", "demo"), str(tmp_path)], capture_output=True,
-                          timeout=300, env=dict(os.environ, PYTHON=sys.executable))
+                          timeout=300, env=dict(os.environ, PYTHON=sys.executable, FREECAD_GROOVE_DEMO_FREECAD="0"))
     assert proc.returncode == 0, proc.stderr
     names = sorted(os.listdir(tmp_path))
     assert len(names) == 8 and "seed_cycle93.ngc" in names and "haas_g75.fanuc.nc" in names

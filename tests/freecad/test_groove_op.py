@@ -3,8 +3,9 @@
 A stepped shaft turned about Z (a revolved profile) carries a face of every
 kind: a cylinder, a cone growing toward +Z, a cone shrinking toward +Z, a
 shoulder face looking +Z, the left end face looking -Z and a blind bore open
-toward +Z. A Job and tool controller are built by script and a Groove op put
-on each face.
+toward +Z. A Job and tool controller are built by script (parts.py, shared
+with test_posts.py and benchmarks/bench_freecad.py) and a Groove op put on
+each face.
 """
 
 import ast
@@ -20,29 +21,11 @@ from freecad_groove import make_groove
 from freecad_groove.engine.moves import DWELL, FEED, RAPID
 from freecad_groove.freecad import faces as faces_mod
 from freecad_groove.freecad import groove_op
+from parts import FACES, FEED_MM_MIN, face_name, make_shop, shaft_shape
 
 V = FreeCAD.Vector
 
-# (radius, z) of the shaft's half section, revolved about Z.
-PROFILE = [(0, 0), (16, 0), (20, 10), (20, 30), (14, 30), (14, 50), (10, 60), (6, 60), (6, 25), (0, 25), (0, 0)]
 CONE_ANGLE = math.degrees(math.atan2(4, 10))  # both cones change radius by 4 over 10 in Z
-FEED_MM_MIN = 120.0
-
-
-def shaft_shape():
-    wire = Part.makePolygon([V(r, 0, z) for r, z in PROFILE])
-    return Part.Face(wire).revolve(V(0, 0, 0), V(0, 0, 1), 360)
-
-
-# name -> predicate on the analysed face
-FACES = {
-    "cylinder": lambda f: f.surface == "cylinder" and f.external and abs(f.r_max - 20) < 1e-9,
-    "cone_up": lambda f: f.surface == "cone" and abs(f.z_min) < 1e-9,
-    "cone_down": lambda f: f.surface == "cone" and abs(f.z_max - 60) < 1e-9,
-    "shoulder": lambda f: f.surface == "plane" and abs(f.z_min - 30) < 1e-9,
-    "left_end": lambda f: f.surface == "plane" and abs(f.z_min) < 1e-9,
-    "bore": lambda f: f.surface == "cylinder" and not f.external,
-}
 
 # name -> (make_groove keywords, GrooveKind, AXFA, AXSA, ANGC, TYP)
 CASES = {
@@ -53,19 +36,6 @@ CASES = {
     "left_end": (dict(position=2), "face, internal", 14.0, 0.0, 90.0, 8),
     "bore": (dict(position=10, depth=1.5), "longitudinal, internal", 6.0, 50.0, 0.0, 7),
 }
-
-
-def face_name(shape, key):
-    hits = []
-    for i, face in enumerate(shape.Faces):
-        try:
-            gf = faces_mod.analyse_face(face, "Face%d" % (i + 1))
-        except ValueError:
-            continue
-        if FACES[key](gf):
-            hits.append("Face%d" % (i + 1))
-    assert len(hits) == 1, (key, hits)
-    return hits[0]
 
 
 @pytest.fixture
@@ -81,15 +51,7 @@ def doc():
 @pytest.fixture
 def shop(doc):
     """(doc, shaft, job, tc): the shaft in a Job with one tool controller."""
-    shaft = doc.addObject("Part::Feature", "Shaft")
-    shaft.Shape = shaft_shape()
-    doc.recompute()
-    job = PathJob.Create("Job", [shaft])
-    tc = job.Tools.Group[0]
-    tc.HorizFeed = "%g mm/min" % FEED_MM_MIN
-    tc.VertFeed = "%g mm/min" % FEED_MM_MIN
-    doc.recompute()
-    return doc, shaft, job, tc
+    return make_shop(doc)
 
 
 def groove(shop, key, **extra):
@@ -556,3 +518,17 @@ def test_make_groove_rejects_unknown_keywords(shop):
     doc, shaft, job, tc = shop
     with pytest.raises(TypeError, match="widht"):
         make_groove(job, (shaft, "Face3"), widht=4)
+
+
+def test_posts_reuse_the_plan_only_while_the_op_is_up_to_date(shop):
+    op = groove(shop, "cylinder")
+    doc = shop[0]
+    cached = op.Proxy.current_plan(op)
+    assert cached is op.Proxy.current_plan(op)  # no replanning after a recompute
+    op.Width = 5.0  # touched, not recomputed: a post must not write the old groove
+    fresh = op.Proxy.current_plan(op)
+    assert fresh is not cached
+    assert fresh[0].cycle.widg == 5.0 and cached[0].cycle.widg == 4.0
+    doc.recompute()
+    assert op.Proxy.current_plan(op) is op.Proxy.current_plan(op)
+    assert op.Proxy.current_plan(op)[0].cycle.widg == 5.0

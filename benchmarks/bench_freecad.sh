@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Run benchmarks/bench_freecad.py inside FreeCAD (headless) and print its figures.
+#
+#   benchmarks/bench_freecad.sh          FreeCAD 1.1
+#   benchmarks/bench_freecad.sh 1.0      another label of `scripts/freecad-roots list`
+#
+# FreeCAD comes from scripts/freecad-roots (`scripts/freecad-roots ensure`
+# builds it the first time; running it needs root or password-less sudo unless
+# the host has that FreeCAD). FreeCAD's own output goes to a log that is shown
+# only when the benchmark fails. FREECAD_GROOVE_BENCH_GROOVES=N posts N
+# grooves instead of 500.
+
+set -euo pipefail
+
+cd "$(dirname "$(readlink -f "$0")")/.."
+
+LABEL="${1:-1.1}"
+SHARE="$(mktemp -d "${TMPDIR:-/tmp}/freecad-groove-bench.XXXXXX")"
+trap 'rm -rf "$SHARE"' EXIT
+chmod 755 "$SHARE"
+# Short: FreeCAD 1.1 crashes on a -c text of 256 characters or more.
+CODE="import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT'] + '/benchmarks/bench_freecad.py').read())"
+set +e
+scripts/freecad-roots run "$LABEL" --share "$SHARE" -- \
+    sh -c 'exec freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$1"' sh "$CODE" >"$SHARE/freecad.log" 2>&1
+rc=$?
+set -e
+if [ -f "$SHARE/bench_freecad.txt" ]; then
+    cat "$SHARE/bench_freecad.txt"
+fi
+if [ "$rc" -ne 0 ]; then
+    echo "bench_freecad: FreeCAD $LABEL exited with status $rc; the end of its output:" >&2
+    tr '\r' '\n' <"$SHARE/freecad.log" | grep -v '^[[:space:]]*$' | tail -n 30 >&2
+    exit "$rc"
+fi
