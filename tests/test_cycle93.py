@@ -299,7 +299,6 @@ def test_plain_groove_is_plunged_only_with_no_contour_pass():
     moves = call().expand(MachineState(x=25.0, z=0.0), TOOL)
     feeds = [m for m in moves if m.kind == FEED]
     # every feed is a straight plunge (no Z motion while feeding)
-    zs_at = {}
     prev = None
     for m in moves:
         if m.kind == FEED:

@@ -382,6 +382,7 @@ class ObjectGroove(PathOp.ObjectOp):
         return True
 
     def opExecute(self, obj):
+        self._plans = None
         faces = None
         try:
             faces = self.groove_faces(obj)
@@ -393,6 +394,16 @@ class ObjectGroove(PathOp.ObjectOp):
             obj.Path = Path.Path([Path.Command(_comment("%s: %s" % (obj.Label, e)))])
             raise
         self.commandlist.extend(self.commands(obj, plans))
+        self._plans = plans  # the posts reuse it while the op stays up to date
+
+    def current_plan(self, obj):
+        """plan(obj) as the last recompute made it, while nothing has touched
+        the op since (planning checks every link rapid against the model, the
+        costly part of posting); otherwise a fresh plan."""
+        plans = getattr(self, "_plans", None)
+        if plans is not None and not ({"Touched", "Invalid"} & set(obj.State)):
+            return plans
+        return self.plan(obj)
 
     # -- properties -------------------------------------------------------------
     def _add_missing_properties(self, obj):
@@ -520,7 +531,7 @@ class ObjectGroove(PathOp.ObjectOp):
         what a post needs to write the native calls (the start point is where
         the tool must stand before each call; GroovePlan.link says how the op
         got there)."""
-        return [(p.cycle, p.settings, p.start) for p in self.plan(obj)]
+        return [(p.cycle, p.settings, p.start) for p in self.current_plan(obj)]
 
     def commands(self, obj, plans):
         """Path commands for ``plans``: G18, then per groove a comment, the

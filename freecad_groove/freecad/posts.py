@@ -21,7 +21,7 @@ in order:
 * an op (inactive ops are skipped): its label as a comment, the coolant of its
   CoolantMode (M8 flood, M7 mist; M9 after the op), then
   - a Groove op (or a dressup whose ``Base`` chain reaches one): every groove
-    of ``op.Proxy.plan(op)``: the op's link rapids, then the groove as a
+    of ``op.Proxy.current_plan(op)``: the op's link rapids, then the groove as a
     native cycle call (after a rapid to the cycle's start point, since a
     native cycle starts where the tool stands) or as the engine's expanded
     moves (``--expand-cycles``, the controls without a cycle, grooves the
@@ -821,7 +821,7 @@ class GrooveOutput:
     def write(self):
         p = self.p
         try:
-            plans = self.op.Proxy.plan(self.op)
+            plans = self.op.Proxy.current_plan(self.op)
         except CycleError:
             raise
         except ValueError as exc:
