@@ -1,0 +1,75 @@
+"""Generate resources/tools/grooving.fcstd, the grooving blade tool bit shape.
+
+Run inside FreeCAD 1.0 (the oldest supported version, so 1.0 and 1.1 both
+open the file), from the checkout:
+
+    scripts/freecad-roots run 1.0 --share /tmp/share -- sh -c \
+      'exec freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$1"' sh \
+      "import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT'] + '/resources/tools/make_grooving_shape.py').read())"
+
+and copy /tmp/share/grooving.fcstd to resources/tools/ (the checkout is
+read-only inside the root). It writes grooving.fcstd to FREECAD_GROOVE_SHAPE_OUT,
+else into the share directory, else next to this script (e.g. when exec'd
+from a FreeCAD Python console).
+
+The layout is what both tool bit systems read from a shape file:
+- a PartDesign::Body, the first root object, labelled "Grooving" (FreeCAD
+  1.1 picks the ToolBitShape class by this label; freecad_groove registers
+  a "Grooving" class),
+- inside it a PropertyBag (Path.Base.PropertyBag) labelled "Attributes"
+  whose custom properties (group "Shape") are the bit's parameters: Width,
+  CornerRadius, CuttingEdgeHeight, Length, Diameter (FreeCAD's ops need a
+  non-zero Diameter; the tool bit drives it from Width),
+- the blade's solid, an AdditiveBox whose size follows the parameters by
+  expressions: Width across the cut (X), CuttingEdgeHeight (the reach of
+  the blade, Y) and Length along the tool axis (Z). The corner radius is a
+  parameter only: it is not drawn.
+"""
+
+
+def _make_grooving_shape():
+    import os
+
+    import FreeCAD
+    import Path.Base.PropertyBag as PathPropertyBag
+
+    here = os.path.join(os.environ.get("FREECAD_GROOVE_CHECKOUT", os.getcwd()), "resources", "tools")
+    share = os.environ.get("FREECAD_GROOVE_SHARE")  # set by scripts/freecad-roots run --share
+    out = os.environ.get("FREECAD_GROOVE_SHAPE_OUT") or os.path.join(share or here, "grooving.fcstd")
+
+    doc = FreeCAD.newDocument("grooving")
+    FreeCAD.setActiveDocument(doc.Name)
+    body = doc.addObject("PartDesign::Body", "Body")
+    body.Label = "Grooving"
+
+    bag = PathPropertyBag.Create("PropertyBag")
+    bag.Label = "Attributes"
+    params = [
+        ("Width", 3.0, "Width of the blade's cutting edge (across the cut)"),
+        ("CornerRadius", 0.2, "Radius of the blade's two front corners"),
+        ("CuttingEdgeHeight", 12.0, "How deep the blade can plunge (its free reach)"),
+        ("Length", 25.0, "Overall length of the blade"),
+        ("Diameter", 3.0, "Equal to Width: FreeCAD's operations need a tool diameter"),
+    ]
+    for name, value, doc_text in params:
+        bag.Proxy.addCustomProperty("App::PropertyLength", name, "Shape", doc_text)
+        setattr(bag, name, value)
+    body.Group = body.Group + [bag]  # addObject refuses non-PartDesign objects
+
+    box = doc.addObject("PartDesign::AdditiveBox", "Blade")
+    body.addObject(box)
+    box.setExpression("Length", "Attributes.Width")
+    box.setExpression("Width", "Attributes.CuttingEdgeHeight")
+    box.setExpression("Height", "Attributes.Length")
+    # centred across the cut, the cutting edge at Z = 0, the blade reaching -Y
+    box.setExpression(".AttachmentOffset.Base.x", "-Attributes.Width / 2")
+    box.setExpression(".AttachmentOffset.Base.y", "-Attributes.CuttingEdgeHeight")
+    doc.recompute()
+    if box.Shape.isNull() or not body.Shape.Solids:
+        raise RuntimeError("the grooving blade body has no solid")
+    doc.saveAs(out)
+    FreeCAD.closeDocument(doc.Name)
+    return out
+
+
+_make_grooving_shape()
