@@ -28,8 +28,6 @@ import glob
 import json
 import os
 import re
-import subprocess
-import tempfile
 
 import pytest
 from shapely.geometry import Polygon
@@ -40,7 +38,8 @@ from freecad_groove.engine import GroovingTool, Settings
 from freecad_groove.engine import simulate as sim
 from freecad_groove.engine.moves import DWELL, FEED, RAPID, Move
 from freecad_groove.engine.program import translate_program
-from rs274 import RS274Error, canonical_matches, parse_canonical, require_rs274, written_moves
+import rs274
+from rs274 import RS274Error, canonical_matches, require_rs274, written_moves
 
 ARTIFACTS = os.environ.get("FG_ARTIFACTS") or os.path.join(ROOT, "out", "post-artifacts")
 LABELS = ["1.1", "1.0"]
@@ -66,26 +65,10 @@ def cases(label):
 
 
 def run_rs274(text, tools):
-    """tests/rs274.run_rs274 with a tool table holding ``tools`` (rs274 refuses
-    a T word for a tool it does not know; run_rs274's table is empty)."""
-    path = require_rs274()
-    with tempfile.TemporaryDirectory(prefix="rs274-") as tmp:
-        ngc = os.path.join(tmp, "program.ngc")
-        tbl = os.path.join(tmp, "tools.tbl")
-        with open(ngc, "w") as f:
-            f.write(text if text.endswith("\n") else text + "\n")
-        with open(tbl, "w") as f:
-            for t in sorted(tools):
-                f.write("T%d P%d Z0 ;\n" % (t, t))
-        proc = subprocess.run([path, "-t", tbl, "-g", ngc], cwd=tmp, env=dict(os.environ, HOME=tmp),
-                              stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=120)
-    errors = [line for line in proc.stderr.splitlines() if line.strip() and line.strip() != "executing"]
-    if errors:
-        raise RS274Error(errors[0].strip(), line=errors[1].strip() if len(errors) > 1 else None,
-                         output=proc.stdout + proc.stderr)
-    if proc.returncode != 0:
-        raise RS274Error("rs274 exited with status %d" % proc.returncode, output=proc.stdout + proc.stderr)
-    return parse_canonical(proc.stdout)
+    """rs274.run_rs274 with a tool table holding ``tools`` (rs274 refuses a T
+    word for a tool it does not know)."""
+    require_rs274()
+    return rs274.run_rs274(text, timeout=120, tool_table=tools)
 
 
 def linuxcnc_text(case, post):

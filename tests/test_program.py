@@ -4,8 +4,6 @@ translation of carried blocks, cycle expansion in place, errors with line
 numbers, and LinuxCNC's rs274 accepting every translated example."""
 
 import os
-import subprocess
-import tempfile
 
 import pytest
 from hypothesis import given
@@ -593,26 +591,11 @@ TOOL_TABLE = "".join("T%d P%d X0 Z0 D0.4 ;\n" % (n, n) for n in range(1, 13))
 
 
 def run_rs274_with_tools(text):
-    """rs274 with a tool table holding tools 1..12 (tests/rs274.run_rs274 uses an empty one)."""
-    from rs274 import RS274Error, parse_canonical, require_rs274
+    """rs274 with a tool table holding tools 1..12 (the translations change tools)."""
+    from rs274 import require_rs274, run_rs274
 
-    path = require_rs274()
-    with tempfile.TemporaryDirectory() as tmp:
-        ngc = os.path.join(tmp, "p.ngc")
-        tbl = os.path.join(tmp, "tools.tbl")
-        with open(ngc, "w") as f:
-            f.write(text)
-        with open(tbl, "w") as f:
-            f.write(TOOL_TABLE)
-        # rs274 keeps the tool table in $HOME/.tool.mmap, shared by every rs274 running at the same
-        # time: a private HOME keeps a parallel run (with another table) from swapping ours.
-        env = dict(os.environ, HOME=tmp)
-        proc = subprocess.run([path, "-t", tbl, "-g", ngc], cwd=tmp, capture_output=True, text=True, timeout=60,
-                              stdin=subprocess.DEVNULL, env=env)
-    errors = [line for line in proc.stderr.splitlines() if line.strip() and line.strip() != "executing"]
-    if errors or proc.returncode:
-        raise RS274Error(" / ".join(errors) or "exit %d" % proc.returncode, output=proc.stdout)
-    return parse_canonical(proc.stdout)
+    require_rs274()
+    return run_rs274(text, tool_table=TOOL_TABLE)
 
 
 @pytest.mark.parametrize("name", sorted(EXAMPLES))
