@@ -8,9 +8,7 @@ with test_posts.py and benchmarks/bench_freecad.py) and a Groove op put on
 each face.
 """
 
-import ast
 import math
-import os
 
 import FreeCAD
 import Part
@@ -358,31 +356,6 @@ def test_missing_properties_come_back_with_defaults(shop, tmp_path):
         assert op2.isValid(), op2.getStatusString()
     finally:
         FreeCAD.closeDocument(doc2.Name)
-
-
-def test_layer_rule_no_qt_no_gui():
-    """freecad_groove/freecad/* imports FreeCAD, Part and Path, never Qt or the GUI."""
-    here = os.path.dirname(groove_op.__file__)
-    checked = 0
-    for fname in sorted(os.listdir(here)):
-        if not fname.endswith(".py"):
-            continue
-        tree = ast.parse(open(os.path.join(here, fname), encoding="utf-8").read())
-        for node in ast.walk(tree):
-            if isinstance(node, ast.Import):
-                names = [a.name for a in node.names]
-            elif isinstance(node, ast.ImportFrom):
-                names = [node.module or ""]
-            else:
-                continue
-            for name in names:
-                parts = name.split(".")
-                assert not any(p in ("FreeCADGui", "PySide", "PySide2", "PySide6", "PyQt5", "PyQt6", "Gui") for p in parts), (fname, name)
-            checked += 1
-    assert checked
-
-
-# -- start points that avoid the part -----------------------------------------------
 
 
 def _revolved(doc, name, profile):

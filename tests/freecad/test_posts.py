@@ -233,25 +233,6 @@ def test_every_post_is_a_freecad_script_post(name):
     text = export(name, [])
     assert text.endswith(("M30\n", "M2\n", "%\n"))
 
-
-def test_post_modules_import_neither_qt_nor_the_gui():
-    import ast
-
-    files = [os.path.join(ROOT, "postprocessors", n + "_lathe_post.py") for n in NAMES]
-    files += [posts.__file__, registration.__file__]
-    for fname in files:
-        tree = ast.parse(open(fname, encoding="utf-8").read())
-        for node in ast.walk(tree):
-            if isinstance(node, ast.Import):
-                names = [a.name for a in node.names]
-            elif isinstance(node, ast.ImportFrom):
-                names = [node.module or ""]
-            else:
-                continue
-            for n in names:
-                assert not set(n.split(".")) & {"FreeCADGui", "PySide", "PySide2", "PySide6", "Gui"}, (fname, n)
-
-
 # ----------------------------------------------------------------------------- headers, tools, spindle, coolant
 
 

@@ -10,22 +10,12 @@ import pytest
 
 from freecad_groove import make_groove
 from freecad_groove.freecad import toolbit
-from parts import face_name, make_shop
+from parts import face_name
+import test_groove_op as tg
 
 
-@pytest.fixture
-def doc():
-    d = FreeCAD.newDocument("ToolBitTest")
-    name = d.Name
-    FreeCAD.setActiveDocument(name)
-    yield d
-    if name in FreeCAD.listDocuments():
-        FreeCAD.closeDocument(name)
-
-
-@pytest.fixture
-def shop(doc):
-    return make_shop(doc)
+# The Groove op tests' document and shop fixtures.
+doc, shop = tg.doc, tg.shop
 
 
 def _groove(shop, tc, **extra):
