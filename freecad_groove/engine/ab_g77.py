@@ -453,9 +453,19 @@ class PeckingCycle:
 # ---------------------------------------------------------------- Allen-Bradley
 
 
+@dataclass(frozen=True)
 class _AllenBradley(PeckingCycle):
+    """The words of G77 and G76, in the order emit() writes them."""
+
     WORDS = ("X", "Z", "I", "K", "F", "D")
     SHIFT_D = True
+
+    X: Optional[float] = None
+    Z: Optional[float] = None
+    I: Optional[float] = None  # noqa: E741 - the control's word
+    K: Optional[float] = None
+    F: Optional[float] = None
+    D: Optional[float] = None
 
     def _returns_to_start(self):
         return RETURN_TO_START_Z
@@ -485,13 +495,6 @@ class G77(_AllenBradley):
     PITCH: ClassVar[str] = "K"
     RELIEF: ClassVar[str] = "D"
 
-    X: Optional[float] = None
-    Z: Optional[float] = None
-    I: Optional[float] = None  # noqa: E741 - the control's word
-    K: Optional[float] = None
-    F: Optional[float] = None
-    D: Optional[float] = None
-
 
 @dataclass(frozen=True)
 class G76(_AllenBradley):
@@ -510,10 +513,3 @@ class G76(_AllenBradley):
     PECK: ClassVar[str] = "K"
     PITCH: ClassVar[str] = "I"
     RELIEF: ClassVar[str] = "D"
-
-    X: Optional[float] = None
-    Z: Optional[float] = None
-    I: Optional[float] = None  # noqa: E741 - the control's word
-    K: Optional[float] = None
-    F: Optional[float] = None
-    D: Optional[float] = None

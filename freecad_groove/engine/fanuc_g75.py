@@ -56,10 +56,23 @@ from .settings import DEFAULT_SETTINGS
 __all__ = ["FanucG75", "FanucG74", "HaasG75", "HaasG74"]
 
 
+@dataclass(frozen=True)
 class _Fanuc(PeckingCycle):
+    """The words of Fanuc G75 and G74 (e: R of the first block)."""
+
     WORDS = ("X", "U", "Z", "W", "P", "Q", "R", "F")
     COUNTED = ("P", "Q")
     RELIEF = "R"
+
+    e: Optional[float] = None
+    X: Optional[float] = None
+    U: Optional[float] = None
+    Z: Optional[float] = None
+    W: Optional[float] = None
+    P: Optional[int] = None
+    Q: Optional[int] = None
+    R: Optional[float] = None
+    F: Optional[float] = None
 
     def _retract(self, settings, metric):
         if self.e is not None:
@@ -116,16 +129,6 @@ class FanucG75(_Fanuc):
     PECK: ClassVar[str] = "P"
     PITCH: ClassVar[str] = "Q"
 
-    e: Optional[float] = None
-    X: Optional[float] = None
-    U: Optional[float] = None
-    Z: Optional[float] = None
-    W: Optional[float] = None
-    P: Optional[int] = None
-    Q: Optional[int] = None
-    R: Optional[float] = None
-    F: Optional[float] = None
-
 
 @dataclass(frozen=True)
 class FanucG74(_Fanuc):
@@ -143,20 +146,22 @@ class FanucG74(_Fanuc):
     PECK: ClassVar[str] = "Q"
     PITCH: ClassVar[str] = "P"
 
-    e: Optional[float] = None
+
+@dataclass(frozen=True)
+class _Haas(PeckingCycle):
+    """The words of Haas G75 and G74."""
+
+    WORDS = ("X", "U", "Z", "W", "I", "K", "D", "F")
+    RELIEF = "D"
+
     X: Optional[float] = None
     U: Optional[float] = None
     Z: Optional[float] = None
     W: Optional[float] = None
-    P: Optional[int] = None
-    Q: Optional[int] = None
-    R: Optional[float] = None
+    I: Optional[float] = None  # noqa: E741 - the control's word
+    K: Optional[float] = None
+    D: Optional[float] = None
     F: Optional[float] = None
-
-
-class _Haas(PeckingCycle):
-    WORDS = ("X", "U", "Z", "W", "I", "K", "D", "F")
-    RELIEF = "D"
 
 
 @dataclass(frozen=True)
@@ -174,15 +179,6 @@ class HaasG75(_Haas):
     PECK: ClassVar[str] = "I"
     PITCH: ClassVar[str] = "K"
 
-    X: Optional[float] = None
-    U: Optional[float] = None
-    Z: Optional[float] = None
-    W: Optional[float] = None
-    I: Optional[float] = None  # noqa: E741 - the control's word
-    K: Optional[float] = None
-    D: Optional[float] = None
-    F: Optional[float] = None
-
 
 @dataclass(frozen=True)
 class HaasG74(_Haas):
@@ -198,12 +194,3 @@ class HaasG74(_Haas):
     LAST: ClassVar[tuple] = ("X", "U")
     PECK: ClassVar[str] = "K"
     PITCH: ClassVar[str] = "I"
-
-    X: Optional[float] = None
-    U: Optional[float] = None
-    Z: Optional[float] = None
-    W: Optional[float] = None
-    I: Optional[float] = None  # noqa: E741 - the control's word
-    K: Optional[float] = None
-    D: Optional[float] = None
-    F: Optional[float] = None
