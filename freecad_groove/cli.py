@@ -19,10 +19,10 @@ import math
 import os
 import re
 import sys
-import tempfile
 from dataclasses import replace
 
 from . import __version__
+from .engine.output import write_atomically
 
 EXIT_ERROR = 2
 
@@ -493,32 +493,10 @@ def _write_output(text, out):
         sys.stdout.write(text)
         sys.stdout.flush()
         return
-    directory = os.path.dirname(os.path.abspath(out))
     try:
-        fd, tmp = tempfile.mkstemp(prefix="." + os.path.basename(out) + ".", suffix=".tmp", dir=directory)
+        write_atomically(out, text, encoding="ascii", errors="replace")
     except OSError as exc:
         raise _Failure(out, 0, "cannot write the output: %s" % (exc.strerror or exc)) from None
-    try:
-        try:
-            mode = os.stat(out).st_mode & 0o7777
-        except OSError:
-            umask = os.umask(0)
-            os.umask(umask)
-            mode = 0o666 & ~umask
-        with os.fdopen(fd, "w", encoding="ascii", errors="replace", newline="\n") as f:
-            f.write(text)
-            f.flush()
-            os.fsync(f.fileno())
-        os.chmod(tmp, mode)
-        os.replace(tmp, out)
-    except BaseException as exc:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        if isinstance(exc, OSError):
-            raise _Failure(out, 0, "cannot write the output: %s" % (exc.strerror or exc)) from None
-        raise
 
 
 # ---------------------------------------------------------------- parser and main

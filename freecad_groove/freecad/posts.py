@@ -86,10 +86,8 @@ existing one untouched.
 
 import argparse
 import math
-import os
 import re
 import shlex
-import tempfile
 from dataclasses import replace
 
 import FreeCAD
@@ -101,6 +99,7 @@ from ..engine.cycle93 import WIDTH_STEP_FACTOR
 from ..engine.dialects import Writer, _Spec, comment as paren_comment
 from ..engine.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
 from ..engine.moves import DWELL, FEED, RAPID, REFERENCE_MINUS, REFERENCE_PLUS, Move
+from ..engine.output import write_atomically
 
 __all__ = ["CONTROLS", "PostError", "export", "make_parser", "tooltip", "groove_op_of"]
 
@@ -1104,33 +1103,6 @@ def build(name, objectslist, opts):
         prog.item(obj)
     prog.finish()
     return "\n".join(prog.lines) + "\n"
-
-
-def write_atomically(filename, text):
-    """Write ``text`` to ``filename`` through a temporary file in the same
-    folder renamed over it: the file is either the old one or the whole new one."""
-    folder = os.path.dirname(os.path.abspath(filename))
-    base = os.path.basename(filename)
-    try:
-        mode = os.stat(filename).st_mode & 0o7777
-    except FileNotFoundError:
-        umask = os.umask(0)
-        os.umask(umask)
-        mode = 0o666 & ~umask
-    fd, tmp = tempfile.mkstemp(prefix="." + base + ".", suffix=".tmp", dir=folder)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as f:
-            f.write(text)
-            f.flush()
-            os.fsync(f.fileno())
-        os.chmod(tmp, mode)
-        os.replace(tmp, filename)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
 
 
 def export(name, objectslist, filename, argstring):
