@@ -66,6 +66,7 @@ import Path
 import Path.Op.Base as PathOp
 import PathScripts.PathUtils as PathUtils
 
+from .. import hooks
 from ..engine import CycleError, GroovingTool, MachineState, Settings
 from ..engine.cycle93 import DEFAULT_VRT_MM, Cycle93
 from ..engine.errors import format_value
@@ -87,6 +88,56 @@ TYP_RIGHT = {(True, True): 5, (True, False): 7, (False, True): 6, (False, False)
 
 def _tip(text):
     return QT_TRANSLATE_NOOP("App::Property", text)
+
+
+class GrooveInputError(ValueError):
+    """A value of the op that cannot make a groove; ``properties`` names the
+    op properties to fix (the task panel marks their fields)."""
+
+    def __init__(self, message, properties=()):
+        super().__init__(message)
+        self.properties = tuple(properties)
+
+
+# CYCLE93 parameter (CycleError.parameter, split at "/") -> the op property it comes from
+CYCLE93_PROPERTIES = {
+    "WIDG": "Width", "DEPG": "Depth", "ANGC": "Base", "ANG1": "FlankAngle1", "ANG2": "FlankAngle2",
+    "RCO1": "EdgeCorner1", "RCO2": "EdgeCorner2", "RCI1": "BaseCorner1", "RCI2": "BaseCorner2",
+    "FAL1": "BaseAllowance", "FAL2": "FlankAllowance", "IDEP": "Infeed", "DWT": "Dwell",
+    "VRT": "Retract", "tool width": "ToolWidth", "TYP": "ChamferMeasure",
+}
+
+
+def error_properties(error):
+    """The op properties an error from plan() is about: () when it names none."""
+    props = getattr(error, "properties", None)
+    if props is not None:
+        return tuple(props)
+    parameter = getattr(error, "parameter", None)  # a CycleError
+    if parameter is None:
+        return ()
+    return tuple(CYCLE93_PROPERTIES[p] for p in str(parameter).split("/") if p in CYCLE93_PROPERTIES)
+
+
+class _WithValues:
+    """An op object seen with some property values replaced: plan() on it
+    shows what the op would cut with the task panel's values, without
+    writing them to the document."""
+
+    def __init__(self, obj, values):
+        self._obj = obj
+        self._values = values
+
+    def __getattr__(self, name):
+        values = self.__dict__["_values"]
+        if name in values:
+            return values[name]
+        return getattr(self.__dict__["_obj"], name)
+
+
+def document_object(obj):
+    """The FreeCAD object behind ``obj`` (itself, or what _WithValues wraps)."""
+    return obj._obj if isinstance(obj, _WithValues) else obj
 
 
 _EDGE1 = "1 = the groove's start edge: its +Z edge (longitudinal grooves) or its outer edge (face grooves)"
@@ -154,6 +205,7 @@ PROPERTIES = (
         "internal (all 'right'); +10 with CHR chamfers."), 0),
 )
 PROPERTY_NAMES = tuple(p[1] for p in PROPERTIES)
+PROPERTY_TYPES = {p[1]: p[0] for p in PROPERTIES}
 DERIVED = tuple(p[1] for p in PROPERTIES if p[2] == "Derived")
 DEFAULTS = {p[1]: (p[4][0] if isinstance(p[4], list) else p[4]) for p in PROPERTIES}
 
@@ -442,7 +494,7 @@ class ObjectGroove(PathOp.ObjectOp):
     def groove_faces(self, obj):
         """GrooveFace of every face in Base (ValueError naming a face that takes no groove)."""
         out = []
-        job = PathUtils.findParentJob(obj)
+        job = PathUtils.findParentJob(document_object(obj))
         for base, subs in obj.Base or []:
             if isinstance(subs, str):
                 subs = (subs,)
@@ -450,12 +502,15 @@ class ObjectGroove(PathOp.ObjectOp):
             for sub in subs:
                 name = element_name(named, sub or "(whole object)")
                 if not sub:
-                    raise ValueError("%s: pick a face of the part, not the whole object" % name)
+                    raise GrooveInputError("%s: pick a face of the part, not the whole object" % name, ("Base",))
                 try:
                     shape = base.Shape.getElement(sub)
                 except Exception:
-                    raise ValueError("%s: no such element in the model (did the model change?)" % name) from None
-                out.append(analyse_face(shape, name))
+                    raise GrooveInputError("%s: no such element in the model (did the model change?)" % name, ("Base",)) from None
+                try:
+                    out.append(analyse_face(shape, name))
+                except ValueError as e:
+                    raise GrooveInputError(str(e), ("Base",)) from None
         return out
 
     def settings(self, obj):
@@ -502,10 +557,12 @@ class ObjectGroove(PathOp.ObjectOp):
             return []
         count = int(obj.GrooveCount)
         if count < 1:
-            raise ValueError("GrooveCount=%d: must be 1 or more" % count)
+            raise GrooveInputError("GrooveCount=%d: must be 1 or more" % count, ("GrooveCount",))
         if count > 1 and not obj.Pitch.Value > 0:
-            raise ValueError("Pitch=%s: must be greater than 0 with GrooveCount %d" % (format_value(obj.Pitch.Value), count))
-        job = PathUtils.findParentJob(obj)
+            raise GrooveInputError(
+                "Pitch=%s: must be greater than 0 with GrooveCount %d" % (format_value(obj.Pitch.Value), count), ("Pitch",)
+            )
+        job = PathUtils.findParentJob(document_object(obj))
         if job is None:
             raise ValueError("%s is not in a Job" % obj.Label)
         settings = self.settings(obj)
@@ -525,6 +582,20 @@ class ObjectGroove(PathOp.ObjectOp):
                 plans.append(GroovePlan(face, index, position, call, settings, start, start_on, link, moves))
                 prev, prev_on = (start.x, start.z), start_on
         return plans
+
+    def plan_with(self, obj, values):
+        """plan() as it would be with ``values`` {property name: value (mm,
+        degrees, seconds, counts, enumeration text)} in place of the op's own
+        (the task panel's preview); the document is not touched."""
+        wrapped = {}
+        for name, value in values.items():
+            kind = PROPERTY_TYPES.get(name, "")
+            if kind in ("App::PropertyLength", "App::PropertyDistance"):
+                value = FreeCAD.Units.Quantity(float(value), FreeCAD.Units.Length)
+            elif kind == "App::PropertyAngle":
+                value = FreeCAD.Units.Quantity(float(value), FreeCAD.Units.Angle)
+            wrapped[name] = value
+        return self.plan(_WithValues(obj, wrapped))
 
     def cycles(self, obj):
         """[(Cycle93, Settings, start MachineState)] of every groove, in order:
@@ -575,18 +646,21 @@ def _check_on_face(face, geo, index, position):
     xs = [x for x, _z in region]
     zs = [z for _x, z in region]
     what = "%s: groove %d (Position %s mm)" % (face.name, index + 1, format_value(float(position)))
+    placement = ("Position",) if index == 0 else ("Position", "Pitch", "GrooveCount")
     if face.longitudinal:
         if min(zs) < face.z_min - tol or max(zs) > face.z_max + tol:
-            raise ValueError(
+            raise GrooveInputError(
                 "%s spans Z %s..%s, past the face (Z %s..%s)"
-                % (what, format_value(min(zs)), format_value(max(zs)), format_value(face.z_min), format_value(face.z_max))
+                % (what, format_value(min(zs)), format_value(max(zs)), format_value(face.z_min), format_value(face.z_max)),
+                placement,
             )
         if min(xs) < -tol:
-            raise ValueError("%s reaches X %s, past the axis" % (what, format_value(min(xs))))
+            raise GrooveInputError("%s reaches X %s, past the axis" % (what, format_value(min(xs))), ("Depth",))
     elif min(xs) < face.r_min - tol or max(xs) > face.r_max + tol:
-        raise ValueError(
+        raise GrooveInputError(
             "%s spans radius %s..%s, past the face (radius %s..%s)"
-            % (what, format_value(min(xs)), format_value(max(xs)), format_value(face.r_min), format_value(face.r_max))
+            % (what, format_value(min(xs)), format_value(max(xs)), format_value(face.r_min), format_value(face.r_max)),
+            placement,
         )
 
 
@@ -662,9 +736,12 @@ def _start_and_moves(face, geo, call, settings, env, feed, index):
 def Create(name, obj=None, parentJob=None, tool_controller=None):
     """Create(name, obj=None, parentJob=None) ... a Groove operation
     (Path::FeaturePython with an ObjectGroove proxy), added to ``parentJob``
-    (or the document's only Job). No view provider: the GUI layer adds one."""
+    (or the document's only Job). With the GUI up it also gets its view
+    provider (freecad_groove.hooks.view_provider_factory)."""
     if obj is None:
         doc = parentJob.Document if parentJob is not None else FreeCAD.ActiveDocument
         obj = doc.addObject("Path::FeaturePython", name)
     obj.Proxy = ObjectGroove(obj, name, parentJob, tool_controller)
+    if hooks.view_provider_factory is not None and getattr(obj, "ViewObject", None) is not None:
+        hooks.view_provider_factory(obj)
     return obj

@@ -505,3 +505,47 @@ def test_posts_reuse_the_plan_only_while_the_op_is_up_to_date(shop):
     doc.recompute()
     assert op.Proxy.current_plan(op) is op.Proxy.current_plan(op)
     assert op.Proxy.current_plan(op)[0].cycle.widg == 5.0
+
+
+# -- planning from the task panel's values --------------------------------------
+
+
+def test_plan_with_values_leaves_the_op_alone(shop):
+    op = groove(shop, "cylinder")
+    path_before = op.Path.toGCode()
+    plans = op.Proxy.plan_with(op, {"Width": 6.0, "Depth": 3.0, "GrooveCount": 2, "Pitch": 8.0,
+                                    "EdgeCorner1Type": "Chamfer", "EdgeCorner1": 0.5})
+    assert [(p.cycle.widg, p.cycle.depg, p.cycle.rco1) for p in plans] == [(6.0, 3.0, -0.5)] * 2
+    assert [p.position for p in plans] == [5.0, 13.0]
+    assert (op.Width.Value, op.Depth.Value, int(op.GrooveCount)) == (4.0, 2.0, 1)
+    assert "Touched" not in op.State and op.Path.toGCode() == path_before
+    # The same values on the op itself plan the same grooves.
+    op.Width, op.Depth, op.GrooveCount, op.Pitch = 6.0, 3.0, 2, 8.0
+    op.EdgeCorner1Type, op.EdgeCorner1 = "Chamfer", 0.5
+    assert [(p.cycle, p.start, p.moves) for p in op.Proxy.plan(op)] == [(p.cycle, p.start, p.moves) for p in plans]
+
+
+@pytest.mark.parametrize("values, properties, text", [
+    ({"Width": 2.0}, ("Width",), "alarm 61602"),
+    ({"BaseCorner1Type": "Radius", "BaseCorner1": 2.0, "BaseCorner2Type": "Radius", "BaseCorner2": 2.5},
+     ("BaseCorner1", "BaseCorner2"), "alarm 61603"),
+    ({"Infeed": 0.0}, ("Infeed",), "IDEP"),
+    ({"GrooveCount": 3, "Pitch": 0.0}, ("Pitch",), "Pitch=0"),
+    ({"Position": 18.0}, ("Position",), "past the face"),
+    ({"GrooveCount": 3, "Pitch": 9.0}, ("Position", "Pitch", "GrooveCount"), "groove 3"),
+    ({"Depth": 25.0}, ("Depth",), "past the axis"),
+])
+def test_plan_with_errors_name_the_properties_to_fix(shop, values, properties, text):
+    op = groove(shop, "cylinder")
+    with pytest.raises(ValueError) as info:
+        op.Proxy.plan_with(op, values)
+    assert text in str(info.value)
+    assert groove_op.error_properties(info.value) == properties
+
+
+def test_face_errors_point_at_the_base_geometry(doc):
+    doc, shaft, job, tc = make_shop(doc, shape=Part.makeSphere(10))
+    op = make_groove(job, (shaft, "Face1"), recompute=False)
+    with pytest.raises(ValueError) as info:
+        op.Proxy.plan(op)
+    assert groove_op.error_properties(info.value) == ("Base",)
