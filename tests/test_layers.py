@@ -1,6 +1,8 @@
 """The three layers' import rule, read from the source (no FreeCAD needed):
-the engine imports neither FreeCAD nor Qt; the FreeCAD layer, the posts and
-Init.py import FreeCAD but never Qt or the GUI."""
+imports only point down. The engine imports neither FreeCAD nor Qt nor the
+upper layers; the FreeCAD layer, the posts and Init.py import FreeCAD but
+never Qt or the GUI layer (freecad_groove.gui); only the GUI layer, InitGui.py
+and the GUI tests import FreeCADGui or Qt."""
 
 import ast
 import glob
@@ -11,16 +13,38 @@ import pytest
 from conftest import ROOT
 
 FREECAD = {"FreeCAD", "Part", "Path", "PathScripts", "Mesh", "Sketcher"}
-GUI = {"FreeCADGui", "PySide", "PySide2", "PySide6", "PyQt5", "PyQt6", "Gui"}
+GUI = {"FreeCADGui", "PySide", "PySide2", "PySide6", "PyQt5", "PyQt6", "Gui", "pivy"}
+FREECAD_LAYER = {"freecad_groove.freecad"}
+GUI_LAYER = {"freecad_groove.gui"}
 
 
-def imported_modules(path):
+def _package(path):
+    rel = os.path.relpath(path, ROOT)[:-3].split(os.sep)
+    return rel[:-1] if rel[-1] != "__init__" else rel[:-1]
+
+
+def imported_modules(path, package=None):
+    """Every module a file imports, relative imports made absolute (from the
+    file's place in the tree, or ``package`` ["freecad_groove", ...])."""
+    package = _package(path) if package is None else package
     tree = ast.parse(open(path, encoding="utf-8").read(), path)
     for node in ast.walk(tree):
         if isinstance(node, ast.Import):
             yield from (a.name for a in node.names)
-        elif isinstance(node, ast.ImportFrom) and node.level == 0:
-            yield node.module or ""
+        elif isinstance(node, ast.ImportFrom):
+            if node.level == 0:
+                yield node.module or ""
+                continue
+            base = package[: len(package) - (node.level - 1)]
+            module = ".".join(base + ([node.module] if node.module else []))
+            yield module
+            yield from (module + "." + a.name for a in node.names)  # each may be a module
+
+
+def _hits(name, forbidden):
+    top = set(name.split(".")) & {f for f in forbidden if "." not in f}
+    layers = {f for f in forbidden if "." in f and (name == f or name.startswith(f + "."))}
+    return top | layers
 
 
 def files(*patterns):
@@ -32,16 +56,19 @@ def files(*patterns):
 @pytest.mark.parametrize(
     "patterns, forbidden",
     [
-        (("freecad_groove/engine/*.py", "freecad_groove/__init__.py", "freecad_groove/__main__.py",
-          "freecad_groove/cli.py"), FREECAD | GUI),
-        (("freecad_groove/freecad/*.py", "freecad_groove/demo.py", "postprocessors/*_post.py", "Init.py"), GUI),
+        (("freecad_groove/engine/*.py", "freecad_groove/__main__.py", "freecad_groove/cli.py",
+          "freecad_groove/hooks.py"), FREECAD | GUI | FREECAD_LAYER | GUI_LAYER),
+        # The package's make_groove() loads the FreeCAD layer lazily, on its first call.
+        (("freecad_groove/__init__.py",), FREECAD | GUI | GUI_LAYER),
+        (("freecad_groove/freecad/*.py", "freecad_groove/demo.py", "postprocessors/*_post.py", "Init.py"),
+         GUI | GUI_LAYER),
     ],
-    ids=["engine", "freecad"],
+    ids=["engine", "package", "freecad"],
 )
 def test_layer_imports(patterns, forbidden):
     for path in files(*patterns):
         for name in imported_modules(path):
-            hit = set(name.split(".")) & forbidden
+            hit = _hits(name, forbidden)
             assert not hit, "%s imports %s" % (os.path.relpath(path, ROOT), name)
 
 
@@ -49,3 +76,12 @@ def test_rule_catches_a_forbidden_import(tmp_path):
     bad = tmp_path / "bad.py"
     bad.write_text("def f():\n    from PySide import QtCore\n")
     assert "PySide" in list(imported_modules(str(bad)))
+
+
+def test_rule_catches_a_relative_import_of_the_gui_layer(tmp_path):
+    bad = tmp_path / "bad.py"
+    bad.write_text("from ..gui import task_panel\n")
+    names = list(imported_modules(str(bad), package=["freecad_groove", "freecad"]))
+    assert "freecad_groove.gui.task_panel" in names
+    assert _hits("freecad_groove.gui.task_panel", GUI_LAYER)
+    assert not _hits("freecad_groove.freecad.groove_op", GUI_LAYER)
