@@ -1,0 +1,36 @@
+"""GUI layer: the Groove command, its task panel and the live preview.
+
+The only layer that imports FreeCADGui or Qt (always through FreeCAD's
+``PySide`` shim, so it runs on PySide6 in FreeCAD 1.1 and PySide2 in 1.0).
+``InitGui.py`` calls ``register()`` when FreeCAD's GUI starts; the CAM
+modules are imported only when the command is first used. Module and class
+names in task_panel.py are stored in documents (the view provider's class,
+the page class): keep them stable.
+
+    command.py     the Groove command and its place in CAM's toolbar and menu
+    task_panel.py  view provider, task panel pages, OK/Cancel handling
+    preview.py     the groove cross-section and toolpath drawn while editing
+"""
+
+import os
+
+RESOURCES = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "resources")
+ICON = os.path.join(RESOURCES, "icons", "groove.svg")
+PANELS = os.path.join(RESOURCES, "panels")
+COMMAND = "FreeCADGroove_Groove"
+
+
+def _attach_view_provider(obj):
+    from . import task_panel
+
+    task_panel.attach_view_provider(obj)
+
+
+def register():
+    """Add the Groove command to the CAM workbench and give ops made by
+    scripts their view provider."""
+    from .. import hooks
+    from . import command
+
+    command.register()
+    hooks.view_provider_factory = _attach_view_provider

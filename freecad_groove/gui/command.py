@@ -1,0 +1,91 @@
+"""The Groove command: a button in CAM's "New Operations" toolbar and an
+entry in the CAM menu (after the engraving operations).
+
+Enabled when the active document holds a CAM Job. With a face of a Job's
+model selected it makes the op in that Job on that face (the task panel's
+base geometry takes the selection, as FreeCAD's own ops do); otherwise in
+the document's only Job, or the one the user picks.
+"""
+
+import FreeCAD
+import FreeCADGui
+
+from . import COMMAND, ICON
+
+translate = FreeCAD.Qt.translate
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
+
+TOOLBAR = "New Operations"  # CAM's toolbar of operations (1.0 and 1.1)
+MENU_AFTER = "CAM_Vcarve"  # the last operation of CAM's menu before its separator (1.0 and 1.1)
+WORKBENCH = "CAMWorkbench"
+
+
+def _jobs(doc):
+    return [o for o in doc.Objects if getattr(o, "Proxy", None) is not None and type(o.Proxy).__name__ == "ObjectJob"]
+
+
+def job_of_selection(jobs):
+    """The Job whose model holds the selected object, or None."""
+    for sel in FreeCADGui.Selection.getSelectionEx():
+        for job in jobs:
+            model = getattr(job, "Model", None)
+            if model is not None and sel.Object in model.Group:
+                return job
+    return None
+
+
+class CommandGroove:
+    def GetResources(self):
+        return {
+            "Pixmap": ICON,
+            "MenuText": QT_TRANSLATE_NOOP("FreeCADGroove_Groove", "Groove"),
+            "ToolTip": QT_TRANSLATE_NOOP(
+                "FreeCADGroove_Groove",
+                "Cut a groove (CYCLE93) into a turned face: select a cylinder, cone or plane face of "
+                "the Job's part, then set the groove's size in the task panel",
+            ),
+        }
+
+    def IsActive(self):
+        doc = FreeCAD.ActiveDocument
+        return doc is not None and bool(_jobs(doc))
+
+    def Activated(self):
+        doc = FreeCAD.ActiveDocument
+        jobs = _jobs(doc) if doc is not None else []
+        if not jobs:
+            return None
+        job = job_of_selection(jobs)
+        if job is None:
+            if len(jobs) == 1:
+                job = jobs[0]
+            else:
+                import PathScripts.PathUtils as PathUtils
+
+                job = PathUtils.UserInput.chooseJob(jobs)
+        if job is None:
+            return None
+        from . import task_panel
+
+        return task_panel.create(job)
+
+
+class Manipulator:
+    """Puts the command into CAM's toolbar and menu whenever CAM is built."""
+
+    def modifyToolBars(self):
+        return [{"append": COMMAND, "toolBar": TOOLBAR}]
+
+    def modifyMenuBar(self):
+        return [{"append": COMMAND, "menuItem": MENU_AFTER}]
+
+
+_manipulator = None
+
+
+def register():
+    global _manipulator
+    FreeCADGui.addCommand(COMMAND, CommandGroove())
+    if _manipulator is None:
+        _manipulator = Manipulator()
+        FreeCADGui.addWorkbenchManipulator(_manipulator)
