@@ -21,7 +21,7 @@ for path in (ROOT, HERE):
         sys.path.insert(0, path)
 
 # Inside FreeCAD (run_suite.py) FreeCAD is already imported; on the host it is not.
-collect_ignore = [] if "FreeCAD" in sys.modules else ["freecad"]
+collect_ignore = [] if "FreeCAD" in sys.modules else ["freecad", "freecad_gui"]
 
 from hypothesis import settings  # noqa: E402
 

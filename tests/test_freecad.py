@@ -30,6 +30,10 @@ LABELS = ["1.1", "1.0"]  # 1.1 first: the primary target
 TIMEOUT = 1800  # seconds for one FreeCAD's suite (about 30 s on a 2-core machine)
 # Short: FreeCAD 1.1 crashes on a -c text of 256 characters or more.
 RUN_SUITE_CODE = "import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT'] + '/tests/freecad/run_suite.py').read())"
+# The GUI suite: FreeCAD's GUI on a virtual X screen, running a script file.
+GUI_COMMAND = ('exec xvfb-run -a -s "-screen 0 1600x1000x24" freecad -M "$FREECAD_GROOVE_CHECKOUT" '
+               '"$FREECAD_GROOVE_CHECKOUT/tests/freecad_gui/start.py"')
+GUI_TIMEOUT = 900
 CROSS_CHECK = "tests/freecad/test_environment.py::test_seed_cycle93_expands_to_the_hosts_moves"
 HOW_TO_GET = "`scripts/freecad-roots ensure` (as root) builds FreeCAD 1.1 and 1.0 (about 5 GB, a few minutes)"
 
@@ -93,37 +97,37 @@ def publish_artifacts(src):
         shutil.copytree(sub, dest)
 
 
+def publish_screenshots(src, label):
+    """The GUI run's screenshots to out/gui-screenshots/<label>/ (scripts/screenshots
+    copies FreeCAD 1.1's into docs/ for the README)."""
+    dest = os.path.join(ROOT, "out", "gui-screenshots", label)
+    shutil.rmtree(dest, ignore_errors=True)
+    if src.is_dir():
+        shutil.copytree(src, dest)
+
+
 def tail(text, lines=40):
     return "\n".join(text.splitlines()[-lines:])
 
 
-@pytest.mark.parametrize("label", LABELS + sorted(set(available()) - set(LABELS)))
-def test_freecad_level_suite(label, tmp_path):
+def run_in_freecad(label, tmp_path, env_extra, command, args=(), timeout=TIMEOUT):
+    """Run ``command`` (an sh -c text; ``args`` are its $1...) in FreeCAD
+    ``label`` with tmp_path shared; returns (result JSON, summary, output,
+    exit status); skips when that FreeCAD is missing."""
     where = available().get(label)
     if where is None:
         not_available(label, "`scripts/freecad-roots list` does not list it")
-
-    with open(tmp_path / seed_case.HOST_MOVES_FILE, "w") as f:
-        json.dump(seed_case.as_json(), f)
     env = dict(os.environ)
     env.pop("FREECAD_GROOVE_PYTEST_ARGS", None)
-    env["FREECAD_GROOVE_RESULT"] = "result.json"  # in the shared directory
     env["FREECAD_GROOVE_SUITE_EXIT"] = "1"
-    # The posts' LinuxCNC output and groove geometry, for the host-side rs274
-    # and simulation checks in test_post_artifacts.py (runs after this file).
-    env["FREECAD_GROOVE_ARTIFACTS"] = "artifacts"
-    command = [
-        SCRIPT, "run", label, "--share", str(tmp_path), "--",
-        # -M: the checkout is loaded as a FreeCAD Mod, like an installed add-on.
-        "sh", "-c", 'exec freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$1"', "sh", RUN_SUITE_CODE,
-    ]
-    proc = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUT, env=env)
+    env.update(env_extra)
+    proc = subprocess.run([SCRIPT, "run", label, "--share", str(tmp_path), "--", "sh", "-c", command, "sh", *args],
+                          capture_output=True, text=True, timeout=timeout, env=env)
     if proc.returncode == 77:
         not_available(label, proc.stderr)
     output = "exit status %d\n--- stdout ---\n%s\n--- stderr ---\n%s" % (
         proc.returncode, tail(proc.stdout), tail(proc.stderr))
-
-    result_file = tmp_path / "result.json"
+    result_file = tmp_path / env_extra["FREECAD_GROOVE_RESULT"]
     assert result_file.exists(), "FreeCAD %s (%s) wrote no result:\n%s" % (label, where, output)
     result = json.loads(result_file.read_text())
     counts = result["counts"]
@@ -131,14 +135,43 @@ def test_freecad_level_suite(label, tmp_path):
         ".".join(result["freecad_version"][:3]) if result["freecad_version"] else "?",
         where, result["python"].split()[0], ", ".join("%s %d" % kv for kv in counts.items() if kv[1]))
     print(summary)
+    return result, summary, output, proc.returncode
 
-    publish_artifacts(tmp_path / "artifacts")
+
+def check_result(result, summary, returncode, output):
     failures = describe_failures(result)
-    assert not failures, "%s\n\n%s\n\nexit status %d" % (summary, failures, proc.returncode)
-    assert result["exitstatus"] == 0 and proc.returncode == 0, "%s\n%s" % (summary, output)
-    assert counts["passed"] > 0, summary
+    assert not failures, "%s\n\n%s\n\nexit status %d" % (summary, failures, returncode)
+    assert result["exitstatus"] == 0 and returncode == 0, "%s\n%s" % (summary, output)
+    assert result["counts"]["passed"] > 0, summary
+
+
+LABELS_FOUND = LABELS + sorted(set(available()) - set(LABELS))
+
+
+@pytest.mark.parametrize("label", LABELS_FOUND)
+def test_freecad_level_suite(label, tmp_path):
+    with open(tmp_path / seed_case.HOST_MOVES_FILE, "w") as f:
+        json.dump(seed_case.as_json(), f)
+    # The posts' LinuxCNC output and groove geometry, for the host-side rs274
+    # and simulation checks in test_post_artifacts.py (runs after this file).
+    env = {"FREECAD_GROOVE_RESULT": "result.json", "FREECAD_GROOVE_ARTIFACTS": "artifacts"}
+    # -M: the checkout is loaded as a FreeCAD Mod, like an installed add-on.
+    command = 'exec freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$1"'
+    result, summary, output, returncode = run_in_freecad(label, tmp_path, env, command, [RUN_SUITE_CODE])
+    publish_artifacts(tmp_path / "artifacts")
+    check_result(result, summary, returncode, output)
     assert CROSS_CHECK in result["passed"], "%s: %s did not pass (skipped: %s)" % (
         summary, CROSS_CHECK, result["skipped"])
     for name in engine_test_files():
         ran = [n for n in result["passed"] if n.startswith(name + "::")]
         assert ran, "%s: no test of %s passed under FreeCAD's Python" % (summary, name)
+
+
+@pytest.mark.parametrize("label", LABELS_FOUND)
+def test_freecad_gui_suite(label, tmp_path):
+    """tests/freecad_gui/ in FreeCAD's GUI under Xvfb; screenshots to out/gui-screenshots/<label>/."""
+    env = {"FREECAD_GROOVE_RESULT": "gui-result.json", "FREECAD_GROOVE_SCREENSHOTS": "screenshots"}
+    result, summary, output, returncode = run_in_freecad(label, tmp_path, env, GUI_COMMAND, timeout=GUI_TIMEOUT)
+    publish_screenshots(tmp_path / "screenshots", label)
+    check_result(result, summary, returncode, output)
+    assert not result["skipped"], "%s: skipped %s" % (summary, result["skipped"])

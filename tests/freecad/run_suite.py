@@ -23,6 +23,10 @@ in ENGINE_TESTS. Environment:
     FREECAD_GROOVE_SUITE_EXIT   0 = return instead of ending the process with
                              pytest's exit status (default: os._exit(status),
                              which also skips FreeCAD's own shutdown)
+    FREECAD_GROOVE_SUITE     "gui": run tests/freecad_gui/test_*.py instead
+                             (no engine tests), started from the Qt event
+                             loop of FreeCAD's GUI; tests/freecad_gui/start.py
+                             sets it (the GUI runs a script file, not -c)
 
 The JSON: {"exitstatus", "freecad_version", "python", "counts": {passed,
 failed, errors, skipped, xfailed, xpassed}, "passed": [nodeid, ...],
@@ -46,6 +50,7 @@ def _freecad_groove_run_suite():
     import traceback
 
     checkout = os.environ.get("FREECAD_GROOVE_CHECKOUT", "/mnt/freecad-groove")
+    gui = os.environ.get("FREECAD_GROOVE_SUITE", "") == "gui"
     share = os.environ.get("FREECAD_GROOVE_SHARE", "")
     result_path = os.environ.get("FREECAD_GROOVE_RESULT", "result.json")
     if not os.path.isabs(result_path):
@@ -118,8 +123,11 @@ def _freecad_groove_run_suite():
         import pytest
 
         result["pytest"] = pytest.__version__
-        files = sorted(glob.glob(os.path.join(checkout, "tests", "freecad", "test_*.py")))
-        files += [os.path.join(checkout, name) for name in ENGINE_TESTS]
+        if gui:
+            files = sorted(glob.glob(os.path.join(checkout, "tests", "freecad_gui", "test_*.py")))
+        else:
+            files = sorted(glob.glob(os.path.join(checkout, "tests", "freecad", "test_*.py")))
+            files += [os.path.join(checkout, name) for name in ENGINE_TESTS]
         basetemp = tempfile.mkdtemp(prefix="freecad-groove-pytest-")  # tmp_path, removed below
         args = ["-p", "no:cacheprovider", "--rootdir", checkout, "--basetemp", basetemp, "-rfEs"]
         args += shlex.split(os.environ.get("FREECAD_GROOVE_PYTEST_ARGS", ""))
@@ -145,4 +153,10 @@ def _freecad_groove_run_suite():
     return status
 
 
-_freecad_groove_run_suite()
+if __import__("os").environ.get("FREECAD_GROOVE_SUITE", "") == "gui":
+    # After the main window is up, from inside the event loop the tests drive.
+    from PySide import QtCore as _QtCore
+
+    _QtCore.QTimer.singleShot(0, _freecad_groove_run_suite)
+else:
+    _freecad_groove_run_suite()

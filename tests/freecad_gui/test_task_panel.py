@@ -1,0 +1,259 @@
+"""The Groove command and task panel in FreeCAD's GUI (1.1 and 1.0, under Xvfb).
+
+What a user does: open a turned part, make a Job, select a face, press the
+Groove button, type values into the fields, watch the preview, press OK or
+Cancel. Fields are typed into key by key and buttons clicked; every test
+saves a screenshot of the panel and the 3D view.
+"""
+
+import os
+import sys
+
+import FreeCAD
+import FreeCADGui
+import pytest
+from PySide import QtGui
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "freecad"))
+
+from gui_helpers import choose, process, screenshot, show_part, task_button, type_into, version, wait_for  # noqa: E402
+from parts import face_name, shaft_shape  # noqa: E402
+
+from freecad_groove import make_groove  # noqa: E402
+from freecad_groove.gui import COMMAND  # noqa: E402
+from freecad_groove.gui import task_panel  # noqa: E402
+
+Ok, Apply, Cancel = QtGui.QDialogButtonBox.Ok, QtGui.QDialogButtonBox.Apply, QtGui.QDialogButtonBox.Cancel
+TOOL_WIDTH = 3.0  # the default tool bit has no Width: the op's ToolWidth default
+
+
+@pytest.fixture(scope="module", autouse=True)
+def cam_workbench():
+    FreeCADGui.getMainWindow().showMaximized()
+    FreeCADGui.activateWorkbench("CAMWorkbench")
+    process(0.2)
+
+
+@pytest.fixture
+def shop():
+    """(doc, job, model): the stepped shaft in a Job made as the GUI makes it."""
+    import Path.Main.Gui.Job as PathJobGui
+
+    doc = FreeCAD.newDocument("GrooveGui")
+    shaft = doc.addObject("Part::Feature", "Shaft")
+    shaft.Shape = shaft_shape()
+    doc.recompute()
+    job = PathJobGui.Create([shaft], openTaskPanel=False)
+    tc = job.Tools.Group[0]
+    tc.HorizFeed = "120 mm/min"
+    tc.VertFeed = "120 mm/min"
+    doc.recompute()
+    show_part(doc)
+    yield doc, job, job.Model.Group[0]
+    FreeCADGui.Control.closeDialog()
+    process()
+    FreeCAD.closeDocument(doc.Name)
+    process()
+
+
+def ops(job):
+    return [o for o in job.Operations.Group if type(getattr(o, "Proxy", None)).__name__ == "ObjectGroove"]
+
+
+def start_command(doc, model, face_key):
+    """Select a face of the Job's model and press the Groove button: the new op and its panel."""
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(doc.Name, model.Name, face_name(model.Shape, face_key))
+    process()
+    FreeCADGui.runCommand(COMMAND)
+    panel = wait_for(lambda: _open_panel(doc), what="the Groove task panel")
+    page = panel.groove_page
+    wait_for(lambda: page.preview is not None and page.replans > 0, what="the first preview")
+    return panel.obj, panel, page
+
+
+def _open_panel(doc):
+    if not FreeCADGui.Control.activeDialog():
+        return None
+    for obj in doc.Objects:
+        vp = getattr(getattr(obj, "ViewObject", None), "Proxy", None)
+        if isinstance(vp, task_panel.ViewProvider) and vp.panel is not None:
+            return vp.panel
+    return None
+
+
+def replan(page, field, text):
+    """Type ``text`` into ``field`` and wait for the preview to follow."""
+    before = page.replans
+    type_into(field, text)
+    shown = field.text() if hasattr(field, "text") else None
+    wait_for(lambda: page.replans > before, what="the preview after typing %r (the field shows %r)" % (text, shown))
+    number = float(text.split()[0])
+    value = field.property("rawValue") if field.property("rawValue") is not None else field.value()
+    assert value == pytest.approx(number), "typed %r, the field shows %r = %r" % (text, shown, value)
+
+
+def extent(polyline, axis):
+    values = [p[axis] for p in polyline]
+    return min(values), max(values)
+
+
+def test_command_sits_in_cams_toolbar_and_menu(shop):
+    mw = FreeCADGui.getMainWindow()
+    toolbar_texts = [a.text() for tb in mw.findChildren(QtGui.QToolBar) for a in tb.actions() if tb.isVisible()]
+    menu_texts = [a.text() for m in mw.findChildren(QtGui.QMenu) for a in m.actions()]
+    assert "Groove" in toolbar_texts
+    assert "Groove" in menu_texts
+    from freecad_groove.gui.command import CommandGroove
+
+    assert CommandGroove().IsActive()  # the document has a Job
+    screenshot("%s-toolbar" % version())
+
+
+def test_command_needs_a_job():
+    from freecad_groove.gui.command import CommandGroove
+
+    doc = FreeCAD.newDocument("NoJob")
+    try:
+        assert not CommandGroove().IsActive()
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+
+
+def test_groove_made_in_the_panel(shop):
+    doc, job, model = shop
+    op, panel, page = start_command(doc, model, "cylinder")
+    base_page = next(p for p in panel.featurePages if isinstance(p, task_panel.BaseGeometryPage))
+    assert base_page.form.baseList.count() == 1
+    assert "longitudinal, external" in base_page.kind_label.text()
+    assert task_panel.child(page.form, "angc").text().startswith("0")
+
+    # The preview is in the 3D view: one groove section, the toolpath.
+    assert page.preview.in_scene()
+    assert len(page.preview.sections) == 1 and page.preview.feeds
+    z0, z1 = extent(page.preview.sections[0], 2)
+    assert z1 - z0 == pytest.approx(4.0)  # the default width
+    first_feeds = list(page.preview.feeds)
+
+    # Typed values move the preview, not the document.
+    replan(page, page.field("Width"), "6 mm")
+    replan(page, page.field("Depth"), "3 mm")
+    replan(page, page.field("Position"), "8 mm")
+    section = page.preview.sections[0]
+    z0, z1 = extent(section, 2)
+    x0, x1 = extent(section, 0)
+    assert z1 - z0 == pytest.approx(6.0)
+    assert z1 == pytest.approx(30.0 - 8.0)  # the cylinder's +Z end is Z30
+    assert (x0, x1) == (pytest.approx(17.0), pytest.approx(20.0))
+    assert page.preview.feeds != first_feeds
+    assert min(p[0] for seg in page.preview.feeds for p in seg) == pytest.approx(17.0)
+    assert op.Width.Value == pytest.approx(4.0)  # not written before OK
+    assert page.error is None and task_button(panel, Ok).isEnabled()
+    screenshot("%s-panel" % version())
+
+    # More grooves: the second one would run off the face's -Z end (Z10)...
+    replan(page, page.field("Pitch"), "10 mm")
+    replan(page, page.field("GrooveCount"), "2")
+    assert page.error is not None and "groove 2" in page.error and "past the face" in page.error
+    assert page.field("Pitch").property("grooveInvalid") is True
+    assert page.preview.sections == [] and not task_button(panel, Ok).isEnabled()
+    # ... until they start nearer the +Z end: one section each, 10 apart.
+    replan(page, page.field("Position"), "2 mm")
+    assert page.error is None and page.field("Pitch").property("grooveInvalid") is not True
+    assert sorted(extent(sec, 2)[1] for sec in page.preview.sections) == [pytest.approx(18.0), pytest.approx(28.0)]
+    replan(page, page.field("GrooveCount"), "1")
+    replan(page, page.field("Position"), "8 mm")
+
+    preview = page.preview
+    task_button(panel, Ok).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    process(0.1)
+    assert ops(job) == [op]
+    assert not preview.in_scene()
+    assert (op.Width.Value, op.Depth.Value, op.Position.Value) == (6.0, 3.0, 8.0)
+    assert op.State == [] or "Invalid" not in op.State
+    feeds = [c for c in op.Path.Commands if c.Name == "G1"]
+    assert feeds
+    assert min(c.Parameters["X"] for c in feeds) == pytest.approx(17.0)
+    zs = [c.Parameters["Z"] for c in feeds]
+    assert min(zs) >= 16.0 - 1e-6 and max(zs) <= 22.0 - TOOL_WIDTH + 1e-6  # the reference corner stays in the groove
+    FreeCADGui.Selection.clearSelection()
+    show_part(doc)
+    screenshot("%s-grooved-part" % version())
+
+
+def test_invalid_width_shows_the_message_and_ok_is_refused(shop):
+    doc, job, model = shop
+    op, panel, page = start_command(doc, model, "cylinder")
+    replan(page, page.field("Width"), "2 mm")
+    assert page.error is not None
+    assert "WIDG=2" in page.error and "61602" in page.error
+    label = task_panel.child(page.form, "errorLabel")
+    assert label.isVisible() and label.text() == page.error
+    assert page.field("Width").property("grooveInvalid") is True
+    assert not task_button(panel, Ok).isEnabled()
+    screenshot("%s-invalid-width" % version())
+
+    task_button(panel, Ok).click()  # a disabled button: nothing happens
+    process(0.1)
+    assert FreeCADGui.Control.activeDialog()
+    assert panel.accept() is False  # and if OK were reached anyway
+    assert FreeCADGui.Control.activeDialog()
+    assert op.Width.Value == pytest.approx(4.0)
+
+    replan(page, page.field("Width"), "5 mm")
+    assert page.error is None and not label.isVisible()
+    assert page.field("Width").property("grooveInvalid") is not True
+    assert task_button(panel, Ok).isEnabled()
+
+
+def test_error_on_a_corner_names_the_alarm_and_marks_the_corner(shop):
+    doc, job, model = shop
+    op, panel, page = start_command(doc, model, "cylinder")
+    choose(page.field("BaseCorner1Type"), "Radius")
+    choose(page.field("BaseCorner2Type"), "Radius")
+    replan(page, page.field("BaseCorner1"), "2 mm")
+    replan(page, page.field("BaseCorner2"), "2.5 mm")
+    assert page.error is not None and "61603" in page.error
+    assert page.field("BaseCorner1").property("grooveInvalid") is True
+    assert page.field("BaseCorner2").property("grooveInvalid") is True
+    assert not task_button(panel, Ok).isEnabled()
+    screenshot("%s-invalid-corners" % version())
+
+
+def test_cancel_leaves_no_op(shop):
+    doc, job, model = shop
+    before = sorted(o.Name for o in doc.Objects)
+    op, panel, page = start_command(doc, model, "shoulder")
+    replan(page, page.field("Width"), "3.5 mm")
+    assert "face, external" in next(
+        p for p in panel.featurePages if isinstance(p, task_panel.BaseGeometryPage)).kind_label.text()
+    screenshot("%s-face-groove" % version())
+    preview = page.preview
+    task_button(panel, Cancel).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    process(0.1)
+    assert sorted(o.Name for o in doc.Objects) == before
+    assert ops(job) == []
+    assert not preview.in_scene()
+
+
+def test_double_click_reopens_the_panel_with_the_ops_values(shop):
+    doc, job, model = shop
+    op = make_groove(job, (model, face_name(model.Shape, "cylinder")), width=4.5, depth=1.5, position=6,
+                     edge_corner1_type="Chamfer", edge_corner1=0.5)
+    assert isinstance(op.ViewObject.Proxy, task_panel.ViewProvider)  # scripts' ops get the view provider too
+    FreeCADGui.getDocument(doc.Name).setEdit(op.Name)  # what a double-click in the tree does
+    panel = wait_for(lambda: _open_panel(doc), what="the panel")
+    page = panel.groove_page
+    assert page.field("Width").property("rawValue") == pytest.approx(4.5)
+    assert page.field("Depth").property("rawValue") == pytest.approx(1.5)
+    assert page.field("Position").property("rawValue") == pytest.approx(6.0)
+    assert page.field("EdgeCorner1Type").currentData() == "Chamfer"
+    assert page.field("EdgeCorner1").isEnabled() and not page.field("EdgeCorner2").isEnabled()
+    wait_for(lambda: page.replans > 0, what="the preview")
+    replan(page, page.field("Width"), "5 mm")
+    task_button(panel, Cancel).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    assert ops(job) == [op]  # an existing op stays on Cancel
+    assert op.Width.Value == pytest.approx(4.5)
