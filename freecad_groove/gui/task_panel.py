@@ -309,7 +309,7 @@ class GroovePage(PathOpGui.TaskPanelPage):
         self.plans = []
         self.replans = 0
         self.on_validity_changed = None
-        self._timer = QtCore.QTimer(self.form)
+        self._timer = QtCore.QTimer()  # no parent: it must outlive the form, which Cancel may delete first
         self._timer.setSingleShot(True)
         self._timer.setInterval(PREVIEW_DELAY_MS)
         self._timer.timeout.connect(self.update_preview)
