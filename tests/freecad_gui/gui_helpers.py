@@ -83,7 +83,8 @@ def task_button(panel, which):
 
 
 def screenshot(name):
-    """Save the main window (task panel and 3D view) as <name>.png."""
+    """Save the main window (task panel and 3D view) as <name>.png and the 3D
+    view alone as <name>-3d.png."""
     share = os.environ.get("FREECAD_GROOVE_SHARE", "")
     folder = os.environ.get("FREECAD_GROOVE_SCREENSHOTS", "screenshots")
     if not os.path.isabs(folder):
@@ -94,6 +95,12 @@ def screenshot(name):
     process(0.05)
     path = os.path.join(folder, name + ".png")
     FreeCADGui.getMainWindow().grab().save(path)
+    # The 3D view rendered on its own as well: grabbing the window leaves it
+    # blank in FreeCAD 1.0 under Xvfb.
+    gui_doc = FreeCADGui.ActiveDocument
+    view = gui_doc.ActiveView if gui_doc is not None else None
+    if view is not None and hasattr(view, "saveImage"):
+        view.saveImage(os.path.join(folder, name + "-3d.png"), 1000, 700, "Current")
     return path
 
 
@@ -109,6 +116,16 @@ def show_part(doc):
     view.fitAll()
     process()
     return view
+
+
+def roomy_task_panel():
+    """Widen the docks (combo view, tasks) so the panel shows whole in screenshots."""
+    mw = FreeCADGui.getMainWindow()
+    docks = [d for d in mw.findChildren(QtGui.QDockWidget)
+             if d.isVisible() and d.windowTitle() in ("Tasks", "Combo View", "Combo view")]
+    if docks:
+        mw.resizeDocks(docks, [480] * len(docks), QtCore.Qt.Horizontal)
+    process()
 
 
 def version():

@@ -16,7 +16,8 @@ from PySide import QtGui
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "freecad"))
 
-from gui_helpers import choose, process, screenshot, show_part, task_button, type_into, version, wait_for  # noqa: E402
+from gui_helpers import (  # noqa: E402
+    choose, process, roomy_task_panel, screenshot, show_part, task_button, type_into, version, wait_for)
 from parts import face_name, shaft_shape  # noqa: E402
 
 from freecad_groove import make_groove  # noqa: E402
@@ -67,6 +68,7 @@ def start_command(doc, model, face_key):
     process()
     FreeCADGui.runCommand(COMMAND)
     panel = wait_for(lambda: _open_panel(doc), what="the Groove task panel")
+    roomy_task_panel()
     page = panel.groove_page
     wait_for(lambda: page.preview is not None and page.replans > 0, what="the first preview")
     return panel.obj, panel, page
@@ -178,6 +180,8 @@ def test_groove_made_in_the_panel(shop):
     zs = [c.Parameters["Z"] for c in feeds]
     assert min(zs) >= 16.0 - 1e-6 and max(zs) <= 22.0 - TOOL_WIDTH + 1e-6  # the reference corner stays in the groove
     FreeCADGui.Selection.clearSelection()
+    model.ViewObject.Transparency = 60  # the toolpath runs in the part's section plane
+    job.Stock.ViewObject.Visibility = False
     show_part(doc)
     screenshot("%s-grooved-part" % version())
 
@@ -257,3 +261,44 @@ def test_double_click_reopens_the_panel_with_the_ops_values(shop):
     wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
     assert ops(job) == [op]  # an existing op stays on Cancel
     assert op.Width.Value == pytest.approx(4.5)
+
+
+def base_page_of(panel):
+    return next(p for p in panel.featurePages if isinstance(p, task_panel.BaseGeometryPage))
+
+
+def test_faces_are_added_and_removed_on_the_base_geometry_page(shop):
+    doc, job, model = shop
+    op, panel, page = start_command(doc, model, "cylinder")
+    base = base_page_of(panel)
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(doc.Name, model.Name, face_name(model.Shape, "shoulder"))
+    wait_for(lambda: base.form.addBase.isEnabled(), what="the Add button")
+    before = page.replans
+    base.form.addBase.click()
+    wait_for(lambda: page.replans > before, what="the preview with two faces")
+    assert base.form.baseList.count() == 2
+    assert "longitudinal, external" in base.kind_label.text() and "face, external" in base.kind_label.text()
+    assert page.error is None and len(page.preview.sections) == 2
+    screenshot("%s-two-faces" % version())
+
+    base.form.baseList.setCurrentRow(0)
+    before = page.replans
+    base.form.deleteBase.click()
+    wait_for(lambda: page.replans > before, what="the preview with one face")
+    assert base.form.baseList.count() == 1
+    assert "longitudinal" not in base.kind_label.text()
+    assert len(page.preview.sections) == 1
+    x0, x1 = extent(page.preview.sections[0], 0)  # a face groove: it runs along X on the shoulder
+    assert x1 == pytest.approx(20.0)
+
+
+def test_only_turned_faces_can_be_picked(shop):
+    doc, job, model = shop
+    gate = task_panel.TurnedFaceGate()
+    names = ["Face%d" % (i + 1) for i in range(len(model.Shape.Faces))]
+    assert all(gate.allow(doc, model, n) for n in names)
+    assert not gate.allow(doc, model, "Edge1")
+    box = doc.addObject("Part::Box", "Block")
+    doc.recompute()
+    assert not any(gate.allow(doc, box, "Face%d" % (i + 1)) for i in range(6) if i not in (4, 5))
