@@ -118,6 +118,17 @@ def show_part(doc):
     return view
 
 
+def zoom_to(doc, x, z, size):
+    """Look at the point (x, 0, z) of the XZ plane, ``size`` mm high in the view."""
+    view = show_part(doc)
+    cam = view.getCameraNode()
+    cam.position.setValue(x, 1000.0, z)  # the lathe view looks along -Y
+    if hasattr(cam, "height"):  # orthographic camera
+        cam.height.setValue(size)
+    process()
+    return view
+
+
 def roomy_task_panel():
     """Widen the docks (combo view, tasks) so the panel shows whole in screenshots."""
     mw = FreeCADGui.getMainWindow()

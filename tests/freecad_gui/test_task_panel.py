@@ -11,13 +11,14 @@ import sys
 
 import FreeCAD
 import FreeCADGui
+import Part
 import pytest
 from PySide import QtGui
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "freecad"))
 
 from gui_helpers import (  # noqa: E402
-    choose, process, roomy_task_panel, screenshot, show_part, task_button, type_into, version, wait_for)
+    choose, process, roomy_task_panel, screenshot, show_part, task_button, type_into, version, wait_for, zoom_to)
 from parts import face_name, shaft_shape  # noqa: E402
 
 from freecad_groove import make_groove  # noqa: E402
@@ -179,10 +180,20 @@ def test_groove_made_in_the_panel(shop):
     assert min(c.Parameters["X"] for c in feeds) == pytest.approx(17.0)
     zs = [c.Parameters["Z"] for c in feeds]
     assert min(zs) >= 16.0 - 1e-6 and max(zs) <= 22.0 - TOOL_WIDTH + 1e-6  # the reference corner stays in the groove
+    # For the picture: the part with the groove cut (the finished groove's
+    # section revolved about Z); the toolpath in the section plane shows through it.
     FreeCADGui.Selection.clearSelection()
-    model.ViewObject.Transparency = 60  # the toolpath runs in the part's section plane
+    grooved = doc.addObject("Part::Feature", "Grooved")
+    shape = model.Shape
+    for plan in op.Proxy.plan(op):
+        points = [FreeCAD.Vector(x, 0, z) for x, z in plan.cycle.geometry(plan.settings).region_world()]
+        section = Part.Face(Part.makePolygon(points + points[:1]))
+        shape = shape.cut(section.revolve(FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(0, 0, 1), 360))
+    grooved.Shape = shape
+    assert grooved.Shape.Volume < model.Shape.Volume
+    model.ViewObject.Visibility = False
     job.Stock.ViewObject.Visibility = False
-    show_part(doc)
+    zoom_to(doc, 12.0, 20.0, 40.0)
     screenshot("%s-grooved-part" % version())
 
 
