@@ -17,6 +17,7 @@ import os
 RESOURCES = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "resources")
 ICON = os.path.join(RESOURCES, "icons", "groove.svg")
 PANELS = os.path.join(RESOURCES, "panels")
+TRANSLATIONS = os.path.join(RESOURCES, "translations")
 COMMAND = "FreeCADGroove_Groove"
 
 
@@ -29,8 +30,12 @@ def _attach_view_provider(obj):
 def register():
     """Add the Groove command to the CAM workbench and give ops made by
     scripts their view provider."""
+    import FreeCADGui
+
     from .. import hooks
     from . import command
 
+    FreeCADGui.addLanguagePath(TRANSLATIONS)
+    FreeCADGui.updateLocale()
     command.register()
     hooks.view_provider_factory = _attach_view_provider
