@@ -29,13 +29,8 @@ def _bench():
     import FreeCADGui
 
     checkout = os.environ.get("FREECAD_GROOVE_CHECKOUT", os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-    for sub in ("tests/freecad", "tests/freecad_gui"):
-        sys.path.insert(0, os.path.join(checkout, sub))
-    import Path.Main.Gui.Job as PathJobGui
-    from gui_helpers import _key, press, process, wait_for
-    from parts import face_name, shaft_shape
-
-    from freecad_groove.gui import COMMAND
+    sys.path.insert(0, os.path.join(checkout, "tests", "freecad_gui"))
+    from gui_helpers import key_of, make_gui_shop, press, process, start_groove_command, wait_for
 
     FreeCADGui.getMainWindow().showMaximized()
     FreeCADGui.activateWorkbench("CAMWorkbench")
@@ -44,17 +39,9 @@ def _bench():
              "time from the last key press of a new Width to the redrawn preview (median / min / max of %d):" % REPEATS]
     for label, face, count in (("cylinder, 1 groove", "cylinder", 1), ("cone, 1 groove", "cone_up", 1),
                                ("cylinder, 10 grooves", "cylinder", 10)):
-        doc = FreeCAD.newDocument("Bench")
-        shaft = doc.addObject("Part::Feature", "Shaft")
-        shaft.Shape = shaft_shape()
-        doc.recompute()
-        job = PathJobGui.Create([shaft], openTaskPanel=False)
-        model = job.Model.Group[0]
-        FreeCADGui.Selection.addSelection(doc.Name, model.Name, face_name(model.Shape, face))
-        FreeCADGui.runCommand(COMMAND)
-        panel = wait_for(lambda: getattr(doc.Objects[-1].ViewObject.Proxy, "panel", None), what="the panel")
+        doc, job, model = make_gui_shop("Bench")
+        panel = start_groove_command(doc, model, face)
         page = panel.groove_page
-        wait_for(lambda: page.preview is not None, what="the preview")
         if count > 1:
             page.field("Pitch").setProperty("rawValue", 1.5)
             page.field("Width").setProperty("rawValue", 3.5)
@@ -68,13 +55,13 @@ def _bench():
             field.setFocus()
             field.selectAll()
             for char in text[:-1]:
-                press(field, _key(char), char)
+                press(field, key_of(char), char)
             process()
             before = page.preview.updates
             t0 = time.perf_counter()
-            press(field, _key(text[-1]), text[-1])
+            press(field, key_of(text[-1]), text[-1])
             wait_for(lambda: page.preview.updates > before, what="the redraw")
-            QtGui_process_paint()
+            process()  # and let Coin draw the changed scene
             times.append((time.perf_counter() - t0) * 1000.0)
             assert page.error is None, page.error
         lines.append("  %-22s %6.1f ms / %6.1f / %6.1f  (%d grooves, %d preview segments)" % (
@@ -84,13 +71,6 @@ def _bench():
         process()
         FreeCAD.closeDocument(doc.Name)
     return lines
-
-
-def QtGui_process_paint():
-    """Let Coin draw the changed scene (the redraw is queued on the event loop)."""
-    from PySide import QtGui
-
-    QtGui.QApplication.processEvents()
 
 
 def _main():

@@ -68,7 +68,7 @@ import PathScripts.PathUtils as PathUtils
 
 from .. import hooks
 from ..engine import CycleError, GroovingTool, MachineState, Settings
-from ..engine.cycle93 import DEFAULT_VRT_MM, Cycle93
+from ..engine.cycle93 import ALARM_WIDTH, DEFAULT_VRT_MM, Cycle93
 from ..engine.errors import format_value
 from ..engine.moves import DWELL, FEED, RAPID
 from .faces import analyse_face, element_name
@@ -116,7 +116,10 @@ def error_properties(error):
     parameter = getattr(error, "parameter", None)  # a CycleError
     if parameter is None:
         return ()
-    return tuple(CYCLE93_PROPERTIES[p] for p in str(parameter).split("/") if p in CYCLE93_PROPERTIES)
+    props = tuple(CYCLE93_PROPERTIES[p] for p in str(parameter).split("/") if p in CYCLE93_PROPERTIES)
+    if props == ("Width",) and getattr(error, "alarm", None) == ALARM_WIDTH:
+        props += ("ToolWidth",)  # narrower than the blade: either may be wrong
+    return props
 
 
 class _WithValues:

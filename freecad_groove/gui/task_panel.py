@@ -28,7 +28,7 @@ from PySide import QtCore, QtGui
 
 from ..freecad import faces as faces_mod
 from ..freecad import groove_op
-from . import ICON, PANELS
+from . import ICON, PANELS, preview
 
 translate = FreeCAD.Qt.translate
 CONTEXT = "FreeCADGroove"
@@ -130,6 +130,23 @@ def _show_error(label, message):
     label.setVisible(bool(message))
 
 
+def _add_to_layout(layout, widget):
+    if isinstance(layout, QtGui.QGridLayout):
+        layout.addWidget(widget, layout.rowCount(), 0, 1, max(1, layout.columnCount()))
+    else:
+        layout.addWidget(widget)
+
+
+def _add_error_label(form):
+    """The label the engine's message shows in (objectName errorLabel), hidden while all is well."""
+    label = QtGui.QLabel(form)
+    label.setObjectName("errorLabel")
+    label.setWordWrap(True)
+    label.setVisible(False)
+    _add_to_layout(form.layout(), label)
+    return label
+
+
 class _Fields:
     """Quantity fields (Gui::QuantitySpinBox, unit set in the .ui) for op
     properties. Not CAM's PathGuiUtil.QuantitySpinBox: that one resets a field
@@ -160,21 +177,11 @@ class BaseGeometryPage(PathOpGui.TaskPanelBaseGeometryPage):
 
     def getForm(self):
         form = super().getForm()
-        layout = form.layout()
         self.kind_label = QtGui.QLabel(form)
         self.kind_label.setObjectName("grooveKind")
         self.kind_label.setWordWrap(True)
-        self.error_label = QtGui.QLabel(form)
-        self.error_label.setObjectName("errorLabel")
-        self.error_label.setWordWrap(True)
-        self.error_label.setVisible(False)
-        if isinstance(layout, QtGui.QGridLayout):
-            row = layout.rowCount()
-            layout.addWidget(self.kind_label, row, 0, 1, layout.columnCount())
-            layout.addWidget(self.error_label, row + 1, 0, 1, layout.columnCount())
-        else:
-            layout.addWidget(self.kind_label)
-            layout.addWidget(self.error_label)
+        _add_to_layout(form.layout(), self.kind_label)
+        _add_error_label(form)
         return form
 
     def supportsEdges(self):
@@ -214,6 +221,7 @@ class ToolPage(PathOpGui.TaskPanelPage):
     def getForm(self):
         form = _load("PageGrooveToolEdit.ui")
         _fill_combo(form.referenceCorner, REFERENCE_CORNER_TEXT)
+        _add_error_label(form)
         return form
 
     def initPage(self, obj):
@@ -405,12 +413,17 @@ class GroovePage(PathOpGui.TaskPanelPage):
             plans = obj.Proxy.plan_with(obj, self.all_values())
         except ValueError as e:  # CycleError and GrooveInputError are ValueErrors
             error, invalid = str(e), groove_op.error_properties(e)
+        except Exception as e:  # a bug, not bad input: say so in the panel, details in the report view
+            import traceback
+
+            FreeCAD.Console.PrintError(traceback.format_exc())
+            error = translate(CONTEXT, "Internal error while planning the groove: {0}").format(e)
         self.replans += 1
         self.plans = plans
         self._show_angc(obj)
         if self.preview is None:
             view = FreeCADGui.ActiveDocument.ActiveView if FreeCADGui.ActiveDocument else None
-            self.preview = _preview_module().Preview(view if hasattr(view, "getSceneGraph") else None)
+            self.preview = preview.Preview(view if hasattr(view, "getSceneGraph") else None)
         self.preview.show(plans)
         self.set_error(error, invalid)
 
@@ -453,12 +466,6 @@ class GroovePage(PathOpGui.TaskPanelPage):
         if self.preview is not None:
             self.preview.remove()
             self.preview = None
-
-
-def _preview_module():
-    from . import preview
-
-    return preview
 
 
 class GrooveTaskPanel(PathOpGui.TaskPanel):

@@ -526,7 +526,8 @@ def test_plan_with_values_leaves_the_op_alone(shop):
 
 
 @pytest.mark.parametrize("values, properties, text", [
-    ({"Width": 2.0}, ("Width",), "alarm 61602"),
+    ({"Width": 2.0}, ("Width", "ToolWidth"), "alarm 61602"),
+    ({"ToolWidth": 5.0}, ("Width", "ToolWidth"), "narrower than the tool width 5"),
     ({"BaseCorner1Type": "Radius", "BaseCorner1": 2.0, "BaseCorner2Type": "Radius", "BaseCorner2": 2.5},
      ("BaseCorner1", "BaseCorner2"), "alarm 61603"),
     ({"Infeed": 0.0}, ("Infeed",), "IDEP"),

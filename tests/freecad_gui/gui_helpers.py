@@ -6,11 +6,15 @@ $FREECAD_GROOVE_SHARE/$FREECAD_GROOVE_SCREENSHOTS (default "screenshots").
 """
 
 import os
+import sys
 import time
 
 import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "freecad"))
+from parts import face_name, shaft_shape  # noqa: E402
 
 KEYS = {".": QtCore.Qt.Key_Period, " ": QtCore.Qt.Key_Space, "-": QtCore.Qt.Key_Minus, ",": QtCore.Qt.Key_Comma}
 
@@ -38,7 +42,8 @@ def wait_for(predicate, timeout=5.0, what="condition"):
         time.sleep(0.005)
 
 
-def _key(char):
+def key_of(char):
+    """The Qt key code of a character."""
     if char.isdigit():
         return QtCore.Qt.Key_0 + int(char)
     if char.isalpha():
@@ -57,7 +62,7 @@ def type_into(widget, text, leave=True):
     widget.setFocus()
     widget.selectAll()
     for char in text:
-        press(widget, _key(char), char)
+        press(widget, key_of(char), char)
     if leave:
         press(widget, QtCore.Qt.Key_Tab)
     process()
@@ -137,6 +142,51 @@ def roomy_task_panel():
     if docks:
         mw.resizeDocks(docks, [480] * len(docks), QtCore.Qt.Horizontal)
     process()
+
+
+def make_gui_shop(name):
+    """(doc, job, model): the stepped shaft of tests/freecad/parts.py in a new
+    document, in a Job made as CAM's GUI makes it (with its view provider)."""
+    import Path.Main.Gui.Job as PathJobGui
+
+    doc = FreeCAD.newDocument(name)
+    shaft = doc.addObject("Part::Feature", "Shaft")
+    shaft.Shape = shaft_shape()
+    doc.recompute()
+    job = PathJobGui.Create([shaft], openTaskPanel=False)
+    for tc in job.Tools.Group:
+        tc.HorizFeed = "120 mm/min"
+        tc.VertFeed = "120 mm/min"
+    doc.recompute()
+    return doc, job, job.Model.Group[0]
+
+
+def open_panel(doc):
+    """The open Groove task panel of an op in ``doc``, or None."""
+    from freecad_groove.gui import task_panel
+
+    if not FreeCADGui.Control.activeDialog():
+        return None
+    for obj in doc.Objects:
+        vp = getattr(getattr(obj, "ViewObject", None), "Proxy", None)
+        if isinstance(vp, task_panel.ViewProvider) and vp.panel is not None:
+            return vp.panel
+    return None
+
+
+def start_groove_command(doc, model, face_key):
+    """Select a face of the Job's model (a key of parts.FACES) and press the
+    Groove button; returns the task panel once its first preview is drawn."""
+    from freecad_groove.gui import COMMAND
+
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(doc.Name, model.Name, face_name(model.Shape, face_key))
+    process()
+    FreeCADGui.runCommand(COMMAND)
+    panel = wait_for(lambda: open_panel(doc), what="the Groove task panel")
+    page = panel.groove_page
+    wait_for(lambda: page.preview is not None and page.replans > 0, what="the first preview")
+    return panel
 
 
 def version():

@@ -6,23 +6,18 @@ Cancel. Fields are typed into key by key and buttons clicked; every test
 saves a screenshot of the panel and the 3D view.
 """
 
-import os
-import sys
-
 import FreeCAD
 import FreeCADGui
 import Part
 import pytest
 from PySide import QtGui
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "freecad"))
-
 from gui_helpers import (  # noqa: E402
-    choose, process, roomy_task_panel, screenshot, show_part, task_button, type_into, version, wait_for, zoom_to)
-from parts import face_name, shaft_shape  # noqa: E402
+    choose, make_gui_shop, open_panel, process, roomy_task_panel, screenshot, show_part, start_groove_command,
+    task_button, type_into, version, wait_for, zoom_to)
+from parts import face_name  # noqa: E402
 
 from freecad_groove import make_groove  # noqa: E402
-from freecad_groove.gui import COMMAND  # noqa: E402
 from freecad_groove.gui import task_panel  # noqa: E402
 
 Ok, Apply, Cancel = QtGui.QDialogButtonBox.Ok, QtGui.QDialogButtonBox.Apply, QtGui.QDialogButtonBox.Cancel
@@ -39,19 +34,9 @@ def cam_workbench():
 @pytest.fixture
 def shop():
     """(doc, job, model): the stepped shaft in a Job made as the GUI makes it."""
-    import Path.Main.Gui.Job as PathJobGui
-
-    doc = FreeCAD.newDocument("GrooveGui")
-    shaft = doc.addObject("Part::Feature", "Shaft")
-    shaft.Shape = shaft_shape()
-    doc.recompute()
-    job = PathJobGui.Create([shaft], openTaskPanel=False)
-    tc = job.Tools.Group[0]
-    tc.HorizFeed = "120 mm/min"
-    tc.VertFeed = "120 mm/min"
-    doc.recompute()
+    doc, job, model = make_gui_shop("GrooveGui")
     show_part(doc)
-    yield doc, job, job.Model.Group[0]
+    yield doc, job, model
     FreeCADGui.Control.closeDialog()
     process()
     FreeCAD.closeDocument(doc.Name)
@@ -63,26 +48,9 @@ def ops(job):
 
 
 def start_command(doc, model, face_key):
-    """Select a face of the Job's model and press the Groove button: the new op and its panel."""
-    FreeCADGui.Selection.clearSelection()
-    FreeCADGui.Selection.addSelection(doc.Name, model.Name, face_name(model.Shape, face_key))
-    process()
-    FreeCADGui.runCommand(COMMAND)
-    panel = wait_for(lambda: _open_panel(doc), what="the Groove task panel")
+    panel = start_groove_command(doc, model, face_key)
     roomy_task_panel()
-    page = panel.groove_page
-    wait_for(lambda: page.preview is not None and page.replans > 0, what="the first preview")
-    return panel.obj, panel, page
-
-
-def _open_panel(doc):
-    if not FreeCADGui.Control.activeDialog():
-        return None
-    for obj in doc.Objects:
-        vp = getattr(getattr(obj, "ViewObject", None), "Proxy", None)
-        if isinstance(vp, task_panel.ViewProvider) and vp.panel is not None:
-            return vp.panel
-    return None
+    return panel.obj, panel, panel.groove_page
 
 
 def replan(page, field, text):
@@ -259,7 +227,7 @@ def test_double_click_reopens_the_panel_with_the_ops_values(shop):
                      edge_corner1_type="Chamfer", edge_corner1=0.5)
     assert isinstance(op.ViewObject.Proxy, task_panel.ViewProvider)  # scripts' ops get the view provider too
     FreeCADGui.getDocument(doc.Name).setEdit(op.Name)  # what a double-click in the tree does
-    panel = wait_for(lambda: _open_panel(doc), what="the panel")
+    panel = wait_for(lambda: open_panel(doc), what="the panel")
     page = panel.groove_page
     assert page.field("Width").property("rawValue") == pytest.approx(4.5)
     assert page.field("Depth").property("rawValue") == pytest.approx(1.5)
@@ -313,3 +281,22 @@ def test_only_turned_faces_can_be_picked(shop):
     box = doc.addObject("Part::Box", "Block")
     doc.recompute()
     assert not any(gate.allow(doc, box, "Face%d" % (i + 1)) for i in range(6) if i not in (4, 5))
+
+
+def test_a_blade_wider_than_the_groove_is_shown_on_the_tool_page(shop):
+    doc, job, model = shop
+    op, panel, page = start_command(doc, model, "cylinder")
+    tool_page = next(p for p in panel.featurePages if isinstance(p, task_panel.ToolPage))
+    assert page.field("ToolWidth").isEnabled()  # the default tool bit has no Width
+    replan(page, page.field("ToolWidth"), "5 mm")
+    assert page.error is not None and "tool width 5" in page.error and "61602" in page.error
+    label = task_panel.child(tool_page.form, "errorLabel")
+    assert label.text() == page.error and not label.isHidden()
+    assert page.field("ToolWidth").property("grooveInvalid") is True
+    assert page.field("Width").property("grooveInvalid") is True
+    assert not task_button(panel, Ok).isEnabled()
+    replan(page, page.field("Width"), "6 mm")
+    assert page.error is None and task_button(panel, Ok).isEnabled()
+    task_button(panel, Ok).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    assert (op.ToolWidth.Value, op.Width.Value) == (5.0, 6.0)
