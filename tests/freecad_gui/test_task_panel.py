@@ -87,6 +87,7 @@ def test_command_needs_a_job():
     doc = FreeCAD.newDocument("NoJob")
     try:
         assert not CommandGroove().IsActive()
+        screenshot("%s-no-job" % version())
     finally:
         FreeCAD.closeDocument(doc.Name)
 
@@ -236,6 +237,7 @@ def test_double_click_reopens_the_panel_with_the_ops_values(shop):
     assert page.field("EdgeCorner1").isEnabled() and not page.field("EdgeCorner2").isEnabled()
     wait_for(lambda: page.replans > 0, what="the preview")
     replan(page, page.field("Width"), "5 mm")
+    screenshot("%s-reopened" % version())
     task_button(panel, Cancel).click()
     wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
     assert ops(job) == [op]  # an existing op stays on Cancel
@@ -281,6 +283,7 @@ def test_only_turned_faces_can_be_picked(shop):
     box = doc.addObject("Part::Box", "Block")
     doc.recompute()
     assert not any(gate.allow(doc, box, "Face%d" % (i + 1)) for i in range(6) if i not in (4, 5))
+    screenshot("%s-selection-gate" % version())
 
 
 def test_a_blade_wider_than_the_groove_is_shown_on_the_tool_page(shop):
@@ -295,6 +298,9 @@ def test_a_blade_wider_than_the_groove_is_shown_on_the_tool_page(shop):
     assert page.field("ToolWidth").property("grooveInvalid") is True
     assert page.field("Width").property("grooveInvalid") is True
     assert not task_button(panel, Ok).isEnabled()
+    if isinstance(panel.form, QtGui.QToolBox):  # show the tool page, as a user who opened it sees it
+        panel.form.setCurrentWidget(tool_page.form)
+    screenshot("%s-blade-too-wide" % version())
     replan(page, page.field("Width"), "6 mm")
     assert page.error is None and task_button(panel, Ok).isEnabled()
     task_button(panel, Ok).click()
