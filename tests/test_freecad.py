@@ -1,12 +1,17 @@
-"""The FreeCAD-level tests (tests/freecad/), run inside each FreeCAD.
+"""The FreeCAD-level tests (tests/freecad/) and the GUI tests
+(tests/freecad_gui/), run inside each FreeCAD.
 
 For every FreeCAD that `scripts/freecad-roots` provides (1.1 and 1.0: Debian
 sid and trixie roots, or the host's own freecadcmd) this runs
 tests/freecad/run_suite.py under `freecadcmd`, with a directory shared with
 the run: the host writes the seed CYCLE93 moves there (the FreeCAD side
 compares its own expansion with them) and the run writes its JSON result
-there. A FreeCAD that is not available skips, with how to get it; under
-CI=true it fails.
+there. The GUI tests run in FreeCAD's GUI on a virtual X screen
+(`xvfb-run freecad -M <checkout> tests/freecad_gui/start.py`, the same
+runner in its GUI mode); their screenshots go to out/gui-screenshots/.
+A FreeCAD that is not available skips, with how to get it; under CI=true it
+fails. (A host FreeCAD used instead of a root needs `freecad` and
+`xvfb-run` too for the GUI tests.)
 """
 
 import ast

@@ -153,7 +153,9 @@ def _freecad_groove_run_suite():
     return status
 
 
-if __import__("os").environ.get("FREECAD_GROOVE_SUITE", "") == "gui":
+import os as _os  # noqa: E402
+
+if _os.environ.get("FREECAD_GROOVE_SUITE", "") == "gui":
     # After the main window is up, from inside the event loop the tests drive.
     from PySide import QtCore as _QtCore
 
