@@ -281,6 +281,7 @@ class GroovePlan:
     link      G0 moves [(x or None, z or None)] from the previous groove's start
               point (for the first groove: from wherever the tool is) to ``start``
     moves     the engine's expansion of ``cycle`` from ``start``
+    geometry  ``cycle.geometry(settings)``: the groove's profile (the preview draws it)
     """
 
     face: object
@@ -292,6 +293,7 @@ class GroovePlan:
     start_on: str
     link: list = field(default_factory=list)
     moves: list = field(default_factory=list)
+    geometry: object = None
 
 
 class SafeEnvelope:
@@ -582,7 +584,7 @@ class ObjectGroove(PathOp.ObjectOp):
                 _check_on_face(face, geo, index, position)
                 start, start_on, moves = _start_and_moves(face, geo, call, settings, env, feed, index)
                 link = env.link(prev, prev_on, (start.x, start.z), start_on)
-                plans.append(GroovePlan(face, index, position, call, settings, start, start_on, link, moves))
+                plans.append(GroovePlan(face, index, position, call, settings, start, start_on, link, moves, geo))
                 prev, prev_on = (start.x, start.z), start_on
         return plans
 

@@ -24,7 +24,7 @@ def polylines(plans):
     sections, rapids, feeds = [], [], []
     prev_start = (None, None)  # each link starts at the previous groove's start point
     for p in plans:
-        region = [(x, 0.0, z) for x, z in p.cycle.geometry(p.settings).region_world()]
+        region = [(x, 0.0, z) for x, z in p.geometry.region_world()]
         if region:
             sections.append(region + [region[0]])
         # The first link starts wherever the tool is: drawn from its first known point.

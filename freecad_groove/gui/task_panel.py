@@ -420,18 +420,21 @@ class GroovePage(PathOpGui.TaskPanelPage):
             error = translate(CONTEXT, "Internal error while planning the groove: {0}").format(e)
         self.replans += 1
         self.plans = plans
-        self._show_angc(obj)
+        self._show_angc(obj, plans)
         if self.preview is None:
             view = FreeCADGui.ActiveDocument.ActiveView if FreeCADGui.ActiveDocument else None
             self.preview = preview.Preview(view if hasattr(view, "getSceneGraph") else None)
         self.preview.show(plans)
         self.set_error(error, invalid)
 
-    def _show_angc(self, obj):
-        try:
-            faces = obj.Proxy.groove_faces(obj)
-        except ValueError:
-            faces = []
+    def _show_angc(self, obj, plans):
+        if plans:
+            faces = [plans[0].face]
+        else:  # the values make no groove; the face may still have an angle
+            try:
+                faces = obj.Proxy.groove_faces(obj)
+            except ValueError:
+                faces = []
         if faces:
             text = FreeCAD.Units.Quantity(faces[0].angc, FreeCAD.Units.Angle).UserString
         else:

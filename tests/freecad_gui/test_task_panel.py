@@ -155,7 +155,7 @@ def test_groove_made_in_the_panel(shop):
     grooved = doc.addObject("Part::Feature", "Grooved")
     shape = model.Shape
     for plan in op.Proxy.plan(op):
-        points = [FreeCAD.Vector(x, 0, z) for x, z in plan.cycle.geometry(plan.settings).region_world()]
+        points = [FreeCAD.Vector(x, 0, z) for x, z in plan.geometry.region_world()]
         section = Part.Face(Part.makePolygon(points + points[:1]))
         shape = shape.cut(section.revolve(FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(0, 0, 1), 360))
     grooved.Shape = shape
