@@ -16,6 +16,13 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
+# The example programs in examples/ (one per control) and their dialects.
+EXAMPLES = {
+    "seed_cycle93.mpf": "sinumerik",
+    "ab9_g77.nc": "ab9",
+    "fanuc_g75.nc": "fanuc",
+    "haas_g75.nc": "haas",
+}
 for path in (ROOT, HERE):
     if path not in sys.path:
         sys.path.insert(0, path)

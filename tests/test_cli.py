@@ -13,16 +13,10 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from conftest import EXAMPLES, ROOT
 from freecad_groove import cli
 from freecad_groove.engine.program import translate_program
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-EXAMPLES = {
-    "seed_cycle93.mpf": "sinumerik",
-    "ab9_g77.nc": "ab9",
-    "fanuc_g75.nc": "fanuc",
-    "haas_g75.nc": "haas",
-}
 SEED = os.path.join(ROOT, "examples", "seed_cycle93.mpf")
 ERROR_LINE = re.compile(r"^(?P<name>[^\n]*):(?P<line>\d+): (?P<message>[^\n]+)\n\Z")
 

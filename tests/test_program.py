@@ -9,6 +9,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from conftest import EXAMPLES, ROOT
 from freecad_groove.engine.errors import ProgramError
 from freecad_groove.engine.moves import RAPID, MachineState
 from freecad_groove.engine.program import (
@@ -19,13 +20,6 @@ from freecad_groove.engine.program import (
 )
 from freecad_groove.engine.settings import DEFAULT_SETTINGS, Settings
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-EXAMPLES = {
-    "seed_cycle93.mpf": "sinumerik",
-    "ab9_g77.nc": "ab9",
-    "fanuc_g75.nc": "fanuc",
-    "haas_g75.nc": "haas",
-}
 LINUXCNC_HEAD = ["G18 G7 G21 G90 G91.1 G40", "(PROGRAM: %s program, cycles expanded for linuxcnc by freecad-groove)"]
 
 
