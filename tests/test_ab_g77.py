@@ -14,22 +14,10 @@ from hypothesis import given, settings as hsettings, strategies as st
 
 from freecad_groove.engine import ab_g77
 from freecad_groove.engine.ab_g77 import G76, G77
-from freecad_groove.engine.errors import CycleError
 from freecad_groove.engine.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
-from freecad_groove.engine.moves import FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID, MachineState
+from freecad_groove.engine.moves import FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, MachineState
 from freecad_groove.engine.settings import Settings
-
-R, F = RAPID, FEED
-
-
-def moves_of(moves):
-    """Moves as (kind, x, z, f) with float noise rounded off, for exact comparison."""
-    assert all(m.p == 0 for m in moves)
-    return [(m.kind, round(m.x, 9), round(m.z, 9), m.f) for m in moves]
-
-
-def state(x, z, feed=0.1, **kw):
-    return MachineState(x=x, z=z, feed=feed, **kw)
+from pecking_helpers import F, R, moves_of, raises, state
 
 
 # ---------------------------------------------------------------- G77 expansions
@@ -247,14 +235,6 @@ def test_g76_incremental_radius_mode():
 
 # ---------------------------------------------------------------- validation
 
-
-def raises(call, *fragments):
-    with pytest.raises(CycleError) as info:
-        call()
-    text = str(info.value)
-    for fragment in fragments:
-        assert fragment in text, text
-    return info.value
 
 
 @pytest.mark.parametrize(

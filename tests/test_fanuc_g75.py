@@ -10,30 +10,10 @@ shortened); the cycle ends at its start point. Tuples are (kind, x radius, z, f)
 import pytest
 from hypothesis import given, strategies as st
 
-from freecad_groove.engine.errors import CycleError
 from freecad_groove.engine.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
-from freecad_groove.engine.moves import FEED, MINUS_X, MINUS_Z, PLUS_X, RAPID, MachineState
+from freecad_groove.engine.moves import MINUS_X, MINUS_Z, PLUS_X
 from freecad_groove.engine.settings import Settings
-
-R, F = RAPID, FEED
-
-
-def moves_of(moves):
-    assert all(m.p == 0 for m in moves)
-    return [(m.kind, round(m.x, 9), round(m.z, 9), m.f) for m in moves]
-
-
-def state(x, z, feed=0.1, **kw):
-    return MachineState(x=x, z=z, feed=feed, **kw)
-
-
-def raises(call, *fragments):
-    with pytest.raises(CycleError) as info:
-        call()
-    text = str(info.value)
-    for fragment in fragments:
-        assert fragment in text, text
-    return info.value
+from pecking_helpers import F, R, moves_of, raises, state
 
 
 # ---------------------------------------------------------------- Fanuc G75
