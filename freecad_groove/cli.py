@@ -4,7 +4,7 @@
     python3 -m freecad_groove emit cycle93 --axfa 35 --axsa 60 ...
 
 Thin layer: argument parsing and error reporting; the work is done by
-freecad_groove.engine (program.translate_program, dialects.write_program and
+freecad_groove.engine (program.translate_program, targets.write_program and
 the cycle classes).
 
 Errors: an invalid cycle or a line the reader cannot translate prints exactly
@@ -407,15 +407,15 @@ def _native_text(args):
 
 
 def _emit(args):
-    from .engine import dialects
+    from .engine import targets
     from .engine.errors import CycleError, ProgramError
-    from .engine.program import cycle_class
+    from .engine.registry import cycle_for
 
     title, dialect, code, helps = _CYCLES[args.cycle_name]
     settings = _settings(args)
     text = _native_text(args)
     try:
-        cls = cycle_class(dialect, code)
+        cls = cycle_for(dialect, code or "CYCLE93")
         model = cls.parse(text)
         model.validate(settings)
         if not args.expand:
@@ -428,7 +428,7 @@ def _emit(args):
         state.feed = args.feed
         state.incremental = args.incremental
         moves = model.expand(state, settings)
-        return dialects.write_program(
+        return targets.write_program(
             moves, args.to, state, title="%s: %s" % (title, " / ".join(text.split("\n"))), spindle=args.spindle
         )
     except CycleError as exc:

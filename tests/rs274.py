@@ -220,7 +220,7 @@ def written_moves(moves, metric=True):
     """The moves as the LinuxCNC writer puts them on paper: a move whose written
     X and Z equal the previous ones is dropped (it does not move the tool), so
     the list compares one to one with rs274's canonical moves."""
-    from freecad_groove.engine.dialects import Writer
+    from freecad_groove.engine.targets import Writer
     from freecad_groove.engine.moves import DWELL
 
     w = Writer("linuxcnc", metric)

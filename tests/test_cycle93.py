@@ -8,7 +8,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
-from freecad_groove.engine.cycle93 import Cycle93
+from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.moves import DWELL, FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID
 
 SEED_CALL = "CYCLE93(35, 60, 30, 25, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)"

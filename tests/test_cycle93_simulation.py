@@ -14,8 +14,8 @@ from shapely.geometry import Polygon
 
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
 from freecad_groove.engine import simulate as sim
-from freecad_groove.engine.cycle93 import Cycle93
-from freecad_groove.engine.dialects import write_program
+from freecad_groove.engine.cycles.cycle93 import Cycle93
+from freecad_groove.engine.targets import write_program
 from rs274 import canonical_matches, require_rs274, run_rs274, written_moves
 
 SEED_CALL = "CYCLE93(35, 60, 30, 25, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)"

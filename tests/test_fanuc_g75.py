@@ -10,7 +10,7 @@ shortened); the cycle ends at its start point. Tuples are (kind, x radius, z, f)
 import pytest
 from hypothesis import given, strategies as st
 
-from freecad_groove.engine.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
+from freecad_groove.engine.cycles.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
 from freecad_groove.engine.moves import MINUS_X, MINUS_Z, PLUS_X
 from freecad_groove.engine.settings import Settings
 from pecking_helpers import F, R, moves_of, raises, state

@@ -621,7 +621,7 @@ def test_rs274_moves_equal_the_cycle_moves(dialect, before, call, after):
     are the cycle's own expand() moves (rounded to the written resolution)."""
     from rs274 import canonical_matches, written_moves
 
-    from freecad_groove.engine.program import cycle_class
+    from freecad_groove.engine.registry import cycle_for
 
     t = Translator(dialect)
     lines = (before + call + "\n" + after).split("\n")
@@ -631,7 +631,7 @@ def test_rs274_moves_equal_the_cycle_moves(dialect, before, call, after):
         t.line(line, number)
     out = t.result()
     name = "CYCLE93" if dialect == "sinumerik" else call.split()[0]
-    model = cycle_class(dialect, name).parse(call)
+    model = cycle_for(dialect, name).parse(call)
     moves = model.expand(state, DEFAULT_SETTINGS)
     canon = run_rs274_with_tools(out)
     first = [i for i, c in enumerate(canon) if c[0] == "G0"][0]  # the approach to the start point

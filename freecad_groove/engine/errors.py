@@ -1,17 +1,13 @@
-"""The one error type every cycle raises for bad input.
+"""The error types of the engine.
 
-A machinist must be able to act on the message alone, so it always names the
-cycle, the parameter, the value that was given and the rule it broke, plus the
-control's own alarm number where the manual has one.
+A machinist must be able to act on the message alone, so a CycleError always
+names the cycle, the parameter, the value that was given and the rule it
+broke, plus the control's own alarm number where the manual has one.
 """
 
+from typing import Optional
 
-def format_value(value):
-    """Write a number the way a G-code programmer would read it back."""
-    if isinstance(value, float):
-        text = ("%.6f" % value).rstrip("0").rstrip(".")
-        return text if text not in ("-0", "") else "0"
-    return str(value)
+from .numbers import format_value
 
 
 class CycleError(ValueError):
@@ -22,7 +18,14 @@ class CycleError(ValueError):
     (the control's alarm number or None).
     """
 
-    def __init__(self, parameter, value, rule, alarm=None, cycle=None):
+    def __init__(
+        self,
+        parameter: str,
+        value: object,
+        rule: str,
+        alarm: Optional[int] = None,
+        cycle: Optional[str] = None,
+    ) -> None:
         self.parameter = parameter
         self.value = value
         self.rule = rule
@@ -31,7 +34,8 @@ class CycleError(ValueError):
         super().__init__(self.message)
 
     @property
-    def message(self):
+    def message(self) -> str:
+        """The one-line message: ``CYCLE PARAMETER=VALUE: rule (alarm N)``."""
         head = self.cycle + " " if self.cycle else ""
         if self.value is None:
             text = "%s%s: %s" % (head, self.parameter, self.rule)
@@ -41,17 +45,10 @@ class CycleError(ValueError):
             text += " (alarm %s)" % self.alarm
         return text
 
-    def with_cycle(self, cycle):
-        """The same error, tagged with the cycle name (for errors raised by shared helpers)."""
-        if self.cycle is None:
-            self.cycle = cycle
-            self.args = (self.message,)
-        return self
-
 
 class ProgramError(ValueError):
     """A line of an input program the reader cannot understand or translate."""
 
-    def __init__(self, message, line=None):
+    def __init__(self, message: str, line: Optional[int] = None) -> None:
         self.line = line
         super().__init__(message)

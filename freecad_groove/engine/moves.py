@@ -6,7 +6,7 @@ Diameter/radius programming, incremental words and dialect syntax are handled
 at the edges (the cycle parsers read them, the dialect writers write them).
 """
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import NamedTuple, Optional
 
 from .errors import CycleError
@@ -32,15 +32,15 @@ class Move(NamedTuple):
     p: float = 0.0
 
 
-def rapid(x, z):
+def rapid(x: float, z: float) -> Move:
     return Move(RAPID, x, z)
 
 
-def feed(x, z, f=None):
+def feed(x: float, z: float, f: Optional[float] = None) -> Move:
     return Move(FEED, x, z, f)
 
 
-def dwell(x, z, seconds):
+def dwell(x: float, z: float, seconds: float) -> Move:
     return Move(DWELL, x, z, None, seconds)
 
 
@@ -72,7 +72,8 @@ class GroovingTool:
     reference: str = REFERENCE_MINUS
     length: float = 60.0  # usable blade length behind the front edge (simulation, reach checks)
 
-    def validate(self, cycle=None):
+    def validate(self, cycle: Optional[str] = None) -> "GroovingTool":
+        """Refuse a blade no cycle can run with; returns self."""
         if not self.width > 0:
             raise CycleError("tool width", self.width, "must be greater than 0", cycle=cycle)
         if self.corner_radius < 0:
@@ -89,7 +90,7 @@ class GroovingTool:
         return self
 
     @property
-    def reference_offset(self):
+    def reference_offset(self) -> float:
         """Distance from the blade's minus-side edge to the reference corner."""
         return 0.0 if self.reference == REFERENCE_MINUS else self.width
 
@@ -108,12 +109,4 @@ class MachineState:
     diameter_mode: bool = True
     incremental: bool = False
     metric: bool = True
-    feed_per_rev: bool = False
-
-
-@dataclass
-class Expansion:
-    """What a cycle expands to: the moves, and the state after them."""
-
-    moves: list = field(default_factory=list)
-    plunge: str = MINUS_X
+    feed_per_rev: Optional[bool] = False

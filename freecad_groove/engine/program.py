@@ -5,7 +5,7 @@ modal state, and translate them with every grooving cycle expanded.
 
 ``dialect`` is the input: "sinumerik" (CYCLE93), "ab9" (G77/G76), "fanuc"
 (two-block G75/G74), "haas" (one-block G75/G74). ``target`` is "linuxcnc" or
-"fanuc" (see dialects.py). Anything the reader cannot translate faithfully
+"fanuc" (see targets.py). Anything the reader cannot translate faithfully
 raises errors.ProgramError with the 1-based line number in ``.line``; a cycle's
 CycleError becomes a ProgramError on the cycle's line with the cycle's message.
 
@@ -95,8 +95,10 @@ import re
 from dataclasses import dataclass, field
 from typing import NamedTuple, Optional
 
-from .dialects import MAX_LINE, Writer, comment, spec
+from .targets import MAX_LINE, Writer, comment, target_spec
 from .errors import CycleError, ProgramError
+from .numbers import ARC_IJK_TOLERANCE, ARC_R_TOLERANCE, MAX_DWELL_SECONDS, MAX_WORD, MM_PER_INCH
+from .registry import cycle_for
 from .moves import FEED, RAPID, MachineState
 from .settings import DEFAULT_SETTINGS
 
@@ -106,16 +108,11 @@ __all__ = [
     "Block",
     "ModalState",
     "Translator",
-    "cycle_class",
     "parse_block",
     "translate_program",
 ]
 
 DIALECTS = ("sinumerik", "ab9", "fanuc", "haas")
-INCH = 25.4
-ARC_IJK_TOLERANCE = 0.01  # mm per side: start and end radius of an I/K arc may differ by this (LinuxCNC
-# refuses between 0.02 and 0.05)
-ARC_R_TOLERANCE = 0.001  # mm: half the chord of an R arc may exceed R by this (LinuxCNC: 0.00127)
 
 # ---------------------------------------------------------------- tokenizer
 
@@ -362,24 +359,6 @@ _M_GROUPS = {0: "stop", 1: "stop", 2: "end", 30: "end", 3: "spindle", 4: "spindl
              8: "coolant", 9: "coolant"}
 
 
-def cycle_class(dialect, name):
-    """The cycle class for ``name`` ("CYCLE93", "G77", "G75" ...) in ``dialect``
-    (imported on first use, so the reader works while a cycle module is missing)."""
-    if dialect == "sinumerik":
-        from .cycle93 import Cycle93
-
-        return Cycle93
-    if dialect == "ab9":
-        from . import ab_g77
-
-        return {"G77": ab_g77.G77, "G76": ab_g77.G76}[name]
-    from . import fanuc_g75
-
-    if dialect == "fanuc":
-        return {"G75": fanuc_g75.FanucG75, "G74": fanuc_g75.FanucG74}[name]
-    return {"G75": fanuc_g75.HaasG75, "G74": fanuc_g75.HaasG74}[name]
-
-
 # ---------------------------------------------------------------- modal state
 
 
@@ -441,7 +420,7 @@ class Translator:
     def __init__(self, dialect, settings=DEFAULT_SETTINGS, target="linuxcnc", source_name="PROGRAM", start=None):
         if dialect not in DIALECTS:
             raise ValueError("unknown dialect %r (known: %s)" % (dialect, ", ".join(DIALECTS)))
-        spec(target)  # raises on an unknown target
+        target_spec(target)  # raises on an unknown target
         self.dialect = dialect
         self.settings = settings
         self.target = target
@@ -500,7 +479,7 @@ class Translator:
         return int(w.text.lstrip("+"))
 
     def _check_finite(self, value, w):
-        if not abs(value) < 1e6:
+        if not abs(value) < MAX_WORD:
             self._fail("%s%s is out of range" % (w.letter, w.text))
 
     def _not_ambiguous(self, *names, why):
@@ -532,7 +511,7 @@ class Translator:
                 exc.line = number
             raise
         except CycleError as exc:
-            raise ProgramError(exc.message if hasattr(exc, "message") else str(exc), number) from exc
+            raise ProgramError(exc.message, number) from exc
         except Exception as exc:  # a bug, reported on the line that triggered it
             raise ProgramError("internal error (%s: %s)" % (type(exc).__name__, exc), number) from exc
         if block.delete:
@@ -618,7 +597,7 @@ class Translator:
             else:
                 metric = arg
             if metric != s.metric:
-                factor = INCH if metric else 1.0 / INCH
+                factor = MM_PER_INCH if metric else 1.0 / MM_PER_INCH
                 if s.x is not None:
                     s.x *= factor
                 if s.z is not None:
@@ -704,7 +683,7 @@ class Translator:
                     % fw.text
                 )
             f = self._length(fw)
-            if not 0 < f < 1e6:
+            if not 0 < f < MAX_WORD:
                 self._fail("F%s: the feed must be greater than 0" % fw.text)
             s.feed = f
             self._defined.add("feed")
@@ -770,7 +749,7 @@ class Translator:
         speed = None
         if sw is not None:
             speed = sw.value
-            if not 0 <= speed < 1e6:
+            if not 0 <= speed < MAX_WORD:
                 self._fail("S%s is out of range" % sw.text)
         if _CLAMP in groups:  # Fanuc/Haas G50 S: spindle speed limit
             if sw is None or b.letters() - {"G", "S"} or len(b.all("G")) > 1:
@@ -787,7 +766,7 @@ class Translator:
                 out.append(comment("G50 S%s: spindle limit for G96" % self._s_text(speed)))
             return
         if lims is not None:
-            if not 0 < lims.value < 1e6:
+            if not 0 < lims.value < MAX_WORD:
                 self._fail("LIMS=%s is out of range" % lims.text)
             s.speed_limit = lims.value
             self._defined.add("speed_limit")
@@ -1009,7 +988,7 @@ class Translator:
 
         Tolerances (per side): I/K centre, the two radii differ by at most
         ARC_IJK_TOLERANCE; R, the chord is at most 2 R + ARC_R_TOLERANCE."""
-        scale = 1.0 if self.state.metric else 1.0 / INCH
+        scale = 1.0 if self.state.metric else 1.0 / MM_PER_INCH
         r_word = b.get("R") or b.get("CR")
         if r_word is not None:
             radius = float(self.writer.length_word(r_word.value))
@@ -1057,8 +1036,8 @@ class Translator:
                 seconds = w.value if "." in w.text else self._integer(w) / 1000.0
         if seconds is None:
             self._fail("G4 %s%s: not a dwell word of this control" % (w.letter, w.text))
-        if not 0 <= seconds <= 99999:
-            self._fail("G4 %s%s: the dwell must be 0 to 99999 s" % (w.letter, w.text))
+        if not 0 <= seconds <= MAX_DWELL_SECONDS:
+            self._fail("G4 %s%s: the dwell must be 0 to %g s" % (w.letter, w.text, MAX_DWELL_SECONDS))
         self._emit(self._words_line(b, [self.writer.dwell(seconds)]))
 
     def _cycle_block(self, b, groups):
@@ -1109,7 +1088,7 @@ class Translator:
             self._not_ambiguous("retract_e", why="%s R(e)" % name)
             text = "%s R%s\n%s" % (name, s.retract_e.text, text)
 
-        cls = cycle_class(d, name)
+        cls = cycle_for(d, name)
         try:  # the call itself first: its own errors are the most useful
             model = cls.parse(text)
             model.validate(self.settings)

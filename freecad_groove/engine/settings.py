@@ -5,6 +5,7 @@ leaves it open; change them here, on the command line or in a post's options.
 """
 
 from dataclasses import dataclass, field, replace
+from typing import Optional
 
 from .moves import GroovingTool
 
@@ -17,7 +18,7 @@ class Settings:
 
     # Peck retract "e" of Allen-Bradley G77/G76 (AMP parameter) and of Haas
     # G75/G74 (setting 22 style), per side. None: 0.5 mm or 0.02 in.
-    peck_retract: float = None
+    peck_retract: Optional[float] = None
 
     # CYCLE93: AXFA, DEPG, FAL1, FAL2 read as diameters (840D with DIAMON)
     # instead of radius values (the seed manual).
@@ -36,12 +37,16 @@ class Settings:
     # when the cycle itself has no retract parameter (per side).
     clearance: float = 1.0
 
-    def retract_e(self, metric=True):
+    def retract_e(self, metric: bool = True) -> float:
+        """The peck retract e in the program's units."""
         if self.peck_retract is not None:
             return self.peck_retract
         return 0.5 if metric else 0.02
 
-    def with_tool(self, width=None, corner_radius=None, reference=None):
+    def with_tool(
+        self, width: Optional[float] = None, corner_radius: Optional[float] = None, reference: Optional[str] = None
+    ) -> "Settings":
+        """These settings with the tool's given fields replaced."""
         tool = self.tool
         tool = replace(
             tool,

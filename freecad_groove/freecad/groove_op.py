@@ -68,26 +68,26 @@ import PathScripts.PathUtils as PathUtils
 
 from .. import hooks
 from ..engine import CycleError, GroovingTool, MachineState, Settings
-from ..engine.cycle93 import ALARM_WIDTH, DEFAULT_VRT_MM, Cycle93
-from ..engine.errors import format_value
+from ..engine.cycles.cycle93 import ALARM_WIDTH, DEFAULT_VRT_MM, Cycle93
 from ..engine.moves import DWELL, FEED, RAPID
+from ..engine.numbers import format_value
 from .faces import analyse_face, element_name
+from .groove_properties import (  # noqa: F401 - error_properties and the tables are this module's API too
+    CHAMFER_MEASURES,
+    DERIVED,
+    MAX_GROOVES,
+    PROPERTIES,
+    PROPERTY_NAMES,
+    PROPERTY_TYPES,
+    error_properties,
+)
+from .units import feed_mm_per_min, length_mm
 
-QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
-
-CORNER_TYPES = ["None", "Radius", "Chamfer"]
-CHAMFER_MEASURES = ["Chamfer length (CHF)", "Leg length (CHR)"]
-REFERENCE_CORNERS = ["minus", "plus"]
-MAX_GROOVES = 10000
 TESSELLATION = 0.01  # mm: deflection used to find the model's largest radius
 HIT_LENGTH = 1e-6  # mm of a rapid inside a solid that counts as a collision
 
 # TYP units digit for "right" grooves: (longitudinal, external) -> TYP
 TYP_RIGHT = {(True, True): 5, (True, False): 7, (False, True): 6, (False, False): 8}
-
-
-def _tip(text):
-    return QT_TRANSLATE_NOOP("App::Property", text)
 
 
 class GrooveInputError(ValueError):
@@ -97,29 +97,6 @@ class GrooveInputError(ValueError):
     def __init__(self, message, properties=()):
         super().__init__(message)
         self.properties = tuple(properties)
-
-
-# CYCLE93 parameter (CycleError.parameter, split at "/") -> the op property it comes from
-CYCLE93_PROPERTIES = {
-    "WIDG": "Width", "DEPG": "Depth", "ANGC": "Base", "ANG1": "FlankAngle1", "ANG2": "FlankAngle2",
-    "RCO1": "EdgeCorner1", "RCO2": "EdgeCorner2", "RCI1": "BaseCorner1", "RCI2": "BaseCorner2",
-    "FAL1": "BaseAllowance", "FAL2": "FlankAllowance", "IDEP": "Infeed", "DWT": "Dwell",
-    "VRT": "Retract", "tool width": "ToolWidth", "TYP": "ChamferMeasure",
-}
-
-
-def error_properties(error):
-    """The op properties an error from plan() is about: () when it names none."""
-    props = getattr(error, "properties", None)
-    if props is not None:
-        return tuple(props)
-    parameter = getattr(error, "parameter", None)  # a CycleError
-    if parameter is None:
-        return ()
-    props = tuple(CYCLE93_PROPERTIES[p] for p in str(parameter).split("/") if p in CYCLE93_PROPERTIES)
-    if props == ("Width",) and getattr(error, "alarm", None) == ALARM_WIDTH:
-        props += ("ToolWidth",)  # narrower than the blade: either may be wrong
-    return props
 
 
 class _WithValues:
@@ -143,83 +120,9 @@ def document_object(obj):
     return obj._obj if isinstance(obj, _WithValues) else obj
 
 
-_EDGE1 = "1 = the groove's start edge: its +Z edge (longitudinal grooves) or its outer edge (face grooves)"
-_CORNER_SIZE = "Size of the %s %s (RC%s%s): the radius, or the chamfer measured as ChamferMeasure says. " + _EDGE1 + "."
-_CORNER_TYPE = "What the %s %s gets: None (sharp), Radius or Chamfer (the size is %s)."
-
-# (type, name, group, tooltip, default); enumerations: default = the list, first entry selected.
-PROPERTIES = (
-    ("App::PropertyLength", "Position", "Groove", _tip(
-        "Where the groove starts: distance from the face's +Z end along Z to the groove's +Z edge "
-        "(cylinders, cones), or from the face's outer edge toward the axis to the groove's outer edge "
-        "(planes, steep cones). Sets AXSA/AXFA."), 0.0),
-    ("App::PropertyLength", "Width", "Groove", _tip(
-        "Width of the groove base along the groove's own axis (WIDG); at least the tool width."), 4.0),
-    ("App::PropertyLength", "Depth", "Groove", _tip(
-        "Depth of the groove from the face, along the plunge axis (DEPG, a radius value for longitudinal grooves)."), 2.0),
-    ("App::PropertyAngle", "FlankAngle1", "Groove", _tip(
-        "Angle of flank 1 from the plunge direction, opening outward (ANG1), 0 <= angle < 89.999. " + _EDGE1 + "."), 0.0),
-    ("App::PropertyAngle", "FlankAngle2", "Groove", _tip(
-        "Angle of flank 2 (the far edge) from the plunge direction, opening outward (ANG2), 0 <= angle < 89.999."), 0.0),
-    ("App::PropertyLength", "EdgeCorner1", "Groove", _tip(_CORNER_SIZE % ("part's edge at the top of", "flank 1", "O", "1")), 0.0),
-    ("App::PropertyEnumeration", "EdgeCorner1Type", "Groove", _tip(_CORNER_TYPE % ("edge at the top of", "flank 1", "EdgeCorner1")), CORNER_TYPES),
-    ("App::PropertyLength", "EdgeCorner2", "Groove", _tip(_CORNER_SIZE % ("part's edge at the top of", "flank 2", "O", "2")), 0.0),
-    ("App::PropertyEnumeration", "EdgeCorner2Type", "Groove", _tip(_CORNER_TYPE % ("edge at the top of", "flank 2", "EdgeCorner2")), CORNER_TYPES),
-    ("App::PropertyLength", "BaseCorner1", "Groove", _tip(_CORNER_SIZE % ("corner between the base and", "flank 1", "I", "1")), 0.0),
-    ("App::PropertyEnumeration", "BaseCorner1Type", "Groove", _tip(_CORNER_TYPE % ("corner between the base and", "flank 1", "BaseCorner1")), CORNER_TYPES),
-    ("App::PropertyLength", "BaseCorner2", "Groove", _tip(_CORNER_SIZE % ("corner between the base and", "flank 2", "I", "2")), 0.0),
-    ("App::PropertyEnumeration", "BaseCorner2Type", "Groove", _tip(_CORNER_TYPE % ("corner between the base and", "flank 2", "BaseCorner2")), CORNER_TYPES),
-    ("App::PropertyEnumeration", "ChamferMeasure", "Groove", _tip(
-        "How chamfer sizes are measured: the chamfer's own length (CHF, TYP 1..8) or the leg along each "
-        "element it cuts (CHR, TYP 11..18)."), CHAMFER_MEASURES),
-    ("App::PropertyLength", "BaseAllowance", "Groove", _tip(
-        "Finishing allowance left on the base by the roughing (FAL1)."), 0.0),
-    ("App::PropertyLength", "FlankAllowance", "Groove", _tip(
-        "Finishing allowance left on the flanks by the roughing, normal to them (FAL2)."), 0.0),
-    ("App::PropertyLength", "Infeed", "Groove", _tip(
-        "Largest infeed of one plunge step before a chip-breaking retract (IDEP); greater than 0."), 1.0),
-    ("App::PropertyFloat", "Dwell", "Groove", _tip(
-        "Dwell at the bottom of every roughing plunge, in seconds (DWT); 0 = none."), 0.0),
-    ("App::PropertyLength", "Retract", "Groove", _tip(
-        "Chip-breaking retract and clearance above the contour (VRT); 0 = 1 mm. Also the clearance "
-        "kept outside the model for the op's start points."), 0.0),
-    ("App::PropertyIntegerConstraint", "GrooveCount", "Groove", _tip(
-        "Number of equal grooves on each face (1 or more), Pitch apart."), (1, 1, MAX_GROOVES, 1)),
-    ("App::PropertyLength", "Pitch", "Groove", _tip(
-        "Distance from one groove to the next: toward -Z for longitudinal grooves, toward the axis for "
-        "face grooves. Must be greater than 0 when GrooveCount is more than 1."), 0.0),
-    ("App::PropertyLength", "ToolWidth", "Tool", _tip(
-        "Width of the blade's cutting edge; used when the tool controller's tool bit has no Width."), 3.0),
-    ("App::PropertyLength", "ToolCornerRadius", "Tool", _tip(
-        "Radius of the blade's two front corners; used when the tool bit has no CornerRadius."), 0.2),
-    ("App::PropertyEnumeration", "ReferenceCorner", "Tool", _tip(
-        "The blade corner the Path drives: minus = on the blade's -Z side (X plunges) or -X side "
-        "(Z plunges), plus = the other one."), REFERENCE_CORNERS),
-    ("App::PropertyString", "GrooveKind", "Derived", _tip(
-        "What the op made of the face(s): longitudinal/oblique/face, external/internal."), ""),
-    ("App::PropertyDistance", "AXFA", "Derived", _tip(
-        "CYCLE93 AXFA of the first groove: the start point's radius (X)."), 0.0),
-    ("App::PropertyDistance", "AXSA", "Derived", _tip(
-        "CYCLE93 AXSA of the first groove: the start point's Z."), 0.0),
-    ("App::PropertyAngle", "ANGC", "Derived", _tip(
-        "CYCLE93 ANGC: the contour's angle, counter-clockwise from +Z with X up."), 0.0),
-    ("App::PropertyInteger", "TYP", "Derived", _tip(
-        "CYCLE93 TYP: 5 longitudinal external, 7 longitudinal internal, 6 face external, 8 face "
-        "internal (all 'right'); +10 with CHR chamfers."), 0),
-)
-PROPERTY_NAMES = tuple(p[1] for p in PROPERTIES)
-PROPERTY_TYPES = {p[1]: p[0] for p in PROPERTIES}
-DERIVED = tuple(p[1] for p in PROPERTIES if p[2] == "Derived")
-DEFAULTS = {p[1]: (p[4][0] if isinstance(p[4], list) else p[4]) for p in PROPERTIES}
-
-
 def _comment(text):
     """A Path comment body: FreeCAD drops inner parentheses."""
     return "(%s)" % text.replace("(", "[").replace(")", "]")
-
-
-def _len(value):
-    return float(value.Value) if hasattr(value, "Value") else float(value)
 
 
 def _coaxial(surface):
@@ -492,7 +395,7 @@ class ObjectGroove(PathOp.ObjectOp):
             if isinstance(value, str) or isinstance(value, int):
                 if old != value:
                     setattr(obj, name, value)
-            elif abs(_len(old) - value) > 1e-12:
+            elif abs(length_mm(old) - value) > 1e-12:
                 setattr(obj, name, value)
 
     # -- deriving the grooves ---------------------------------------------------
@@ -527,9 +430,9 @@ class ObjectGroove(PathOp.ObjectOp):
         radius = obj.ToolCornerRadius.Value
         if bit is not None:
             if getattr(bit, "Width", None) is not None:
-                width = _len(bit.Width)
+                width = length_mm(bit.Width)
             if getattr(bit, "CornerRadius", None) is not None:
-                radius = _len(bit.CornerRadius)
+                radius = length_mm(bit.CornerRadius)
         return Settings(tool=GroovingTool(width=width, corner_radius=radius, reference=str(obj.ReferenceCorner)))
 
     def cycle(self, obj, face, index):
@@ -551,7 +454,7 @@ class ObjectGroove(PathOp.ObjectOp):
 
     def feed_mm_per_min(self, obj):
         tc = getattr(obj, "ToolController", None)
-        return tc.HorizFeed.Value * 60.0 if tc is not None else None
+        return feed_mm_per_min(tc.HorizFeed.Value) if tc is not None else None
 
     def plan(self, obj, faces=None):
         """Every groove the op cuts, in order: [GroovePlan]. Raises ValueError

@@ -94,12 +94,15 @@ import FreeCAD
 
 from .. import __version__
 from ..engine import CycleError, MachineState, ProgramError
-from ..engine.ab_g77 import G76, G77
-from ..engine.cycle93 import WIDTH_STEP_FACTOR
-from ..engine.dialects import Writer, _Spec, comment as paren_comment
-from ..engine.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
+from ..engine.cycles.ab_g77 import G76, G77
+from ..engine.cycles.cycle93 import WIDTH_STEP_FACTOR
+from ..engine.targets import TargetSpec, Writer, comment as paren_comment
+from ..engine.cycles.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
 from ..engine.moves import DWELL, FEED, RAPID, REFERENCE_MINUS, REFERENCE_PLUS, Move
+from ..engine.numbers import ARC_IJK_TOLERANCE, MAX_DWELL_SECONDS
 from ..engine.output import write_atomically
+from .groove_properties import describe_cycle93_parameter
+from .units import feed_mm_per_min
 
 __all__ = ["CONTROLS", "PostError", "export", "make_parser", "tooltip", "groove_op_of"]
 
@@ -160,9 +163,6 @@ class Control:
 
     def end(self, opts):
         return [self.m(30)]
-
-    def x_mode_codes(self, opts):
-        return None
 
 
 class Sinumerik(Control):
@@ -367,7 +367,7 @@ def parse_options(name, argstring):
 
 
 class LatheWriter(Writer):
-    """dialects.Writer with a control's codes, dwell, precision and X mode.
+    """targets.Writer with a control's codes, dwell, precision and X mode.
 
     ``move`` writes single-axis and partial moves (the op's link rapids, other
     ops' Paths), ``arc`` arcs; ``write`` (the engine's move lists) is the
@@ -377,8 +377,8 @@ class LatheWriter(Writer):
         self.control = control
         self.diameter = diameter
         super().__init__("linuxcnc", True, False)
-        self.spec = _Spec(control.name, dict(control.codes), precision, precision, {True: "G21", False: "G20"},
-                          {False: "G94", True: "G95"}, "M2", False)
+        self.spec = TargetSpec(control.name, dict(control.codes), precision, precision, {True: "G21", False: "G20"},
+                               {False: "G94", True: "G95"}, "M2", False)
         self.set_units(True)
 
     def x_word(self, radius):
@@ -390,8 +390,8 @@ class LatheWriter(Writer):
         return super().write(moves, prefix)
 
     def dwell(self, seconds):
-        if not 0 <= seconds <= 99999.0:
-            raise ProgramError("dwell of %r s cannot be written (0 to 99999 s)" % (seconds,))
+        if not 0 <= seconds <= MAX_DWELL_SECONDS:
+            raise ProgramError("dwell of %r s cannot be written (0 to %g s)" % (seconds, MAX_DWELL_SECONDS))
         return self.control.dwell(seconds)
 
     def forget(self, position=True, motion=True, feed=True):
@@ -456,10 +456,6 @@ class LatheWriter(Writer):
 # ----------------------------------------------------------------------------- FreeCAD objects
 
 
-def _len(value):
-    return float(value.Value) if hasattr(value, "Value") else float(value)
-
-
 def _is_groove_op(obj):
     proxy = getattr(obj, "Proxy", None)
     return proxy is not None and hasattr(proxy, "plan") and hasattr(proxy, "cycles") and hasattr(obj, "GrooveCount")
@@ -514,27 +510,19 @@ def _job_of(objects):
     return None
 
 
-# CYCLE93 parameter (CycleError.parameter) -> the Groove op property that sets it
-CYCLE93_PROPERTIES = {
-    "AXFA": "Position", "AXSA": "Position", "start point": "Position",
-    "WIDG": "Width", "DEPG": "Depth", "ANGC": "Base (the face's contour)",
-    "ANG1": "FlankAngle1", "ANG2": "FlankAngle2",
-    "RCO1": "EdgeCorner1", "RCO2": "EdgeCorner2", "RCI1": "BaseCorner1", "RCI2": "BaseCorner2",
-    "RCI1/RCI2": "BaseCorner1/BaseCorner2", "RCO1/RCI1": "EdgeCorner1/BaseCorner1",
-    "RCO2/RCI2": "EdgeCorner2/BaseCorner2",
-    "FAL1": "BaseAllowance", "FAL2": "FlankAllowance", "IDEP": "Infeed", "DWT": "Dwell", "VRT": "Retract",
-    "TYP": "ChamferMeasure", "tool width": "ToolWidth (or the tool bit's Width)",
-    "tool corner radius": "ToolCornerRadius (or the tool bit's CornerRadius)",
-}
 # pecking word -> what the op sets it from
 PECKING_PROPERTIES = {"I": "Infeed", "K": "Infeed", "P": "Infeed", "Q": "Infeed", "X": "Depth", "Z": "Depth",
                       "F": "ToolController HorizFeed", "e": "Retract", "R(e)": "Retract"}
 
 
-def _cycle_error(label, exc, table=CYCLE93_PROPERTIES):
-    prop = table.get(exc.parameter)
-    parameter = prop if prop else None
-    return PostError(exc.message, op=label, parameter=parameter)
+def _cycle_error(label, exc, table=None):
+    """A PostError for a CycleError, naming the op property (pecking words:
+    ``table``; else the CYCLE93 parameter's property)."""
+    if table is None:
+        parameter = describe_cycle93_parameter(exc.parameter)
+    else:
+        parameter = table.get(exc.parameter)
+    return PostError(exc.message, op=label, parameter=parameter or None)
 
 
 # ----------------------------------------------------------------------------- the program
@@ -699,7 +687,7 @@ class Program:
                        % _fixed(params["Y"], 4))
             if letter == "G" and code in ("G0", "G1"):
                 kind = RAPID if code == "G0" else FEED
-                f = params["F"] * 60.0 if (kind == FEED and "F" in params) else None
+                f = feed_mm_per_min(params["F"]) if (kind == FEED and "F" in params) else None
                 if kind == FEED and f is not None and not f > 0:
                     refuse("feed F%s: must be greater than 0" % _fixed(params["F"], 6))
                 x, z = params.get("X"), params.get("Z")
@@ -718,7 +706,7 @@ class Program:
                 x = params.get("X", self.x)
                 z = params.get("Z", self.z)
                 i, k = params.get("I", 0.0), params.get("K", 0.0)
-                f = params["F"] * 60.0 if "F" in params else None
+                f = feed_mm_per_min(params["F"]) if "F" in params else None
                 radius = None
                 if self.c.name == "sinumerik":
                     radius = self._cr(code, self.x, self.z, x, z, i, k, refuse)
@@ -773,7 +761,7 @@ class Program:
         cx, cz = x0 + i, z0 + k
         r = math.hypot(i, k)
         r1 = math.hypot(x1 - cx, z1 - cz)
-        if r < TOL or abs(r - r1) > 0.01:
+        if r < TOL or abs(r - r1) > ARC_IJK_TOLERANCE:
             refuse("the arc's end is not on its circle (radius %.4f at the start, %.4f at the end)" % (r, r1))
         if math.hypot(x1 - x0, z1 - z0) < TOL:
             refuse("a full circle cannot be written with CR=")
@@ -831,7 +819,7 @@ class GrooveOutput:
         tc = getattr(self.op, "ToolController", None)
         if tc is None:
             raise PostError("is not set: the grooves' feed comes from it", op=self.label, parameter="ToolController")
-        feed = tc.HorizFeed.Value * 60.0
+        feed = feed_mm_per_min(tc.HorizFeed.Value)
         if not feed > 0:
             raise PostError("is 0: the grooves need a feed", op=self.label, parameter="ToolController HorizFeed")
         self.feed = feed

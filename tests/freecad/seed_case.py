@@ -6,7 +6,7 @@ FreeCAD) expands the same call again and compares.
 """
 
 from freecad_groove.engine import GroovingTool, MachineState, Settings
-from freecad_groove.engine.cycle93 import Cycle93
+from freecad_groove.engine.cycles.cycle93 import Cycle93
 
 SEED_CALL = "CYCLE93(35, 60, 30, 25, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)"
 START = {"x": 40.0, "z": 65.0}  # N30 G00 X80 Z65: x is a radius

@@ -37,9 +37,9 @@ import Path.Main.Job as PathJob
 import pytest
 
 from freecad_groove.engine import GroovingTool, Settings
-from freecad_groove.engine.ab_g77 import G76, G77
-from freecad_groove.engine.cycle93 import Cycle93
-from freecad_groove.engine.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
+from freecad_groove.engine.cycles.ab_g77 import G76, G77
+from freecad_groove.engine.cycles.cycle93 import Cycle93
+from freecad_groove.engine.cycles.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
 from freecad_groove.engine.moves import DWELL, FEED, RAPID
 from freecad_groove.engine.program import translate_program
 from freecad_groove.freecad import posts, registration

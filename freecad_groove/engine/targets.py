@@ -1,6 +1,7 @@
-"""Writers of expanded output: moves.Move lists to G-code text.
+"""Output targets: the writers of expanded output, moves.Move lists to G-code text.
 
-Two targets:
+(A *target* is the control the output is written for; the *input control* a
+program is read from is the reader's business.) Two targets:
 
 ``"linuxcnc"``  LinuxCNC in lathe use. Header ``G18 G7 G21 G90 G91.1 G40 G94``
                 (G20 for inch, G95 for feed per revolution): XZ plane, X words
@@ -40,40 +41,49 @@ Choices (the manuals leave them open):
 """
 
 import re
+from dataclasses import dataclass
+from typing import Dict, Iterable, List, Optional
 
 from .errors import ProgramError
-from .moves import DWELL, FEED, RAPID
+from .moves import DWELL, FEED, RAPID, MachineState, Move
+from .numbers import MAX_DWELL_SECONDS, MAX_WORD, format_decimal
 
 __all__ = [
     "TARGETS",
+    "TargetSpec",
     "Writer",
     "write_moves",
     "write_program",
     "comment",
     "format_number",
+    "target_spec",
 ]
 
 TARGETS = ("linuxcnc", "fanuc")
-MAX_WORD = 1.0e6
 MAX_COMMENT = 140
 MAX_LINE = 250  # LinuxCNC refuses blocks longer than 252 characters ("Command too long")
-MAX_DWELL = 99999.0  # seconds (Fanuc: P at most 8 digits of ms)
+FEED_DIGITS = 6
+DWELL_DIGITS = 3
 
 
-class _Spec:
-    def __init__(self, name, codes, digits_mm, digits_inch, units, feed_modes, end, dwell_ms):
-        self.name = name
-        self.codes = codes
-        self.digits_mm = digits_mm
-        self.digits_inch = digits_inch
-        self.units = units  # {metric: code}
-        self.feed_modes = feed_modes  # {feed_per_rev: code}
-        self.end = end
-        self.dwell_ms = dwell_ms
+@dataclass(frozen=True)
+class TargetSpec:
+    """What differs between output targets: codes, decimals, units and feed-mode
+    codes, the program end, the dwell word, the program frame."""
+
+    name: str
+    codes: Dict[str, str]  # move kind -> motion code
+    digits_mm: int
+    digits_inch: int
+    units: Dict[bool, str]  # metric -> code
+    feed_modes: Dict[bool, str]  # feed per revolution -> code
+    end: str
+    dwell_ms: bool  # dwell P in whole milliseconds (else seconds)
+    percent_frame: bool = False  # "%" lines, O number, G18 implied, units alone in their block
 
 
-_SPECS = {
-    "linuxcnc": _Spec(
+SPECS = {
+    "linuxcnc": TargetSpec(
         "linuxcnc",
         {RAPID: "G0", FEED: "G1", "G2": "G2", "G3": "G3"},
         4,
@@ -83,7 +93,7 @@ _SPECS = {
         "M2",
         False,
     ),
-    "fanuc": _Spec(
+    "fanuc": TargetSpec(
         "fanuc",
         {RAPID: "G00", FEED: "G01", "G2": "G02", "G3": "G03"},
         3,
@@ -92,36 +102,32 @@ _SPECS = {
         {False: "G98", True: "G99"},
         "M30",
         True,
+        percent_frame=True,
     ),
 }
 
-FEED_DIGITS = 6
 
-
-def spec(target):
+def target_spec(target: str) -> TargetSpec:
+    """The TargetSpec of ``target``; ValueError when unknown."""
     try:
-        return _SPECS[target]
+        return SPECS[target]
     except KeyError:
-        raise ValueError("unknown output dialect %r (known: %s)" % (target, ", ".join(TARGETS))) from None
+        raise ValueError("unknown output target %r (known: %s)" % (target, ", ".join(TARGETS))) from None
 
 
-def _number(fmt, value):
+def format_number(value: float, digits: int = 4) -> str:
+    """``value`` with at most ``digits`` decimals, a decimal point always, no ``-0``;
+    ProgramError for magnitudes of MAX_WORD and above and NaN."""
     if not -MAX_WORD < value < MAX_WORD:  # also refuses NaN
         raise ProgramError("value %r cannot be written (not a number below %g in magnitude)" % (value, MAX_WORD))
-    text = (fmt % value).rstrip("0")
-    return "0." if text == "-0." else text
-
-
-def format_number(value, digits=4):
-    """``value`` with at most ``digits`` decimals, a decimal point always, no ``-0``."""
-    return _number("%%.%df" % digits, value)
+    return format_decimal(value, digits)
 
 
 _ACTIVE_COMMENT = re.compile(r"(?i)\s*(?:[a-z_]+\s*,|logclose|logopen|logappend|probeopen|probeclose|py\b|abort\b)")
 _NOT_PRINTABLE = re.compile(r"[^\x20-\x7e]")
 
 
-def comment(text, limit=MAX_COMMENT):
+def comment(text: str, limit: int = MAX_COMMENT) -> str:
     """``(text)`` made safe for LinuxCNC and Fanuc (see the module notes); the
     text is cut to ``limit`` characters (ending in ``...``)."""
     text = _NOT_PRINTABLE.sub("?", text.replace("(", "").replace(")", "")).strip()
@@ -133,7 +139,7 @@ def comment(text, limit=MAX_COMMENT):
 
 
 class Writer:
-    """Writes moves for one output dialect, remembering what is modal in the output.
+    """Writes moves for one output target, remembering what is modal in the output.
 
     State (all of it as *written text*, None = unknown to the output program):
     ``motion`` (RAPID/FEED/"G2"/"G3"), ``x_text`` (diameter), ``z_text``, ``f_text``.
@@ -141,32 +147,44 @@ class Writer:
     output and the move has none (used by whole-program output).
     """
 
-    def __init__(self, target="linuxcnc", metric=True, feed_per_rev=None, x=None, z=None, feed=None, motion=None):
-        self.spec = spec(target)
+    def __init__(
+        self,
+        target: str = "linuxcnc",
+        metric: bool = True,
+        feed_per_rev: Optional[bool] = None,
+        x: Optional[float] = None,
+        z: Optional[float] = None,
+        feed: Optional[float] = None,
+        motion: Optional[str] = None,
+    ) -> None:
+        self.spec = target_spec(target)
         self.target = target
         self.feed_per_rev = feed_per_rev
         self.motion = motion
-        self.default_feed = None
+        self.default_feed: Optional[float] = None
         self.set_units(metric)
         self.sync(x, z, feed, motion)
 
     @classmethod
-    def from_state(cls, state, target="linuxcnc", motion=None):
+    def from_state(cls, state: MachineState, target: str = "linuxcnc", motion: Optional[str] = None) -> "Writer":
         """A writer whose output is already at ``state`` (position, feed, units)."""
         return cls(target, state.metric, state.feed_per_rev, state.x, state.z, state.feed, motion)
 
     # -- modal state ----------------------------------------------------------
 
-    def set_units(self, metric):
+    def set_units(self, metric: bool) -> None:
         """Units of the numbers from now on; the written position is forgotten."""
         self.metric = bool(metric)
-        digits = self.spec.digits_mm if self.metric else self.spec.digits_inch
-        self.digits = digits
-        self._cfmt = "%%.%df" % digits
-        self._ffmt = "%%.%df" % FEED_DIGITS
+        self.digits = self.spec.digits_mm if self.metric else self.spec.digits_inch
         self.x_text = self.z_text = self.f_text = None
 
-    def sync(self, x=None, z=None, feed=None, motion=None):
+    def sync(
+        self,
+        x: Optional[float] = None,
+        z: Optional[float] = None,
+        feed: Optional[float] = None,
+        motion: Optional[str] = None,
+    ) -> None:
         """The output is at radius ``x``, ``z`` with ``feed`` in force (None = unknown)."""
         self.x_text = None if x is None else self.x_word(x)
         self.z_text = None if z is None else self.z_word(z)
@@ -175,51 +193,58 @@ class Writer:
 
     # -- words ------------------------------------------------------------------
 
-    def x_word(self, radius):
+    def x_word(self, radius: float) -> str:
         """The X word text (a diameter) for a radius."""
-        return _number(self._cfmt, radius * 2.0)
+        return format_number(radius * 2.0, self.digits)
 
-    def z_word(self, z):
-        return _number(self._cfmt, z)
+    def z_word(self, z: float) -> str:
+        """The Z word text."""
+        return format_number(z, self.digits)
 
-    def length_word(self, value):
+    def length_word(self, value: float) -> str:
         """A length written as is (arc centre offsets I/K, radius R)."""
-        return _number(self._cfmt, value)
+        return format_number(value, self.digits)
 
-    def f_word(self, feed):
+    def f_word(self, feed: float) -> str:
+        """The F word text; ProgramError unless the feed is positive."""
         if not feed > 0:
             raise ProgramError("feed %r cannot be written (must be greater than 0)" % (feed,))
-        return _number(self._ffmt, feed)
+        return format_number(feed, FEED_DIGITS)
 
-    def number(self, value, digits=4):
+    def number(self, value: float, digits: int = 4) -> str:
+        """Any other number, with at most ``digits`` decimals."""
         return format_number(value, digits)
 
-    def code(self, kind):
+    def code(self, kind: str) -> str:
+        """The motion code of a move kind."""
         return self.spec.codes[kind]
 
-    def units_code(self, metric=None):
+    def units_code(self, metric: Optional[bool] = None) -> str:
+        """G21/G20 for ``metric`` (default: the writer's units)."""
         return self.spec.units[self.metric if metric is None else bool(metric)]
 
-    def feed_mode_code(self, feed_per_rev):
+    def feed_mode_code(self, feed_per_rev: bool) -> str:
+        """The code of feed per minute or per revolution."""
         return self.spec.feed_modes[bool(feed_per_rev)]
 
-    def dwell(self, seconds):
+    def dwell(self, seconds: float) -> str:
         """The dwell block for ``seconds``."""
-        if not 0 <= seconds <= MAX_DWELL:
-            raise ProgramError("dwell of %r s cannot be written (0 to %g s)" % (seconds, MAX_DWELL))
+        if not 0 <= seconds <= MAX_DWELL_SECONDS:
+            raise ProgramError("dwell of %r s cannot be written (0 to %g s)" % (seconds, MAX_DWELL_SECONDS))
         if self.spec.dwell_ms:
             return "G04 P%d" % int(round(seconds * 1000.0))
-        return "G4 P" + _number("%.3f", seconds)
+        return "G4 P" + format_number(seconds, DWELL_DIGITS)
 
     comment = staticmethod(comment)
 
     # -- blocks -------------------------------------------------------------------
 
-    def header(self, title=None, program_number=None):
+    def header(self, title: Optional[str] = None, program_number: Optional[int] = None) -> List[str]:
         """The lines that open a whole program (modes: G18, diameter X, units, feed mode)."""
         out = []
         s = self.spec
-        if s.name == "fanuc":
+        feed_mode = [] if self.feed_per_rev is None else [s.feed_modes[bool(self.feed_per_rev)]]
+        if s.percent_frame:
             out.append("%")
             if program_number is not None:
                 number = "O%04d" % int(program_number)
@@ -227,107 +252,90 @@ class Writer:
             elif title:
                 out.append(comment(title))
             out.append(s.units[self.metric])
-            modes = ["G40"]
-            if self.feed_per_rev is not None:
-                modes.append(s.feed_modes[bool(self.feed_per_rev)])
-            out.append(" ".join(modes))
+            out.append(" ".join(["G40"] + feed_mode))
         else:
-            modes = ["G18", "G7", s.units[self.metric], "G90", "G91.1", "G40"]
-            if self.feed_per_rev is not None:
-                modes.append(s.feed_modes[bool(self.feed_per_rev)])
-            out.append(" ".join(modes))
+            out.append(" ".join(["G18", "G7", s.units[self.metric], "G90", "G91.1", "G40"] + feed_mode))
             if title:
                 out.append(comment(title))
         return out
 
-    def footer(self):
+    def footer(self) -> List[str]:
         """The lines that end a whole program."""
-        if self.spec.name == "fanuc":
-            return ["M30", "%"]
-        return ["M2"]
+        return [self.spec.end, "%"] if self.spec.percent_frame else [self.spec.end]
 
-    def write(self, moves, prefix=""):
+    def _feed_text(self, kind: str, f: Optional[float], written: Optional[str]) -> Optional[str]:
+        """The F text a move writes (None: none), given the F text in force."""
+        if f is not None:
+            if not 0 < f < MAX_WORD:
+                raise ProgramError("feed %r cannot be written (must be greater than 0)" % (f,))
+            text = format_decimal(f, FEED_DIGITS)
+            return None if text == written else text
+        if kind == FEED and written is None:
+            if self.default_feed is None:
+                raise ProgramError("feed move with no feed rate (F) in force")
+            return self.f_word(self.default_feed)
+        return None
+
+    def write(self, moves: Iterable[Move], prefix: str = "") -> List[str]:
         """Lines for ``moves`` (moves.Move or equal tuples); updates the modal state.
 
         ``prefix`` is put in front of every line (``"/"`` for block delete).
         """
-        out = []
-        add = out.append
-        codes = self.spec.codes
-        cfmt = self._cfmt
-        ffmt = self._ffmt
-        lim = MAX_WORD
-        motion = self.motion
-        xt = self.x_text
-        zt = self.z_text
-        ft = self.f_text
-        try:
-            for kind, x, z, f, p in moves:
-                if kind == DWELL:
-                    add(prefix + self.dwell(p))
-                    continue
-                if not (-lim < x < lim and -lim < z < lim):
-                    raise ProgramError("move to X%r Z%r cannot be written (not a number below %g)" % (x * 2.0, z, lim))
-                words = []
-                t = (cfmt % (x * 2.0)).rstrip("0")
-                if t == "-0.":
-                    t = "0."
-                if t != xt:
-                    words.append("X" + t)
-                    xt = t
-                t = (cfmt % z).rstrip("0")
-                if t == "-0.":
-                    t = "0."
-                if t != zt:
-                    words.append("Z" + t)
-                    zt = t
-                if f is not None:
-                    if not 0 < f < lim:
-                        raise ProgramError("feed %r cannot be written (must be greater than 0)" % (f,))
-                    t = (ffmt % f).rstrip("0")
-                    if t != ft:
-                        fword = "F" + t
-                        ft = t
-                    else:
-                        fword = None
-                elif kind == FEED and ft is None:
-                    if self.default_feed is None:
-                        raise ProgramError("feed move with no feed rate (F) in force")
-                    ft = self.f_word(self.default_feed)
-                    fword = "F" + ft
-                else:
-                    fword = None
-                if words:
-                    if kind != motion:
-                        code = codes.get(kind)
-                        if code is None:
-                            raise ProgramError("move kind %r cannot be written" % (kind,))
-                        words.insert(0, code)
-                        motion = kind
-                    if fword:
-                        words.append(fword)
-                    add(prefix + " ".join(words))
-                elif fword:
-                    add(prefix + fword)
-        finally:
-            self.motion = motion
-            self.x_text = xt
-            self.z_text = zt
-            self.f_text = ft
+        out: List[str] = []
+        digits = self.digits
+        for move in moves:
+            kind, x, z, f, p = move
+            if kind == DWELL:
+                out.append(prefix + self.dwell(p))
+                continue
+            if not (-MAX_WORD < x < MAX_WORD and -MAX_WORD < z < MAX_WORD):
+                raise ProgramError("move to X%r Z%r cannot be written (not a number below %g)" % (x * 2.0, z,
+                                                                                                  MAX_WORD))
+            words = []
+            text = format_decimal(x * 2.0, digits)
+            if text != self.x_text:
+                words.append("X" + text)
+                self.x_text = text
+            text = format_decimal(z, digits)
+            if text != self.z_text:
+                words.append("Z" + text)
+                self.z_text = text
+            f_text = self._feed_text(kind, f, self.f_text)
+            if f_text is not None:
+                self.f_text = f_text
+            if words:
+                if kind != self.motion:
+                    code = self.spec.codes.get(kind)
+                    if code is None:
+                        raise ProgramError("move kind %r cannot be written" % (kind,))
+                    words.insert(0, code)
+                    self.motion = kind
+                if f_text is not None:
+                    words.append("F" + f_text)
+                out.append(prefix + " ".join(words))
+            elif f_text is not None:
+                out.append(prefix + "F" + f_text)
         return out
 
 
-def write_moves(moves, dialect, state, motion=None):
-    """Lines for ``moves`` in output ``dialect``, dropping the words ``state`` makes redundant.
+def write_moves(moves: Iterable[Move], target: str, state: MachineState, motion: Optional[str] = None) -> List[str]:
+    """Lines for ``moves`` for output ``target``, dropping the words ``state`` makes redundant.
 
     ``state`` is a moves.MachineState: the output is at state.x (radius), state.z
     with state.feed in force and state.metric units. ``motion`` is the motion
     (moves.RAPID / moves.FEED) in force, None when unknown.
     """
-    return Writer.from_state(state, dialect, motion).write(moves)
+    return Writer.from_state(state, target, motion).write(moves)
 
 
-def write_program(moves, dialect, state, title=None, program_number=None, spindle=None):
+def write_program(
+    moves: List[Move],
+    target: str,
+    state: MachineState,
+    title: Optional[str] = None,
+    program_number: Optional[int] = None,
+    spindle: Optional[float] = None,
+) -> str:
     """A whole program: header, a rapid to the start point, ``moves``, end.
 
     The start point is (state.x, state.z); the tool's position before the
@@ -336,22 +344,22 @@ def write_program(moves, dialect, state, title=None, program_number=None, spindl
     (rpm, optional) starts the spindle clockwise after the header (LinuxCNC
     refuses feed-per-revolution moves with the spindle stopped).
     """
-    writer = Writer(dialect, state.metric, state.feed_per_rev)
+    writer = Writer(target, state.metric, state.feed_per_rev)
     writer.default_feed = state.feed
     lines = writer.header(title, program_number)
-    if state.feed_per_rev and spindle is None and any(m[0] == FEED for m in moves):
+    if state.feed_per_rev and spindle is None and any(m.kind == FEED for m in moves):
         raise ProgramError("feed per revolution needs a spindle speed: the spindle would not turn")
     if spindle is not None:
         if not 0 < spindle < MAX_WORD:
             raise ProgramError("spindle speed %r cannot be written" % (spindle,))
         if spindle == int(spindle):
             text = "%d" % spindle
-        elif dialect == "fanuc":
+        elif target == "fanuc":
             raise ProgramError("spindle speed %r: a Fanuc S word is a whole number" % (spindle,))
         else:
-            text = _number("%.4f", spindle)
-        lines.append(("G97 S%s M03" if dialect == "fanuc" else "G97 S%s M3") % text)
-    lines.extend(writer.write([(RAPID, state.x, state.z, None, 0.0)]))
+            text = format_number(spindle, 4)
+        lines.append(("G97 S%s M03" if writer.spec.percent_frame else "G97 S%s M3") % text)
+    lines.extend(writer.write([Move(RAPID, state.x, state.z)]))
     lines.extend(writer.write(moves))
     lines.extend(writer.footer())
     return "\n".join(lines) + "\n"

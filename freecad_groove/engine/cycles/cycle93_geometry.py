@@ -1,72 +1,19 @@
-"""Siemens CYCLE93: grooving on a straight contour element.
+"""The geometry of a CYCLE93 groove and its expansion into moves.
 
-    CYCLE93(AXFA, AXSA, WIDG, DEPG, ANGC, ANG1, ANG2, RCO1, RCO2, RCI1, RCI2,
-            FAL1, FAL2, IDEP, DWT, TYP, VRT [, DN])
-
-(Siemens' own names: SPD, SPL, WIDG, DIAG, STA1, ANG1, ANG2, RCO1, RCO2, RCI1,
-RCI2, FAL1, FAL2, IDEP, DTB, VARI, _VRT, _DN.)
-
-Geometry, as this module reads the seed manual (choices marked *):
-- The contour is the straight line through the start point (AXSA, AXFA) at
-  ANGC to the longitudinal axis, ANGC measured counter-clockwise from +Z with
-  X up (so ANGC = 12 on an external groove is a cone whose diameter grows
-  toward +Z)*. The seed example's approach point X80 Z65 clears it.
-- TYP units digit: 1 longitudinal/external/left, 2 face/external/left,
-  3 longitudinal/internal/left, 4 face/internal/left, 5..8 the same "right".
-  Longitudinal: external plunges -X, internal +X; "left" puts the start point
-  on the groove's -Z edge (groove extends toward +Z), "right" on its +Z edge.
-  Face*: external plunges -Z (a face looking toward +Z), internal +Z; axes
-  swapped as for G76/G74: "left" extends the groove from AXFA toward +X,
-  "right" toward -X.
-- DEPG is the paraxial depth (along the plunge axis) from the contour to the
-  groove base, which runs parallel to the contour. WIDG is the width of the
-  base, measured along the groove's own axis (Z for longitudinal grooves), the
-  width the tool width is checked against*. The start point is the top of the
-  flank on the start side; flanks open outward by ANG1/ANG2 from the plunge
-  direction.
-- RCO1/RCO2 round (>0) or chamfer (<0) the part's edges at the top of the
-  flanks, RCI1/RCI2 the corners at the base. Chamfers are CHF (length of the
-  chamfer) for TYP 1..8 and CHR (leg along each element) for TYP 11..18.
-- FAL1 is kept on the base (paraxially), FAL2 on the flanks (normal to them).
-- AXFA, DEPG, FAL1 (longitudinal) and FAL2 (face) are radius values unless
-  Settings.cycle93_diameter_input says the control reads them as diameters.
-
-Expansion (the seed's four steps), driving the tool's reference corner:
-1+2. Paraxial plunges across the opening, equally spaced at most 95 % of
-  (tool width - 2 x corner radius) apart, from the start side*; each to the
-  roughing profile (final profile less the allowances) in equal infeeds of at
-  most IDEP, each followed by a rapid chip-breaking retract of VRT (0 = 1 mm)
-  and a feed back in; DWT dwell at the bottom; rapid retract to VRT above the
-  contour. Traverses run VRT above the contour, parallel to it.
-3. When flanks are angled, base corners rounded or the contour oblique, a
-  contour-parallel pass on the roughing profile from each edge toward the
-  groove removes the plunges' staircase.
-4. Finishing passes on the final profile from each edge to the groove centre,
-  already compensated for the corner radius (the path is the exact boundary
-  of where the blade may go), when there is an allowance or an edge radius.
-The cycle approaches along the longitudinal axis first for external grooves
-(the facing axis for internal ones), and returns to its start point the
-reverse way*.
+``GrooveGeometry`` is built from a validated call (``cycle93.Cycle93``): the
+groove frame, the final and roughing profiles with their corners, the exact
+envelope of where the blade may go, and the seed's four machining steps as
+moves of the blade's reference corner. The module notes of ``cycle93`` say
+how the seed manual is read.
 """
 
 import math
-import re
-from dataclasses import dataclass, fields
-from typing import ClassVar, Optional
+from typing import Optional
 
-from .envelope import Envelope, arc_points
-from .errors import CycleError, format_value
-from .moves import (
-    MINUS_X,
-    MINUS_Z,
-    PLUS_X,
-    PLUS_Z,
-    REFERENCE_PLUS,
-    dwell,
-    feed,
-    rapid,
-)
-from .settings import DEFAULT_SETTINGS
+from ..envelope import Envelope, arc_points
+from ..errors import CycleError
+from ..moves import REFERENCE_PLUS, dwell, feed, rapid
+from ..numbers import format_value
 
 NAME = "CYCLE93"
 PARAMS = (
@@ -84,98 +31,9 @@ PATH_TOLERANCE = 0.0002  # chord error allowed on contour passes and arcs
 EPS = 1e-9
 
 
-def _err(param, value, rule, alarm=None):
+def cycle93_error(param, value, rule, alarm=None):
     return CycleError(param, value, rule, alarm=alarm, cycle=NAME)
 
-
-@dataclass(frozen=True)
-class Cycle93:
-    """One CYCLE93 call, its parameters as programmed (None = left empty)."""
-
-    NAME: ClassVar[str] = NAME
-
-    axfa: Optional[float] = None
-    axsa: Optional[float] = None
-    widg: Optional[float] = None
-    depg: Optional[float] = None
-    angc: Optional[float] = None
-    ang1: Optional[float] = None
-    ang2: Optional[float] = None
-    rco1: Optional[float] = None
-    rco2: Optional[float] = None
-    rci1: Optional[float] = None
-    rci2: Optional[float] = None
-    fal1: Optional[float] = None
-    fal2: Optional[float] = None
-    idep: Optional[float] = None
-    dwt: Optional[float] = None
-    typ: Optional[int] = None
-    vrt: Optional[float] = None
-    dn: Optional[int] = None
-
-    # -- text ---------------------------------------------------------------
-    def emit(self):
-        values = [getattr(self, f.name) for f in fields(self)]
-        if values[-1] is None:
-            values = values[:-1]
-        return "CYCLE93(%s)" % ", ".join("" if v is None else format_value(v) for v in values)
-
-    @classmethod
-    def parse(cls, text):
-        m = re.search(r"CYCLE93\s*\((.*)\)", text, re.IGNORECASE)
-        if not m:
-            raise _err("call", text.strip(), "must read CYCLE93(AXFA, AXSA, ..., VRT)")
-        args = [a.strip() for a in m.group(1).split(",")]
-        if len(args) > len(PARAMS):
-            raise _err("call", len(args), "takes at most %d parameters" % len(PARAMS))
-        values = {}
-        for name, arg in zip(PARAMS, args):
-            if arg == "":
-                continue
-            try:
-                num = float(arg)
-            except ValueError:
-                raise _err(name, arg, "must be a number (variables and expressions are not evaluated)") from None
-            if not math.isfinite(num):
-                raise _err(name, arg, "must be a finite number")
-            if name in ("TYP", "DN"):
-                if num != int(num):
-                    raise _err(name, num, "must be a whole number")
-                num = int(num)
-            values[name.lower()] = num
-        return cls(**values)
-
-    # -- reading the parameters ---------------------------------------------
-    def value(self, name, default=0.0):
-        v = getattr(self, name.lower())
-        return default if v is None else v
-
-    def kind(self):
-        """(longitudinal, external, left, chamfers_as_chr) from TYP."""
-        typ = self.typ
-        if typ is None or typ not in set(range(1, 9)) | set(range(11, 19)):
-            raise _err("TYP", typ, "must be 1..8 or 11..18", ALARM_TYP)
-        unit = typ % 10
-        return unit in (1, 3, 5, 7), unit in (1, 2, 5, 6), unit <= 4, typ > 10
-
-    def validate(self, settings=DEFAULT_SETTINGS, metric=True):
-        self.geometry(settings, metric)
-        return self
-
-    def plunge_direction(self):
-        longitudinal, external, _left, _chr = self.kind()
-        if longitudinal:
-            return MINUS_X if external else PLUS_X
-        return MINUS_Z if external else PLUS_Z
-
-    def geometry(self, settings=DEFAULT_SETTINGS, metric=True):
-        """Validate and return the groove's GrooveGeometry."""
-        return GrooveGeometry(self, settings, metric)
-
-    # -- expansion ----------------------------------------------------------
-    def expand(self, state, settings=DEFAULT_SETTINGS):
-        geo = self.geometry(settings, state.metric)
-        return geo.expand(state.x, state.z)
 
 
 class Frame:
@@ -276,7 +134,7 @@ class GrooveGeometry:
         self.settings = settings
         self.metric = metric
         if not settings.tool.width > 0:
-            raise _err("tool width", settings.tool.width, "cutting edge width must be greater than 0", ALARM_WIDTH)
+            raise cycle93_error("tool width", settings.tool.width, "cutting edge width must be greater than 0", ALARM_WIDTH)
         tool = settings.tool.validate(NAME)
         self.tool = tool
         longitudinal, external, left, chr_mode = call.kind()
@@ -297,12 +155,12 @@ class GrooveGeometry:
         for name in ("AXFA", "AXSA", "WIDG", "DEPG"):
             v = getattr(call, name.lower())
             if v is None:
-                raise _err(name, None, "must be programmed")
+                raise cycle93_error(name, None, "must be programmed")
             p[name] = float(v)
         for name in ("ANGC", "ANG1", "ANG2", "RCO1", "RCO2", "RCI1", "RCI2", "FAL1", "FAL2", "DWT", "VRT"):
             p[name] = float(call.value(name))
         if call.idep is None:
-            raise _err("IDEP", None, "must be programmed in all cases")
+            raise cycle93_error("IDEP", None, "must be programmed in all cases")
         p["IDEP"] = float(call.idep)
         longitudinal = call.kind()[0]
         if settings.cycle93_diameter_input:
@@ -313,25 +171,25 @@ class GrooveGeometry:
             else:
                 p["FAL2"] /= 2
         if p["WIDG"] < 0:
-            raise _err("WIDG", call.widg, "must be entered without sign")
+            raise cycle93_error("WIDG", call.widg, "must be entered without sign")
         if p["WIDG"] < settings.tool.width - EPS:
-            raise _err("WIDG", call.widg, "groove is narrower than the tool width %s" % format_value(settings.tool.width), ALARM_WIDTH)
+            raise cycle93_error("WIDG", call.widg, "groove is narrower than the tool width %s" % format_value(settings.tool.width), ALARM_WIDTH)
         if p["DEPG"] <= 0:
-            raise _err("DEPG", call.depg, "must be greater than 0 (enter without sign)")
+            raise cycle93_error("DEPG", call.depg, "must be greater than 0 (enter without sign)")
         if not 0 <= p["ANGC"] <= 180:
-            raise _err("ANGC", call.angc, "must be in the range 0 <= ANGC <= 180 degrees")
+            raise cycle93_error("ANGC", call.angc, "must be in the range 0 <= ANGC <= 180 degrees")
         for name in ("ANG1", "ANG2"):
             if not 0 <= p[name] < MAX_FLANK_ANGLE:
-                raise _err(name, getattr(call, name.lower()), "must be in the range 0 <= %s < 89.999 degrees" % name)
+                raise cycle93_error(name, getattr(call, name.lower()), "must be in the range 0 <= %s < 89.999 degrees" % name)
         if p["IDEP"] <= 0:
-            raise _err("IDEP", call.idep, "must be greater than 0 (enter without sign)")
+            raise cycle93_error("IDEP", call.idep, "must be greater than 0 (enter without sign)")
         for name in ("FAL1", "FAL2", "DWT", "VRT"):
             if p[name] < 0:
-                raise _err(name, getattr(call, name.lower()), "must not be negative (enter without sign)")
+                raise cycle93_error(name, getattr(call, name.lower()), "must not be negative (enter without sign)")
         if p["FAL1"] >= p["DEPG"]:
-            raise _err("FAL1", call.fal1, "base allowance must be less than the groove depth DEPG %s" % format_value(call.depg))
+            raise cycle93_error("FAL1", call.fal1, "base allowance must be less than the groove depth DEPG %s" % format_value(call.depg))
         if 2 * p["FAL2"] >= p["WIDG"]:
-            raise _err("FAL2", call.fal2, "two flank allowances must be less than the groove width WIDG %s" % format_value(call.widg))
+            raise cycle93_error("FAL2", call.fal2, "two flank allowances must be less than the groove width WIDG %s" % format_value(call.widg))
         if p["VRT"] == 0:
             p["VRT"] = DEFAULT_VRT_MM if metric else DEFAULT_VRT_INCH
         return p
@@ -341,12 +199,12 @@ class GrooveGeometry:
         if self.longitudinal:
             c = math.cos(a)
             if abs(c) < 1e-9:
-                raise _err("ANGC", angc, "a longitudinal groove needs a contour that is not perpendicular to the longitudinal axis", ALARM_FORM)
+                raise cycle93_error("ANGC", angc, "a longitudinal groove needs a contour that is not perpendicular to the longitudinal axis", ALARM_FORM)
             slope = su * sv * math.tan(a)
         else:
             s = math.sin(a)
             if abs(s) < 1e-9:
-                raise _err("ANGC", angc, "face groove on a contour element parallel to the longitudinal axis", ALARM_FORM)
+                raise cycle93_error("ANGC", angc, "face groove on a contour element parallel to the longitudinal axis", ALARM_FORM)
             slope = su * sv * math.cos(a) / s
         if abs(slope) < 1e-12:
             slope = 0.0  # cos(90 degrees) is 6e-17 in floating point: keep faces exactly square
@@ -354,7 +212,7 @@ class GrooveGeometry:
         limit = self.settings.cycle93_max_contour_tilt
         if tilt > limit + 1e-9:
             axis = "longitudinal" if self.longitudinal else "facing"
-            raise _err(
+            raise cycle93_error(
                 "ANGC", angc,
                 "contour is %.3f degrees off the %s axis; paraxial roughing accepts at most %g (setting cycle93_max_contour_tilt)"
                 % (tilt, axis, limit),
@@ -370,9 +228,9 @@ class GrooveGeometry:
         d1 = (t1, -1.0)  # flank 1, going down into the groove
         d2 = (t2, 1.0)  # flank 2, going up out of it
         if 1 + m * t1 <= 1e-9:
-            raise _err("ANG1", p["ANG1"], "flank 1 does not reach the groove base on this contour (ANGC %s)" % format_value(p["ANGC"]), ALARM_FORM)
+            raise cycle93_error("ANG1", p["ANG1"], "flank 1 does not reach the groove base on this contour (ANGC %s)" % format_value(p["ANGC"]), ALARM_FORM)
         if 1 - m * t2 <= 1e-9:
-            raise _err("ANG2", p["ANG2"], "flank 2 does not reach the groove base on this contour (ANGC %s)" % format_value(p["ANGC"]), ALARM_FORM)
+            raise cycle93_error("ANG2", p["ANG2"], "flank 2 does not reach the groove base on this contour (ANGC %s)" % format_value(p["ANGC"]), ALARM_FORM)
         p1 = (0.0, 0.0)
         b1 = _intersect(p1, d1, (0.0, -depth), contour_dir)
         b2 = (b1[0] + width, b1[1] + m * width)
@@ -387,7 +245,27 @@ class GrooveGeometry:
         ]
         self._check_form(final, (p1, b1, b2, p2), p)
         self.final_corners = final
-        # Roughing profile: flanks moved in by FAL2 (normal), base up by FAL1.
+        self.rough_corners = self._rough_corners(p, final, (p1, b1, b2, p2), (t1, t2))
+        self.final_top = self._material_top(final)
+        self.rough_top = self._material_top(self.rough_corners)
+        tool = self.tool
+        for top in (self.final_top, self.rough_top):
+            if any(b[0] < a[0] - 1e-9 for a, b in zip(top, top[1:])):
+                raise cycle93_error("call", None, "groove form wrong: the profile folds back on itself", ALARM_FORM)
+        self.final_env = Envelope(self.final_top, tool.width, tool.corner_radius, self._element_ends(final))
+        self.rough_env = Envelope(self.rough_top, tool.width, tool.corner_radius,
+                                  self._element_ends(self.rough_corners))
+
+    def _rough_corners(self, p, final, sharp, tangents):
+        """The roughing profile: flanks moved in by FAL2 (normal), base up by FAL1."""
+        m = self.slope
+        depth = p["DEPG"]
+        p1, _b1, b2, p2 = sharp
+        t1, t2 = tangents
+        contour_dir = (1.0, m)
+        d1 = (t1, -1.0)
+        d2 = (t2, 1.0)
+        chr_mode = self.chr_mode
         fal1, fal2 = p["FAL1"], p["FAL2"]
         n1 = _unit(1.0, t1)
         n2 = _unit(-1.0, t2)
@@ -414,23 +292,16 @@ class GrooveGeometry:
         # When the allowances leave no room for the blade, rough to the final
         # profile (without its edge features) rather than not at all.
         if not fits:
-            rough = [_Corner(p1, contour_dir, d1, 0.0, chr_mode)] + final[1:3] + [_Corner(p2, d2, contour_dir, 0.0, chr_mode)]
-        self.rough_corners = rough
-        self.final_top = self._material_top(final)
-        self.rough_top = self._material_top(rough)
-        tool = self.tool
-        for top in (self.final_top, self.rough_top):
-            if any(b[0] < a[0] - 1e-9 for a, b in zip(top, top[1:])):
-                raise _err("call", None, "groove form wrong: the profile folds back on itself", ALARM_FORM)
-        self.final_env = Envelope(self.final_top, tool.width, tool.corner_radius, self._element_ends(final))
-        self.rough_env = Envelope(self.rough_top, tool.width, tool.corner_radius, self._element_ends(rough))
+            rough = [_Corner(p1, contour_dir, d1, 0.0, chr_mode)] + final[1:3] + [_Corner(p2, d2, contour_dir, 0.0,
+                                                                                         chr_mode)]
+        return rough
 
     def _check_form(self, corners, sharp, p):
         c_p1, c_b1, c_b2, c_p2 = corners
         p1, b1, b2, p2 = sharp
         base_len = math.dist(b1, b2)
         if c_b1.length + c_b2.length >= base_len - 1e-9 and (c_b1.length > 0 or c_b2.length > 0):
-            raise _err(
+            raise cycle93_error(
                 "RCI1/RCI2", (p["RCI1"], p["RCI2"]),
                 "radii/chamfers at the groove base touch or intersect (they need %s of the %s base)"
                 % (format_value(c_b1.length + c_b2.length), format_value(base_len)),
@@ -442,7 +313,7 @@ class GrooveGeometry:
         ):
             flank = math.dist(top, bottom)
             if outer.length + inner.length > flank + 1e-9:
-                raise _err(
+                raise cycle93_error(
                     "RCO%s/RCI%s" % (name, name), (p["RCO" + name], p["RCI" + name]),
                     "radius/chamfer at the edge and at the base of flank %s overlap (they need %s of the %s flank)"
                     % (name, format_value(outer.length + inner.length), format_value(flank)),
@@ -512,11 +383,8 @@ class GrooveGeometry:
     # -- moves --------------------------------------------------------------
     def expand(self, x_start, z_start):
         """Moves from the reference-corner position (x_start radius, z_start)."""
-        p = self.params
         frame = self.frame
         out = []
-        vrt, idep, dwt = p["VRT"], p["IDEP"], p["DWT"]
-
         last = [None]
 
         def go(kind, u, v):
@@ -534,9 +402,20 @@ class GrooveGeometry:
         for u, v in approach:
             go("r", u, v)
 
-        # Steps 1 and 2: plunges in equal infeeds with chip-breaking retracts.
-        rough = self.rough_env
-        bottoms = [rough.lowest(u) for u in positions]
+        full_depth = self._plunges(positions, go, out)
+        self._profile_passes(full_depth, go)
+
+        # Back to the start point the way the approach came.
+        for u, v in self._retreat(us, vs, last[0], along_first):
+            go("r", u, v)
+        return out
+
+    def _plunges(self, positions, go, out):
+        """Steps 1 and 2: plunges in equal infeeds with chip-breaking retracts;
+        returns the u of the plunges that reached the deepest bottom."""
+        p = self.params
+        vrt, idep, dwt = p["VRT"], p["IDEP"], p["DWT"]
+        bottoms = [self.rough_env.lowest(u) for u in positions]
         deepest = min(bottoms)
         full_depth = []
         for u, bottom in zip(positions, bottoms):
@@ -554,29 +433,27 @@ class GrooveGeometry:
                 if k < n:
                     go("r", u, level + vrt)
             if dwt > 0:
-                x, z = frame.blade(u, bottom)
+                x, z = self.frame.blade(u, bottom)
                 out.append(dwell(x, z, dwt))
             go("r", u, clear)
             if bottom <= deepest + 1e-6:
                 full_depth.append(u)
+        return full_depth
 
-        # Step 3: take the plunges' staircase off flanks, base corners and an oblique base.
+    def _profile_passes(self, full_depth, go):
+        """Step 3: take the plunges' staircase off flanks, base corners and an
+        oblique base; step 4: finishing on the final profile, unless the
+        roughing already ran on it (no allowances, no edge features)."""
+        p = self.params
         m = self.slope
         staircase = p["ANG1"] > 0 or p["ANG2"] > 0 or p["RCI1"] != 0 or p["RCI2"] != 0 or m != 0
         if staircase:
             if m != 0 or not full_depth:
-                self._contour_passes(rough, self.rough_top, go, None)
+                self._contour_passes(self.rough_env, self.rough_top, go, None)
             else:
-                self._contour_passes(rough, self.rough_top, go, (full_depth[0], full_depth[-1]))
-        # Step 4: finishing on the final profile, unless the roughing already
-        # ran on it (no allowances, no edge features).
+                self._contour_passes(self.rough_env, self.rough_top, go, (full_depth[0], full_depth[-1]))
         if self.rough_top != self.final_top:
             self._contour_passes(self.final_env, self.final_top, go, None)
-
-        # Back to the start point the way the approach came.
-        for u, v in self._retreat(us, vs, last[0], along_first):
-            go("r", u, v)
-        return out
 
     def _contour_passes(self, env, top, go, stop_at):
         """From each edge of the opening toward the middle along the envelope."""
@@ -603,7 +480,7 @@ class GrooveGeometry:
     def _approach(self, us, vs, u_first, along_first):
         if not self._leg_clear(us, us, vs):
             x, z = self.frame.blade(us, vs)
-            raise _err(
+            raise cycle93_error(
                 "start point", None,
                 "X%s Z%s (radius X) is inside the part: the tool must stand outside the contour before the call"
                 % (format_value(x), format_value(z)),
@@ -612,7 +489,7 @@ class GrooveGeometry:
         if along_first:
             if not self._leg_clear(us, u_first, vs):
                 x, z = self.frame.blade(us, vs)
-                raise _err(
+                raise cycle93_error(
                     "start point", None,
                     "X%s Z%s (radius X): moving from it to the groove along the %s axis would cut the part"
                     % (format_value(x), format_value(z), "longitudinal" if self.longitudinal else "facing"),

@@ -49,9 +49,10 @@ Choices the manuals leave open (besides those listed in ``ab_g77``):
 from dataclasses import dataclass
 from typing import ClassVar, Optional
 
-from .ab_g77 import PeckingCycle, check_number, format_number, read_block
-from .errors import CycleError
-from .settings import DEFAULT_SETTINGS
+from ..errors import CycleError
+from ..registry import G_WORD, register
+from ..settings import DEFAULT_SETTINGS
+from .pecking import PeckingCycle, check_number, format_number, read_block
 
 __all__ = ["FanucG75", "FanucG74", "HaasG75", "HaasG74"]
 
@@ -60,6 +61,8 @@ __all__ = ["FanucG75", "FanucG74", "HaasG75", "HaasG74"]
 class _Fanuc(PeckingCycle):
     """The words of Fanuc G75 and G74 (e: R of the first block)."""
 
+    CONTROLS: ClassVar[tuple] = ("fanuc",)
+    FORM: ClassVar[str] = G_WORD
     WORDS = ("X", "U", "Z", "W", "P", "Q", "R", "F")
     COUNTED = ("P", "Q")
     RELIEF = "R"
@@ -113,6 +116,7 @@ class _Fanuc(PeckingCycle):
         return cls(e=e, **words).validate()
 
 
+@register
 @dataclass(frozen=True)
 class FanucG75(_Fanuc):
     """Fanuc ``G75 R(e);`` ``G75 X(U) Z(W) P(di) Q(dk) R(dd) F;``: grooves along Z, plunging in X.
@@ -123,6 +127,19 @@ class FanucG75(_Fanuc):
     """
 
     NAME: ClassVar[str] = "G75"
+    KEY: ClassVar[str] = "fanuc-g75"
+    ALIASES: ClassVar[tuple] = ("g75",)
+    TITLE: ClassVar[str] = "Fanuc two-block G75 grooving"
+    WORD_HELP: ClassVar[tuple] = (
+        ("X", "groove bottom X (diameter, absolute)"),
+        ("U", "groove bottom as an increment from the start X (diameter)"),
+        ("Z", "Z of the last groove (absolute; omit for one groove)"),
+        ("W", "last groove as an increment from the start Z"),
+        ("P", "peck depth along X in least input increments, no decimal point (P2000 = 2 mm)"),
+        ("Q", "groove spacing along Z in least input increments (Q5000 = 5 mm)"),
+        ("R", "relief along Z at the groove bottom (not on the first groove)"),
+        ("F", "feed (optional)"),
+    )
     AXIS: ClassVar[str] = "X"
     BOTTOM: ClassVar[tuple] = ("X", "U")
     LAST: ClassVar[tuple] = ("Z", "W")
@@ -130,6 +147,7 @@ class FanucG75(_Fanuc):
     PITCH: ClassVar[str] = "Q"
 
 
+@register
 @dataclass(frozen=True)
 class FanucG74(_Fanuc):
     """Fanuc ``G74 R(e);`` ``G74 X(U) Z(W) P(di) Q(dk) R(dd) F;``: face grooves along X, plunging in Z.
@@ -140,6 +158,19 @@ class FanucG74(_Fanuc):
     """
 
     NAME: ClassVar[str] = "G74"
+    KEY: ClassVar[str] = "fanuc-g74"
+    ALIASES: ClassVar[tuple] = ("g74",)
+    TITLE: ClassVar[str] = "Fanuc two-block G74 face grooving / peck drilling"
+    WORD_HELP: ClassVar[tuple] = (
+        ("X", "X of the last face groove (diameter; omit for one groove / peck drilling)"),
+        ("U", "last groove as an increment from the start X (diameter)"),
+        ("Z", "groove bottom Z (absolute)"),
+        ("W", "groove bottom as an increment from the start Z"),
+        ("P", "groove spacing along X in least input increments (P5000 = 5 mm)"),
+        ("Q", "peck depth along Z in least input increments, no decimal point (Q2000 = 2 mm)"),
+        ("R", "relief along X at the groove bottom (not on the first groove)"),
+        ("F", "feed (optional)"),
+    )
     AXIS: ClassVar[str] = "Z"
     BOTTOM: ClassVar[tuple] = ("Z", "W")
     LAST: ClassVar[tuple] = ("X", "U")
@@ -151,6 +182,8 @@ class FanucG74(_Fanuc):
 class _Haas(PeckingCycle):
     """The words of Haas G75 and G74."""
 
+    CONTROLS: ClassVar[tuple] = ("haas",)
+    FORM: ClassVar[str] = G_WORD
     WORDS = ("X", "U", "Z", "W", "I", "K", "D", "F")
     RELIEF = "D"
 
@@ -164,6 +197,7 @@ class _Haas(PeckingCycle):
     F: Optional[float] = None
 
 
+@register
 @dataclass(frozen=True)
 class HaasG75(_Haas):
     """Haas ``G75 X(U) Z(W) I K D F``: grooves along Z, plunging in X.
@@ -173,6 +207,19 @@ class HaasG75(_Haas):
     """
 
     NAME: ClassVar[str] = "G75"
+    KEY: ClassVar[str] = "haas-g75"
+    ALIASES: ClassVar[tuple] = ()
+    TITLE: ClassVar[str] = "Haas one-block G75 grooving"
+    WORD_HELP: ClassVar[tuple] = (
+        ("X", "groove bottom X (diameter, absolute)"),
+        ("U", "groove bottom as an increment from the start X (diameter)"),
+        ("Z", "Z of the last groove (omit for one groove)"),
+        ("W", "last groove as an increment from the start Z"),
+        ("I", "peck depth along X, per side"),
+        ("K", "groove spacing along Z"),
+        ("D", "relief along Z at the groove bottom (not on the first groove)"),
+        ("F", "feed (optional)"),
+    )
     AXIS: ClassVar[str] = "X"
     BOTTOM: ClassVar[tuple] = ("X", "U")
     LAST: ClassVar[tuple] = ("Z", "W")
@@ -180,6 +227,7 @@ class HaasG75(_Haas):
     PITCH: ClassVar[str] = "K"
 
 
+@register
 @dataclass(frozen=True)
 class HaasG74(_Haas):
     """Haas ``G74 X(U) Z(W) I K D F``: face grooves along X, plunging in Z.
@@ -189,6 +237,19 @@ class HaasG74(_Haas):
     """
 
     NAME: ClassVar[str] = "G74"
+    KEY: ClassVar[str] = "haas-g74"
+    ALIASES: ClassVar[tuple] = ()
+    TITLE: ClassVar[str] = "Haas one-block G74 face grooving"
+    WORD_HELP: ClassVar[tuple] = (
+        ("X", "X of the last face groove (diameter; omit for one)"),
+        ("U", "last groove as an increment from the start X (diameter)"),
+        ("Z", "groove bottom Z (absolute)"),
+        ("W", "groove bottom as an increment from the start Z"),
+        ("I", "groove spacing along X, per side"),
+        ("K", "peck depth along Z"),
+        ("D", "relief along X at the groove bottom (not on the first groove)"),
+        ("F", "feed (optional)"),
+    )
     AXIS: ClassVar[str] = "Z"
     BOTTOM: ClassVar[tuple] = ("Z", "W")
     LAST: ClassVar[tuple] = ("X", "U")

@@ -1,47 +1,16 @@
-"""Allen-Bradley 9/Series lathe G77 (grooving / cut-off) and G76, its face twin.
+"""The pecking machinery every multi-groove pecking cycle shares: Allen-Bradley
+G77/G76 (``ab_g77``), Fanuc and Haas G75/G74 (``fanuc_g75``).
 
-Also holds the pecking machinery every multi-groove pecking cycle shares
-(:class:`PeckingCycle`, :func:`peck_grooves`, :func:`read_block`,
-:func:`format_number`); ``fanuc_g75`` builds the Fanuc and Haas G75/G74 on it.
+:class:`PeckingCycle` is the model (validation, expansion, emit, parse) a
+concrete cycle fills in with its words; :func:`peck_grooves` the loop that
+expands it; :func:`read_block` and :func:`check_number` read and check the
+words.
 
-The manual (seed 000, 9/Series lathe manual chapter 23) says, for
-``G77 X__ Z__ I__ K__ F__ D__;``:
+Choices the manuals leave open (each a named constant here, each with a test):
 
-* **X** - the bottom of the groove, reached from the X the tool held before the
-  block. Absolute or incremental (the modal G90/G91, ``MachineState.incremental``)
-  and read per radius/diameter mode (``MachineState.diameter_mode``). For a
-  cut-off it drives the tool through the centre (or beyond the OD from inside).
-* **Z** - where the *last* groove is cut; not programmed for one groove.
-  Absolute or incremental. Grooves are cut at the start Z, start Z + K, ...
-  and the last one is always at Z even when the final gap is smaller than K.
-* **K** - distance between grooves, always incremental.
-* **I** - infeed per step, always incremental. Each step is followed by a retract
-  of **e** (an AMP parameter: ``Settings.retract_e``); then infeed I + e, retract
-  e, infeed I + e ... until the bottom X is reached.
-* At the bottom: shift **D** at rapid (incremental, signed, "should move the tool
-  away from the part"; must be programmed, 0 when not cutting off), then rapid
-  retract to the starting X.
-* **F** - optional; replaces the active feed for the infeeds.
-
-G76 is the face twin with the axes swapped: Z = groove bottom, X = last groove
-(diameter mode applies), K = infeed per peck along Z, I = distance between grooves
-along X, D = shift along X at full depth.
-
-Choices the manual leaves open (each a named constant here, each with a test):
-
-* ``RETURN_TO_START_Z`` (True): after the last groove the tool rapids back to the
-  start Z at the start X, so the cycle ends where it began. False: it stays at
-  the last groove (shifted by D) at the start X.
-* D's axis is the groove-stepping axis (Z for G77, X for G76); D is done at every
-  groove (the manual's figure), at rapid, signed as programmed, as a per-side
-  (radius) distance. Whether it really points away from the part cannot be
-  checked here: the manual's CAUTION stands.
-* K (G77) and I (G76) are unsigned: the grooves step from the start toward Z
-  (X). A negative value is refused; 0 or missing is refused only when the last
-  groove is away from the start.
-* The peck retract e is not clipped: when e > I the first retract goes beyond the
-  start X (away from the part). With e = 0 no zero-length retract is written;
-  the pecks stay separate FEED moves.
+* The peck retract e is not clipped: when e > the peck the first retract goes
+  beyond the start (away from the part). With e = 0 no zero-length retract is
+  written; the pecks stay separate FEED moves.
 * Peck depths and groove positions are computed as start + k * step (no
   accumulated drift); a remainder smaller than ``TOLERANCE`` is merged into the
   last peck / last groove rather than cut as a sliver.
@@ -65,14 +34,13 @@ Choices the manual leaves open (each a named constant here, each with a test):
 
 import math
 import re
-from dataclasses import dataclass
 from typing import ClassVar, Optional
 
-from .errors import CycleError
-from .moves import FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID, MachineState, Move
-from .settings import DEFAULT_SETTINGS, Settings
+from ..errors import CycleError
+from ..moves import FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID, MachineState, Move
+from ..numbers import format_decimal
+from ..settings import DEFAULT_SETTINGS, Settings
 
-RETURN_TO_START_Z = True
 DECIMALS = 4
 MAX_WORD = 100000.0
 MAX_COUNT = 99999999  # Fanuc P/Q: 8 digits
@@ -82,11 +50,9 @@ TOLERANCE = 1e-7  # far below the 0.0001 word resolution, far above float noise
 # ---------------------------------------------------------------- numbers, words
 
 
-def format_number(value):
+def format_number(value: float) -> str:
     """A decimal word value as written: always a decimal point, no trailing zeros."""
-    if value == 0:
-        return "0."
-    return ("%.*f" % (DECIMALS, value)).rstrip("0")
+    return format_decimal(value, DECIMALS)
 
 
 def check_number(cycle, letter, value, counted=False):
@@ -448,68 +414,3 @@ class PeckingCycle:
     def parse(cls, text: str):
         """The model of a block as written; raises CycleError naming the word."""
         return cls(**read_block(text, cls.NAME, cls.WORDS, cls.COUNTED)).validate()
-
-
-# ---------------------------------------------------------------- Allen-Bradley
-
-
-@dataclass(frozen=True)
-class _AllenBradley(PeckingCycle):
-    """The words of G77 and G76, in the order emit() writes them."""
-
-    WORDS = ("X", "Z", "I", "K", "F", "D")
-    SHIFT_D = True
-
-    X: Optional[float] = None
-    Z: Optional[float] = None
-    I: Optional[float] = None  # noqa: E741 - the control's word
-    K: Optional[float] = None
-    F: Optional[float] = None
-    D: Optional[float] = None
-
-    def _returns_to_start(self):
-        return RETURN_TO_START_Z
-
-
-@dataclass(frozen=True)
-class G77(_AllenBradley):
-    """Allen-Bradley 9/Series ``G77 X__ Z__ I__ K__ F__ D__`` (seed 000).
-
-    X groove bottom (abs/inc per G90/G91, diameter per mode; required, must
-    differ from the start X: below it = external/cut-off, MINUS_X; above = internal,
-    PLUS_X). Z last groove (abs/inc; omitted = one groove). K groove spacing along Z,
-    incremental, unsigned, > 0 when Z is away from the start. I infeed per peck
-    (> 0, incremental, per side). D rapid shift along Z at full depth, every groove,
-    signed (required, 0 = none). F feed of the infeeds (optional).
-
-    Per groove: FEED I, RAPID back e, FEED I + e, ... the last infeed lands on X;
-    RAPID D along Z (if D != 0); RAPID to the start X; RAPID along Z to the next
-    groove. After the last: RAPID to the start Z (``RETURN_TO_START_Z``).
-    """
-
-    NAME: ClassVar[str] = "G77"
-    AXIS: ClassVar[str] = "X"
-    BOTTOM: ClassVar[tuple] = ("X",)
-    LAST: ClassVar[tuple] = ("Z",)
-    PECK: ClassVar[str] = "I"
-    PITCH: ClassVar[str] = "K"
-    RELIEF: ClassVar[str] = "D"
-
-
-@dataclass(frozen=True)
-class G76(_AllenBradley):
-    """Allen-Bradley 9/Series ``G76 X__ Z__ I__ K__ F__ D__``: G77 with the axes swapped.
-
-    Z groove bottom (abs/inc; below the start Z = MINUS_Z, above = PLUS_Z). X last
-    groove (abs/inc, diameter per mode; omitted = one groove). I groove spacing
-    along X (per side, unsigned). K infeed per peck along Z (> 0). D rapid shift
-    along X at full depth (per side, signed, required, 0 = none). F as in G77.
-    """
-
-    NAME: ClassVar[str] = "G76"
-    AXIS: ClassVar[str] = "Z"
-    BOTTOM: ClassVar[tuple] = ("Z",)
-    LAST: ClassVar[tuple] = ("X",)
-    PECK: ClassVar[str] = "K"
-    PITCH: ClassVar[str] = "I"
-    RELIEF: ClassVar[str] = "D"

@@ -1,4 +1,4 @@
-"""Writers of expanded output (freecad_groove.engine.dialects): exact text for
+"""Writers of expanded output (freecad_groove.engine.targets): exact text for
 small cases worked out by hand, number format, modal word dropping, errors,
 speed, and LinuxCNC's rs274 reading what the LinuxCNC writer writes."""
 
@@ -7,7 +7,7 @@ import time
 
 import pytest
 
-from freecad_groove.engine.dialects import (
+from freecad_groove.engine.targets import (
     MAX_COMMENT,
     Writer,
     comment,

@@ -1,0 +1,196 @@
+"""Siemens CYCLE93: grooving on a straight contour element.
+
+    CYCLE93(AXFA, AXSA, WIDG, DEPG, ANGC, ANG1, ANG2, RCO1, RCO2, RCI1, RCI2,
+            FAL1, FAL2, IDEP, DWT, TYP, VRT [, DN])
+
+(Siemens' own names: SPD, SPL, WIDG, DIAG, STA1, ANG1, ANG2, RCO1, RCO2, RCI1,
+RCI2, FAL1, FAL2, IDEP, DTB, VARI, _VRT, _DN.)
+
+Geometry, as this module reads the seed manual (choices marked *):
+- The contour is the straight line through the start point (AXSA, AXFA) at
+  ANGC to the longitudinal axis, ANGC measured counter-clockwise from +Z with
+  X up (so ANGC = 12 on an external groove is a cone whose diameter grows
+  toward +Z)*. The seed example's approach point X80 Z65 clears it.
+- TYP units digit: 1 longitudinal/external/left, 2 face/external/left,
+  3 longitudinal/internal/left, 4 face/internal/left, 5..8 the same "right".
+  Longitudinal: external plunges -X, internal +X; "left" puts the start point
+  on the groove's -Z edge (groove extends toward +Z), "right" on its +Z edge.
+  Face*: external plunges -Z (a face looking toward +Z), internal +Z; axes
+  swapped as for G76/G74: "left" extends the groove from AXFA toward +X,
+  "right" toward -X.
+- DEPG is the paraxial depth (along the plunge axis) from the contour to the
+  groove base, which runs parallel to the contour. WIDG is the width of the
+  base, measured along the groove's own axis (Z for longitudinal grooves), the
+  width the tool width is checked against*. The start point is the top of the
+  flank on the start side; flanks open outward by ANG1/ANG2 from the plunge
+  direction.
+- RCO1/RCO2 round (>0) or chamfer (<0) the part's edges at the top of the
+  flanks, RCI1/RCI2 the corners at the base. Chamfers are CHF (length of the
+  chamfer) for TYP 1..8 and CHR (leg along each element) for TYP 11..18.
+- FAL1 is kept on the base (paraxially), FAL2 on the flanks (normal to them).
+- AXFA, DEPG, FAL1 (longitudinal) and FAL2 (face) are radius values unless
+  Settings.cycle93_diameter_input says the control reads them as diameters.
+
+Expansion (the seed's four steps), driving the tool's reference corner:
+1+2. Paraxial plunges across the opening, equally spaced at most 95 % of
+  (tool width - 2 x corner radius) apart, from the start side*; each to the
+  roughing profile (final profile less the allowances) in equal infeeds of at
+  most IDEP, each followed by a rapid chip-breaking retract of VRT (0 = 1 mm)
+  and a feed back in; DWT dwell at the bottom; rapid retract to VRT above the
+  contour. Traverses run VRT above the contour, parallel to it.
+3. When flanks are angled, base corners rounded or the contour oblique, a
+  contour-parallel pass on the roughing profile from each edge toward the
+  groove removes the plunges' staircase.
+4. Finishing passes on the final profile from each edge to the groove centre,
+  already compensated for the corner radius (the path is the exact boundary
+  of where the blade may go), when there is an allowance or an edge radius.
+The cycle approaches along the longitudinal axis first for external grooves
+(the facing axis for internal ones), and returns to its start point the
+reverse way*.
+"""
+
+import math
+import re
+from dataclasses import dataclass, fields
+from typing import ClassVar, List, Optional, Tuple
+
+from ..moves import MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, MachineState, Move
+from ..numbers import format_value
+from ..registry import CALL, register
+from ..settings import DEFAULT_SETTINGS, Settings
+from .cycle93_geometry import (  # noqa: F401 - the constants are part of this module's API
+    ALARM_FORM,
+    ALARM_TYP,
+    ALARM_WIDTH,
+    DEFAULT_VRT_INCH,
+    DEFAULT_VRT_MM,
+    MAX_FLANK_ANGLE,
+    NAME,
+    PARAMS,
+    PATH_TOLERANCE,
+    WIDTH_STEP_FACTOR,
+    GrooveGeometry,
+    cycle93_error,
+)
+
+
+@register
+@dataclass(frozen=True)
+class Cycle93:
+    """One CYCLE93 call, its parameters as programmed (None = left empty)."""
+
+    NAME: ClassVar[str] = NAME
+    KEY: ClassVar[str] = "cycle93"
+    CONTROLS: ClassVar[tuple] = ("sinumerik",)
+    TITLE: ClassVar[str] = "Siemens CYCLE93 groove"
+    FORM: ClassVar[str] = CALL
+    WORD_HELP: ClassVar[tuple] = (
+        ("AXFA", "start point in the transverse axis X (radius value unless --diameter-input)"),
+        ("AXSA", "start point in the longitudinal axis Z (absolute)"),
+        ("WIDG", "groove width (without sign)"),
+        ("DEPG", "groove depth (without sign; radius value unless --diameter-input)"),
+        ("ANGC", "angle between the contour and the longitudinal axis, 0..180 degrees"),
+        ("ANG1", "flank angle on the start point side, 0..<89.999 degrees"),
+        ("ANG2", "flank angle on the other side, 0..<89.999 degrees"),
+        ("RCO1", "outer edge on the start side: radius (positive) or chamfer (negative)"),
+        ("RCO2", "outer edge on the other side: radius (positive) or chamfer (negative)"),
+        ("RCI1", "groove base corner on the start side: radius (positive) or chamfer (negative)"),
+        ("RCI2", "groove base corner on the other side: radius (positive) or chamfer (negative)"),
+        ("FAL1", "finishing allowance on the groove base"),
+        ("FAL2", "finishing allowance on the flanks"),
+        ("IDEP", "infeed depth per plunge (required, without sign)"),
+        ("DWT", "dwell at the groove base, seconds"),
+        ("TYP", "machining type 1..8 / 11..18: 1 long. ext. left, 2 face ext. left, 3 long. int. left, "
+         "4 face int. left, 5..8 the same on the right; +10 = chamfers as CHR"),
+        ("VRT", "retraction distance from the contour (0 = 1 mm), also the chip-breaking retract"),
+        ("DN", "D number of the second cutting edge (840D, optional)"),
+    )
+
+    axfa: Optional[float] = None
+    axsa: Optional[float] = None
+    widg: Optional[float] = None
+    depg: Optional[float] = None
+    angc: Optional[float] = None
+    ang1: Optional[float] = None
+    ang2: Optional[float] = None
+    rco1: Optional[float] = None
+    rco2: Optional[float] = None
+    rci1: Optional[float] = None
+    rci2: Optional[float] = None
+    fal1: Optional[float] = None
+    fal2: Optional[float] = None
+    idep: Optional[float] = None
+    dwt: Optional[float] = None
+    typ: Optional[int] = None
+    vrt: Optional[float] = None
+    dn: Optional[int] = None
+
+    # -- text ---------------------------------------------------------------
+    def emit(self) -> str:
+        """The call as the control reads it."""
+        values = [getattr(self, f.name) for f in fields(self)]
+        if values[-1] is None:
+            values = values[:-1]
+        return "CYCLE93(%s)" % ", ".join("" if v is None else format_value(v) for v in values)
+
+    @classmethod
+    def parse(cls, text: str) -> "Cycle93":
+        """The model of a call as written; raises CycleError naming the parameter."""
+        m = re.search(r"CYCLE93\s*\((.*)\)", text, re.IGNORECASE)
+        if not m:
+            raise cycle93_error("call", text.strip(), "must read CYCLE93(AXFA, AXSA, ..., VRT)")
+        args = [a.strip() for a in m.group(1).split(",")]
+        if len(args) > len(PARAMS):
+            raise cycle93_error("call", len(args), "takes at most %d parameters" % len(PARAMS))
+        values = {}
+        for name, arg in zip(PARAMS, args):
+            if arg == "":
+                continue
+            try:
+                num = float(arg)
+            except ValueError:
+                raise cycle93_error(name, arg, "must be a number (variables and expressions are not evaluated)") from None
+            if not math.isfinite(num):
+                raise cycle93_error(name, arg, "must be a finite number")
+            if name in ("TYP", "DN"):
+                if num != int(num):
+                    raise cycle93_error(name, num, "must be a whole number")
+                num = int(num)
+            values[name.lower()] = num
+        return cls(**values)
+
+    # -- reading the parameters ---------------------------------------------
+    def value(self, name: str, default: float = 0.0) -> float:
+        """Parameter ``name`` ("WIDG"), ``default`` when left empty."""
+        v = getattr(self, name.lower())
+        return default if v is None else v
+
+    def kind(self) -> Tuple[bool, bool, bool, bool]:
+        """(longitudinal, external, left, chamfers_as_chr) from TYP."""
+        typ = self.typ
+        if typ is None or typ not in set(range(1, 9)) | set(range(11, 19)):
+            raise cycle93_error("TYP", typ, "must be 1..8 or 11..18", ALARM_TYP)
+        unit = typ % 10
+        return unit in (1, 3, 5, 7), unit in (1, 2, 5, 6), unit <= 4, typ > 10
+
+    def validate(self, settings: Settings = DEFAULT_SETTINGS, metric: bool = True) -> "Cycle93":
+        """Check every rule (raises CycleError); returns self."""
+        self.geometry(settings, metric)
+        return self
+
+    def plunge_direction(self) -> str:
+        """MINUS_X, PLUS_X, MINUS_Z or PLUS_Z: the way the blade cuts (from TYP)."""
+        longitudinal, external, _left, _chr = self.kind()
+        if longitudinal:
+            return MINUS_X if external else PLUS_X
+        return MINUS_Z if external else PLUS_Z
+
+    def geometry(self, settings: Settings = DEFAULT_SETTINGS, metric: bool = True) -> GrooveGeometry:
+        """Validate and return the groove's GrooveGeometry."""
+        return GrooveGeometry(self, settings, metric)
+
+    # -- expansion ----------------------------------------------------------
+    def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
+        """The moves of the reference corner from ``state`` (x radius, z)."""
+        geo = self.geometry(settings, state.metric)
+        return geo.expand(state.x, state.z)

@@ -1,0 +1,141 @@
+"""The Groove op's properties, declared once: their types, groups, tooltips
+and defaults, and which property each CYCLE93 parameter comes from (so the
+op, its task panel and the posts name the same property for an error).
+
+FreeCAD layer: imports FreeCAD (for the tooltips' translation marker), never Qt.
+"""
+
+from typing import Optional, Tuple
+
+import FreeCAD
+
+from ..engine.cycles.cycle93 import ALARM_WIDTH
+
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
+
+CORNER_TYPES = ["None", "Radius", "Chamfer"]
+CHAMFER_MEASURES = ["Chamfer length (CHF)", "Leg length (CHR)"]
+REFERENCE_CORNERS = ["minus", "plus"]
+MAX_GROOVES = 10000
+
+def _tip(text):
+    return QT_TRANSLATE_NOOP("App::Property", text)
+
+
+_EDGE1 = "1 = the groove's start edge: its +Z edge (longitudinal grooves) or its outer edge (face grooves)"
+_CORNER_SIZE = "Size of the %s %s (RC%s%s): the radius, or the chamfer measured as ChamferMeasure says. " + _EDGE1 + "."
+_CORNER_TYPE = "What the %s %s gets: None (sharp), Radius or Chamfer (the size is %s)."
+
+# (type, name, group, tooltip, default); enumerations: default = the list, first entry selected.
+PROPERTIES = (
+    ("App::PropertyLength", "Position", "Groove", _tip(
+        "Where the groove starts: distance from the face's +Z end along Z to the groove's +Z edge "
+        "(cylinders, cones), or from the face's outer edge toward the axis to the groove's outer edge "
+        "(planes, steep cones). Sets AXSA/AXFA."), 0.0),
+    ("App::PropertyLength", "Width", "Groove", _tip(
+        "Width of the groove base along the groove's own axis (WIDG); at least the tool width."), 4.0),
+    ("App::PropertyLength", "Depth", "Groove", _tip(
+        "Depth of the groove from the face, along the plunge axis (DEPG, a radius value for longitudinal grooves)."), 2.0),
+    ("App::PropertyAngle", "FlankAngle1", "Groove", _tip(
+        "Angle of flank 1 from the plunge direction, opening outward (ANG1), 0 <= angle < 89.999. " + _EDGE1 + "."), 0.0),
+    ("App::PropertyAngle", "FlankAngle2", "Groove", _tip(
+        "Angle of flank 2 (the far edge) from the plunge direction, opening outward (ANG2), 0 <= angle < 89.999."), 0.0),
+    ("App::PropertyLength", "EdgeCorner1", "Groove", _tip(_CORNER_SIZE % ("part's edge at the top of", "flank 1", "O", "1")), 0.0),
+    ("App::PropertyEnumeration", "EdgeCorner1Type", "Groove", _tip(_CORNER_TYPE % ("edge at the top of", "flank 1", "EdgeCorner1")), CORNER_TYPES),
+    ("App::PropertyLength", "EdgeCorner2", "Groove", _tip(_CORNER_SIZE % ("part's edge at the top of", "flank 2", "O", "2")), 0.0),
+    ("App::PropertyEnumeration", "EdgeCorner2Type", "Groove", _tip(_CORNER_TYPE % ("edge at the top of", "flank 2", "EdgeCorner2")), CORNER_TYPES),
+    ("App::PropertyLength", "BaseCorner1", "Groove", _tip(_CORNER_SIZE % ("corner between the base and", "flank 1", "I", "1")), 0.0),
+    ("App::PropertyEnumeration", "BaseCorner1Type", "Groove", _tip(_CORNER_TYPE % ("corner between the base and", "flank 1", "BaseCorner1")), CORNER_TYPES),
+    ("App::PropertyLength", "BaseCorner2", "Groove", _tip(_CORNER_SIZE % ("corner between the base and", "flank 2", "I", "2")), 0.0),
+    ("App::PropertyEnumeration", "BaseCorner2Type", "Groove", _tip(_CORNER_TYPE % ("corner between the base and", "flank 2", "BaseCorner2")), CORNER_TYPES),
+    ("App::PropertyEnumeration", "ChamferMeasure", "Groove", _tip(
+        "How chamfer sizes are measured: the chamfer's own length (CHF, TYP 1..8) or the leg along each "
+        "element it cuts (CHR, TYP 11..18)."), CHAMFER_MEASURES),
+    ("App::PropertyLength", "BaseAllowance", "Groove", _tip(
+        "Finishing allowance left on the base by the roughing (FAL1)."), 0.0),
+    ("App::PropertyLength", "FlankAllowance", "Groove", _tip(
+        "Finishing allowance left on the flanks by the roughing, normal to them (FAL2)."), 0.0),
+    ("App::PropertyLength", "Infeed", "Groove", _tip(
+        "Largest infeed of one plunge step before a chip-breaking retract (IDEP); greater than 0."), 1.0),
+    ("App::PropertyFloat", "Dwell", "Groove", _tip(
+        "Dwell at the bottom of every roughing plunge, in seconds (DWT); 0 = none."), 0.0),
+    ("App::PropertyLength", "Retract", "Groove", _tip(
+        "Chip-breaking retract and clearance above the contour (VRT); 0 = 1 mm. Also the clearance "
+        "kept outside the model for the op's start points."), 0.0),
+    ("App::PropertyIntegerConstraint", "GrooveCount", "Groove", _tip(
+        "Number of equal grooves on each face (1 or more), Pitch apart."), (1, 1, MAX_GROOVES, 1)),
+    ("App::PropertyLength", "Pitch", "Groove", _tip(
+        "Distance from one groove to the next: toward -Z for longitudinal grooves, toward the axis for "
+        "face grooves. Must be greater than 0 when GrooveCount is more than 1."), 0.0),
+    ("App::PropertyLength", "ToolWidth", "Tool", _tip(
+        "Width of the blade's cutting edge; used when the tool controller's tool bit has no Width."), 3.0),
+    ("App::PropertyLength", "ToolCornerRadius", "Tool", _tip(
+        "Radius of the blade's two front corners; used when the tool bit has no CornerRadius."), 0.2),
+    ("App::PropertyEnumeration", "ReferenceCorner", "Tool", _tip(
+        "The blade corner the Path drives: minus = on the blade's -Z side (X plunges) or -X side "
+        "(Z plunges), plus = the other one."), REFERENCE_CORNERS),
+    ("App::PropertyString", "GrooveKind", "Derived", _tip(
+        "What the op made of the face(s): longitudinal/oblique/face, external/internal."), ""),
+    ("App::PropertyDistance", "AXFA", "Derived", _tip(
+        "CYCLE93 AXFA of the first groove: the start point's radius (X)."), 0.0),
+    ("App::PropertyDistance", "AXSA", "Derived", _tip(
+        "CYCLE93 AXSA of the first groove: the start point's Z."), 0.0),
+    ("App::PropertyAngle", "ANGC", "Derived", _tip(
+        "CYCLE93 ANGC: the contour's angle, counter-clockwise from +Z with X up."), 0.0),
+    ("App::PropertyInteger", "TYP", "Derived", _tip(
+        "CYCLE93 TYP: 5 longitudinal external, 7 longitudinal internal, 6 face external, 8 face "
+        "internal (all 'right'); +10 with CHR chamfers."), 0),
+)
+PROPERTY_NAMES = tuple(p[1] for p in PROPERTIES)
+PROPERTY_TYPES = {p[1]: p[0] for p in PROPERTIES}
+DERIVED = tuple(p[1] for p in PROPERTIES if p[2] == "Derived")
+DEFAULTS = {p[1]: (p[4][0] if isinstance(p[4], list) else p[4]) for p in PROPERTIES}
+
+
+
+# CYCLE93 parameter (a CycleError.parameter, composite ones split at "/") ->
+# the op property it comes from
+CYCLE93_PROPERTIES = {
+    "AXFA": "Position", "AXSA": "Position", "start point": "Position",
+    "WIDG": "Width", "DEPG": "Depth", "ANGC": "Base", "ANG1": "FlankAngle1", "ANG2": "FlankAngle2",
+    "RCO1": "EdgeCorner1", "RCO2": "EdgeCorner2", "RCI1": "BaseCorner1", "RCI2": "BaseCorner2",
+    "FAL1": "BaseAllowance", "FAL2": "FlankAllowance", "IDEP": "Infeed", "DWT": "Dwell",
+    "VRT": "Retract", "TYP": "ChamferMeasure", "tool width": "ToolWidth", "tool corner radius": "ToolCornerRadius",
+}
+# What a message adds after a property name, where the value may come from elsewhere.
+PROPERTY_NOTES = {
+    "Base": "the face's contour",
+    "ToolWidth": "or the tool bit's Width",
+    "ToolCornerRadius": "or the tool bit's CornerRadius",
+}
+
+
+def cycle93_properties(parameter: object) -> Tuple[str, ...]:
+    """The op properties a CYCLE93 parameter ("WIDG", "RCI1/RCI2") comes from
+    (the known ones, in order)."""
+    return tuple(CYCLE93_PROPERTIES[p] for p in str(parameter).split("/") if p in CYCLE93_PROPERTIES)
+
+
+def describe_cycle93_parameter(parameter: object) -> Optional[str]:
+    """The op properties of a CYCLE93 parameter for a message
+    ("BaseCorner1/BaseCorner2", "ToolWidth (or the tool bit's Width)"); None
+    when a part of it comes from no property."""
+    parts = str(parameter).split("/")
+    if not all(p in CYCLE93_PROPERTIES for p in parts):
+        return None
+    names = [CYCLE93_PROPERTIES[p] for p in parts]
+    return "/".join(n + (" (%s)" % PROPERTY_NOTES[n] if n in PROPERTY_NOTES else "") for n in names)
+
+
+def error_properties(error: Exception) -> Tuple[str, ...]:
+    """The op properties an error from plan() is about: () when it names none."""
+    props = getattr(error, "properties", None)
+    if props is not None:
+        return tuple(props)
+    parameter = getattr(error, "parameter", None)  # a CycleError
+    if parameter is None:
+        return ()
+    props = cycle93_properties(parameter)
+    if props == ("Width",) and getattr(error, "alarm", None) == ALARM_WIDTH:
+        props += ("ToolWidth",)  # narrower than the blade: either may be wrong
+    return props
