@@ -12,8 +12,8 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from shapely.geometry import Polygon
 
+from freecad_groove import verify as sim
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
-from freecad_groove.engine import simulate as sim
 from freecad_groove.engine.cycle93 import Cycle93
 from freecad_groove.engine.dialects import write_program
 from rs274 import canonical_matches, require_rs274, run_rs274, written_moves

@@ -1,4 +1,4 @@
-"""Tests of the simulation oracle itself (freecad_groove.engine.simulate), on
+"""Tests of the simulation oracle itself (freecad_groove.verify), on
 hand-made programs whose right answer is known, so that the cycle tests can
 trust its verdicts: a gouge, a rapid into stock or material left behind must
 be reported, a correct program must pass.
@@ -19,7 +19,6 @@ import shapely.affinity
 from hypothesis import given, strategies as st
 from shapely.geometry import Point, box
 
-from freecad_groove.engine import simulate as simulate_module
 from freecad_groove.engine.moves import (
     MINUS_X,
     MINUS_Z,
@@ -32,7 +31,7 @@ from freecad_groove.engine.moves import (
     feed,
     rapid,
 )
-from freecad_groove.engine.simulate import (
+from freecad_groove.verify import (
     ARC_EXCESS,
     assert_clean,
     bar,
@@ -44,6 +43,7 @@ from freecad_groove.engine.simulate import (
     tool_outline,
     unreachable_region,
 )
+from freecad_groove.verify import reach as reach_module
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -468,9 +468,12 @@ def test_simulate_is_not_imported_by_the_engine():
     # shapely is a test dependency: FreeCAD does not bundle it.
     importing = re.compile(r"^\s*(from|import)\s[^#]*\b(simulate|shapely)\b", re.M)
     engine = os.path.join(ROOT, "freecad_groove")
+    verify = os.path.join(engine, "verify")
     for folder, _, files in os.walk(engine):
+        if folder == verify or folder.startswith(verify + os.sep):
+            continue
         for name in files:
-            if name.endswith(".py") and name != "simulate.py":
+            if name.endswith(".py"):
                 text = open(os.path.join(folder, name), encoding="utf-8").read()
                 assert not importing.search(text), os.path.join(folder, name)
     code = "import sys, freecad_groove.engine; assert 'shapely' not in sys.modules"
@@ -830,7 +833,7 @@ def test_property_sum_with_a_segment_matches_the_swept_copies(case):
     ring = [(r * math.cos(2 * math.pi * k / n), r * math.sin(2 * math.pi * k / n)) for k, r in enumerate(radii)]
     ring = ring[::-1] if clockwise else ring  # _sum_segment orients the rings itself
     geom = shapely.Polygon(ring, [[(0.3 * c, 0.3 * s) for c, s in [(math.cos(a), math.sin(a)) for a in (0, 2.1, 4.2)]]] if hole else None)
-    got = simulate_module._sum_segment(geom, v)
+    got = reach_module._sum_segment(geom, v)
     assert got.is_valid
     slow = _slow_sum_segment(geom, v)
     # Contains every copy; no larger than the copies by more than the
@@ -845,7 +848,7 @@ def test_property_sum_with_a_segment_matches_the_swept_copies(case):
     [(SLIVER_TARGET_GENERATED, (0.0, 7.3)), (SLIVER_TARGET, (-3.1, 0.0)), (shapely.difference(TUBE, GROOVE), (0.7, -2.0)), (SPIKE_TARGET, (64.8, 0.0))],
 )
 def test_sum_with_a_segment_falls_back_to_a_snapped_union(monkeypatch, target, v):
-    plain = simulate_module._sum_segment(target, v)
+    plain = reach_module._sum_segment(target, v)
     real = shapely.union_all
 
     def failing(geoms, grid_size=None, **kwargs):
@@ -854,7 +857,7 @@ def test_sum_with_a_segment_falls_back_to_a_snapped_union(monkeypatch, target, v
         return real(geoms, grid_size=grid_size, **kwargs)
 
     monkeypatch.setattr(shapely, "union_all", failing)
-    snapped = simulate_module._sum_segment(target, v)
+    snapped = reach_module._sum_segment(target, v)
     assert snapped.is_valid
     if target is SPIKE_TARGET:
         # The plain sum sweeps the zero-width spike too (R16.5746..16.5812),
