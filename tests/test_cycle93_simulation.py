@@ -10,13 +10,13 @@ everywhere."""
 
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
+from rs274 import canonical_matches, require_rs274, run_rs274, written_moves
 from shapely.geometry import Polygon
 
+from freecad_groove import verify as sim
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
-from freecad_groove.engine import simulate as sim
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.targets import write_program
-from rs274 import canonical_matches, require_rs274, run_rs274, written_moves
 
 SEED_CALL = "CYCLE93(35, 60, 30, 25, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)"
 
@@ -78,7 +78,9 @@ def test_oracle_catches_a_program_that_stops_short():
     assert verdict.incomplete and not verdict.ok
 
 
-corner = st.one_of(st.just(0.0), st.decimals("0.1", "1.2", places=2).map(float), st.decimals("-1.2", "-0.1", places=2).map(float))
+corner = st.one_of(
+    st.just(0.0), st.decimals("0.1", "1.2", places=2).map(float), st.decimals("-1.2", "-0.1", places=2).map(float)
+)
 
 
 @st.composite
@@ -90,7 +92,13 @@ def grooves(draw):
     assume(radius < width / 2 - 0.1)
     tool = GroovingTool(width, radius, reference=draw(st.sampled_from(["minus", "plus"])))
     if longitudinal:
-        angc = draw(st.one_of(st.just(0.0), st.decimals("0", "30", places=1).map(float), st.decimals("150", "180", places=1).map(float)))
+        angc = draw(
+            st.one_of(
+                st.just(0.0),
+                st.decimals("0", "30", places=1).map(float),
+                st.decimals("150", "180", places=1).map(float),
+            )
+        )
     else:
         angc = draw(st.one_of(st.just(90.0), st.decimals("60", "120", places=1).map(float)))
     depg = draw(st.decimals("0.8", "8", places=2).map(float))

@@ -1,8 +1,10 @@
 """The three layers' import rule, read from the source (no FreeCAD needed):
 imports only point down. The engine imports neither FreeCAD nor Qt nor the
-upper layers; the FreeCAD layer, the posts and Init.py import FreeCAD but
-never Qt or the GUI layer (freecad_groove.gui); only the GUI layer, InitGui.py
-and the GUI tests import FreeCADGui or Qt."""
+upper layers nor the verification package; the FreeCAD layer, the posts and
+Init.py import FreeCAD but never Qt or the GUI layer (freecad_groove.gui);
+only the GUI layer, InitGui.py and the GUI tests import FreeCADGui or Qt. The
+verification package (freecad_groove.verify) imports the engine and shapely
+but neither FreeCAD nor Qt nor the FreeCAD and GUI layers."""
 
 import ast
 import glob
@@ -16,6 +18,7 @@ FREECAD = {"FreeCAD", "Part", "Path", "PathScripts", "Mesh", "Sketcher"}
 GUI = {"FreeCADGui", "PySide", "PySide2", "PySide6", "PyQt5", "PyQt6", "Gui", "pivy"}
 FREECAD_LAYER = {"freecad_groove.freecad"}
 GUI_LAYER = {"freecad_groove.gui"}
+VERIFY_LAYER = {"freecad_groove.verify"}
 
 
 def _package(path):
@@ -57,13 +60,14 @@ def files(*patterns):
     "patterns, forbidden",
     [
         (("freecad_groove/engine/*.py", "freecad_groove/__main__.py", "freecad_groove/cli.py",
-          "freecad_groove/hooks.py"), FREECAD | GUI | FREECAD_LAYER | GUI_LAYER),
+          "freecad_groove/hooks.py"), FREECAD | GUI | FREECAD_LAYER | GUI_LAYER | VERIFY_LAYER),
+        (("freecad_groove/verify/*.py",), FREECAD | GUI | FREECAD_LAYER | GUI_LAYER),
         # The package's make_groove() loads the FreeCAD layer lazily, on its first call.
         (("freecad_groove/__init__.py",), FREECAD | GUI | GUI_LAYER),
         (("freecad_groove/freecad/*.py", "freecad_groove/demo.py", "postprocessors/*_post.py", "Init.py"),
          GUI | GUI_LAYER),
     ],
-    ids=["engine", "package", "freecad"],
+    ids=["engine", "verify", "package", "freecad"],
 )
 def test_layer_imports(patterns, forbidden):
     for path in files(*patterns):
@@ -85,3 +89,12 @@ def test_rule_catches_a_relative_import_of_the_gui_layer(tmp_path):
     assert "freecad_groove.gui.task_panel" in names
     assert _hits("freecad_groove.gui.task_panel", GUI_LAYER)
     assert not _hits("freecad_groove.freecad.groove_op", GUI_LAYER)
+
+
+def test_rule_catches_the_engine_importing_the_verification_package(tmp_path):
+    bad = tmp_path / "bad.py"
+    bad.write_text("from ..verify import simulate\n")
+    names = list(imported_modules(str(bad), package=["freecad_groove", "engine"]))
+    assert "freecad_groove.verify" in names
+    assert _hits("freecad_groove.verify", VERIFY_LAYER)
+    assert not _hits("freecad_groove.engine.moves", VERIFY_LAYER)

@@ -35,7 +35,7 @@ from shapely.ops import unary_union
 
 from conftest import IN_CI, ROOT
 from freecad_groove.engine import GroovingTool, Settings
-from freecad_groove.engine import simulate as sim
+from freecad_groove import verify as sim
 from freecad_groove.engine.moves import DWELL, FEED, RAPID, Move
 from freecad_groove.engine.program import translate_program
 import rs274

@@ -1,4 +1,4 @@
-"""Tests of the simulation oracle itself (freecad_groove.engine.simulate), on
+"""Tests of the simulation oracle itself (freecad_groove.verify), on
 hand-made programs whose right answer is known, so that the cycle tests can
 trust its verdicts: a gouge, a rapid into stock or material left behind must
 be reported, a correct program must pass.
@@ -16,10 +16,10 @@ import time
 import pytest
 import shapely
 import shapely.affinity
-from hypothesis import given, strategies as st
+from hypothesis import given
+from hypothesis import strategies as st
 from shapely.geometry import Point, box
 
-from freecad_groove.engine import simulate as simulate_module
 from freecad_groove.engine.moves import (
     MINUS_X,
     MINUS_Z,
@@ -32,7 +32,7 @@ from freecad_groove.engine.moves import (
     feed,
     rapid,
 )
-from freecad_groove.engine.simulate import (
+from freecad_groove.verify import (
     ARC_EXCESS,
     assert_clean,
     bar,
@@ -44,6 +44,7 @@ from freecad_groove.engine.simulate import (
     tool_outline,
     unreachable_region,
 )
+from freecad_groove.verify import reach as reach_module
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -468,9 +469,12 @@ def test_simulate_is_not_imported_by_the_engine():
     # shapely is a test dependency: FreeCAD does not bundle it.
     importing = re.compile(r"^\s*(from|import)\s[^#]*\b(simulate|shapely)\b", re.M)
     engine = os.path.join(ROOT, "freecad_groove")
+    verify = os.path.join(engine, "verify")
     for folder, _, files in os.walk(engine):
+        if folder == verify or folder.startswith(verify + os.sep):
+            continue
         for name in files:
-            if name.endswith(".py") and name != "simulate.py":
+            if name.endswith(".py"):
                 text = open(os.path.join(folder, name), encoding="utf-8").read()
                 assert not importing.search(text), os.path.join(folder, name)
     code = "import sys, freecad_groove.engine; assert 'shapely' not in sys.modules"
@@ -670,7 +674,8 @@ def test_blade_as_wide_as_a_groove_with_a_rounded_floor_corner():
 # zero-width spike. Sweeping it raised "TopologyException: unable to assign
 # free hole to a shell" (also when snapped to 1e-9).
 SPIKE_STOCK = shapely.Polygon(
-    [(-2.0207259421636907, 11.5), (2.933653277111674, 20.081236527748356), (-6.020725942163691, 20.081236527748356), (-6.020725942163691, 11.5)]
+    [(-2.0207259421636907, 11.5), (2.933653277111674, 20.081236527748356), (-6.020725942163691, 20.081236527748356),
+     (-6.020725942163691, 11.5)]
 )
 SPIKE_TARGET = shapely.Polygon(
     [(0.0, 15.0), (-0.8, 15.0), (0.06602540378443889, 16.5), (0.7746425228810166, 16.50123677144223),
@@ -774,21 +779,28 @@ def test_farthest_point_of_a_thin_unreachable_sliver(target):
 # mouth, which the corner radius's erosion made 0.46 thick: the whole groove
 # came out unreachable ("infeasible"), and nothing in it was checked.
 CRACK_STOCK = shapely.Polygon(
-    [(1.5368502853406727, 22.49), (-2.3702899981809105, 11.332958736878906), (11.58, 11.332958736878906), (11.58, 22.49)]
+    [(1.5368502853406727, 22.49), (-2.3702899981809105, 11.332958736878906), (11.58, 11.332958736878906),
+     (11.58, 22.49)]
 )
 CRACK_TARGET = shapely.Polygon(
-    [(0.01, 18.13), (5.859999999999999, 18.13), (5.1411876816740385, 16.0773942285036), (5.13152469994402, 16.052196265489396),
-     (5.1204006726636075, 16.027608329971255), (5.107853887859706, 16.003715051689184), (5.093927530578709, 15.980598669427643),
-     (5.078669534246956, 15.958338747956084), (5.06213241568766, 15.937011904173296), (5.044373094362126, 15.916691543398048),
-     (5.025452696457445, 15.897447606713776), (5.005436344494965, 15.879346330236858), (4.984392933183696, 15.862450017137116),
-     (4.96239489229014, 15.846816823195212), (4.9395179373407325, 15.832500556635019), (4.915840809014955, 15.819550492919948),
-     (4.89144500212611, 15.808011205150683), (4.8664144851225855, 15.797922410648068), (4.840835411075059, 15.789318834249217),
-     (4.814795821144403, 15.782230088787355), (4.788385341550941, 15.776680573166777), (4.761694875088039, 15.772689388383734),
-     (4.734816288241843, 15.77027027178231), (4.707842094994066, 15.769431549771568), (-0.7492341505185041, 15.75990714529891),
-     (-0.7554029605746942, 15.759896378683338), (-0.7676443900598952, 15.75835860825954), (-0.7796039995424187, 15.755327919436352),
-     (-0.7911004331730871, 15.750850269662969), (-0.8019593587141587, 15.744993558144468), (-0.8120161111182056, 15.737846596216407),
-     (-0.8211181895134498, 15.729517760607255), (-0.829127569731204, 15.720133350010691), (-0.835922797308185, 15.709835669888719),
-     (-0.8414008292253558, 15.698780874547694), (-0.8434397128402371, 15.692958736878905)]
+    [(0.01, 18.13), (5.859999999999999, 18.13), (5.1411876816740385, 16.0773942285036),
+     (5.13152469994402, 16.052196265489396), (5.1204006726636075, 16.027608329971255),
+     (5.107853887859706, 16.003715051689184), (5.093927530578709, 15.980598669427643),
+     (5.078669534246956, 15.958338747956084), (5.06213241568766, 15.937011904173296),
+     (5.044373094362126, 15.916691543398048), (5.025452696457445, 15.897447606713776),
+     (5.005436344494965, 15.879346330236858), (4.984392933183696, 15.862450017137116),
+     (4.96239489229014, 15.846816823195212), (4.9395179373407325, 15.832500556635019),
+     (4.915840809014955, 15.819550492919948), (4.89144500212611, 15.808011205150683),
+     (4.8664144851225855, 15.797922410648068), (4.840835411075059, 15.789318834249217),
+     (4.814795821144403, 15.782230088787355), (4.788385341550941, 15.776680573166777),
+     (4.761694875088039, 15.772689388383734), (4.734816288241843, 15.77027027178231),
+     (4.707842094994066, 15.769431549771568), (-0.7492341505185041, 15.75990714529891),
+     (-0.7554029605746942, 15.759896378683338), (-0.7676443900598952, 15.75835860825954),
+     (-0.7796039995424187, 15.755327919436352), (-0.7911004331730871, 15.750850269662969),
+     (-0.8019593587141587, 15.744993558144468), (-0.8120161111182056, 15.737846596216407),
+     (-0.8211181895134498, 15.729517760607255), (-0.829127569731204, 15.720133350010691),
+     (-0.835922797308185, 15.709835669888719), (-0.8414008292253558, 15.698780874547694),
+     (-0.8434397128402371, 15.692958736878905)]
 )
 
 
@@ -829,8 +841,9 @@ def test_property_sum_with_a_segment_matches_the_swept_copies(case):
     n = len(radii)
     ring = [(r * math.cos(2 * math.pi * k / n), r * math.sin(2 * math.pi * k / n)) for k, r in enumerate(radii)]
     ring = ring[::-1] if clockwise else ring  # _sum_segment orients the rings itself
-    geom = shapely.Polygon(ring, [[(0.3 * c, 0.3 * s) for c, s in [(math.cos(a), math.sin(a)) for a in (0, 2.1, 4.2)]]] if hole else None)
-    got = simulate_module._sum_segment(geom, v)
+    holes = [[(0.3 * c, 0.3 * s) for c, s in [(math.cos(a), math.sin(a)) for a in (0, 2.1, 4.2)]]]
+    geom = shapely.Polygon(ring, holes if hole else None)
+    got = reach_module._sum_segment(geom, v)
     assert got.is_valid
     slow = _slow_sum_segment(geom, v)
     # Contains every copy; no larger than the copies by more than the
@@ -842,10 +855,15 @@ def test_property_sum_with_a_segment_matches_the_swept_copies(case):
 
 @pytest.mark.parametrize(
     "target, v",
-    [(SLIVER_TARGET_GENERATED, (0.0, 7.3)), (SLIVER_TARGET, (-3.1, 0.0)), (shapely.difference(TUBE, GROOVE), (0.7, -2.0)), (SPIKE_TARGET, (64.8, 0.0))],
+    [
+        (SLIVER_TARGET_GENERATED, (0.0, 7.3)),
+        (SLIVER_TARGET, (-3.1, 0.0)),
+        (shapely.difference(TUBE, GROOVE), (0.7, -2.0)),
+        (SPIKE_TARGET, (64.8, 0.0)),
+    ],
 )
 def test_sum_with_a_segment_falls_back_to_a_snapped_union(monkeypatch, target, v):
-    plain = simulate_module._sum_segment(target, v)
+    plain = reach_module._sum_segment(target, v)
     real = shapely.union_all
 
     def failing(geoms, grid_size=None, **kwargs):
@@ -854,7 +872,7 @@ def test_sum_with_a_segment_falls_back_to_a_snapped_union(monkeypatch, target, v
         return real(geoms, grid_size=grid_size, **kwargs)
 
     monkeypatch.setattr(shapely, "union_all", failing)
-    snapped = simulate_module._sum_segment(target, v)
+    snapped = reach_module._sum_segment(target, v)
     assert snapped.is_valid
     if target is SPIKE_TARGET:
         # The plain sum sweeps the zero-width spike too (R16.5746..16.5812),
