@@ -14,13 +14,20 @@ of a roughing cut and the path of a contour-parallel finishing cut.
 
 import math
 from bisect import bisect_left
+from typing import Iterable, List, Optional, Set, Tuple
+
+Point = Tuple[float, float]
 
 EDGE_EPS = 1e-9  # a blade this close to a wall only touches it
 JUMP_PROBE = 1e-7
 
 
 class Envelope:
-    def __init__(self, points, width, radius, corners=None):
+    """The lowest levels of one blade (width, corner radius) over one material top."""
+
+    def __init__(
+        self, points: List[Point], width: float, radius: float, corners: Optional[Iterable[float]] = None
+    ) -> None:
         if radius < 0 or width <= 2 * radius:
             raise ValueError("blade width must exceed twice its corner radius")
         self.width = width
@@ -43,7 +50,7 @@ class Envelope:
         else:
             self.parts = ((0.0, w, 0),)
 
-    def bottom(self, s):
+    def bottom(self, s: float) -> float:
         """Height of the blade's outline above its front edge, s from the minus edge."""
         r = self.radius
         if r <= 0:
@@ -56,75 +63,68 @@ class Envelope:
             return 0.0
         return r - math.sqrt(max(r * r - d * d, 0.0))
 
-    def lowest(self, u):
+    def lowest(self, u: float) -> float:
         """Lowest front-edge level at blade position u (minus edge at u)."""
-        r, w = self.radius, self.width
-        hi = u + w
+        hi = u + self.width
         best = -math.inf
-        segs = self.segments
-        i = bisect_left(self._ends, u)
-        n = len(segs)
-        sqrt = math.sqrt
-        rr = r * r
-        wr = w - r
-
-        def bottom(s):
-            if s < r:
-                d = r - s
-            elif s > wr:
-                d = s - wr
-            else:
-                return 0.0
-            t = rr - d * d
-            return r - (sqrt(t) if t > 0 else 0.0)
-        while i < n:
-            u1, v1, u2, v2, q = segs[i]
-            i += 1
-            if u1 > hi:
+        segments = self.segments
+        for index in range(bisect_left(self._ends, u), len(segments)):
+            segment = segments[index]
+            if segment[0] > hi:
                 break
-            if q is None:
-                # A vertical step: the material stands on its high side. When
-                # that side lies just outside the blade's span, the blade only
-                # slides along the wall; the elements beside it count instead.
-                s = u1 - u
-                if v1 > v2:  # stepping down: material to the left
-                    if s <= EDGE_EPS:
-                        continue  # the wall stands just outside the blade
-                    top = v1
-                else:  # stepping up: material to the right
-                    if s >= w - EDGE_EPS:
-                        continue
-                    top = v2
-                val = top - bottom(s)
-                if val > best:
-                    best = val
-                continue
-            a = (u1 if u1 > u else u) - u
-            b = (u2 if u2 < hi else hi) - u
-            if a > b:
-                continue
-            if b - a <= EDGE_EPS and (a <= EDGE_EPS or b >= w - EDGE_EPS):
-                continue  # the segment only touches the blade's side edge
-            for s_from, s_to, kind in self.parts:
-                ta = a if a > s_from else s_from
-                tb = b if b < s_to else s_to
-                if ta > tb:
-                    continue
-                cands = [ta, tb]
-                # A sloping segment touches a rounded corner at one tangent point.
-                if kind < 0 and q < 0:
-                    cands.append(r - r * (-q) / math.sqrt(1 + q * q))
-                elif kind > 0 and q > 0:
-                    cands.append(w - r + r * q / math.sqrt(1 + q * q))
-                for s in cands:
-                    if s < ta or s > tb:
-                        continue
-                    val = v1 + q * (u + s - u1) - bottom(s)
-                    if val > best:
-                        best = val
+            if segment[4] is None:
+                level = self._step_level(segment, u)
+            else:
+                level = self._slope_level(segment, u, hi)
+            if level > best:
+                best = level
         return best
 
-    def walls(self, lo, hi):
+    def _step_level(self, segment: tuple, u: float) -> float:
+        """The blade's lowest level over a vertical step of the top. The material
+        stands on the step's high side; when that side lies just outside the
+        blade's span, the blade only slides along the wall and the elements
+        beside it count instead (-inf)."""
+        u1, v1, _u2, v2, _slope = segment
+        s = u1 - u
+        if v1 > v2:  # stepping down: material to the left
+            if s <= EDGE_EPS:
+                return -math.inf  # the wall stands just outside the blade
+            top = v1
+        else:  # stepping up: material to the right
+            if s >= self.width - EDGE_EPS:
+                return -math.inf
+            top = v2
+        return top - self.bottom(s)
+
+    def _slope_level(self, segment: tuple, u: float, hi: float) -> float:
+        """The blade's lowest level over a sloping (or flat) segment of the top."""
+        r, w = self.radius, self.width
+        u1, v1, u2, _v2, q = segment
+        a = (u1 if u1 > u else u) - u
+        b = (u2 if u2 < hi else hi) - u
+        best = -math.inf
+        if a > b or (b - a <= EDGE_EPS and (a <= EDGE_EPS or b >= w - EDGE_EPS)):
+            return best  # outside the blade, or only touching its side edge
+        for s_from, s_to, kind in self.parts:
+            ta = a if a > s_from else s_from
+            tb = b if b < s_to else s_to
+            if ta > tb:
+                continue
+            candidates = [ta, tb]
+            # A sloping segment touches a rounded corner at one tangent point.
+            if kind < 0 and q < 0:
+                candidates.append(r - r * (-q) / math.sqrt(1 + q * q))
+            elif kind > 0 and q > 0:
+                candidates.append(w - r + r * q / math.sqrt(1 + q * q))
+            for s in candidates:
+                if ta <= s <= tb:
+                    level = v1 + q * (u + s - u1) - self.bottom(s)
+                    if level > best:
+                        best = level
+        return best
+
+    def walls(self, lo: float, hi: float) -> Set[float]:
         """Blade positions in (lo, hi) where a side edge passes a vertical step."""
         out = set()
         for u1, _v1, _u2, _v2, q in self.segments:
@@ -134,7 +134,7 @@ class Envelope:
                         out.add(c)
         return out
 
-    def breakpoints(self, lo, hi):
+    def breakpoints(self, lo: float, hi: float) -> List[float]:
         """Blade positions in [lo, hi] where ``lowest`` may change its formula."""
         r, w = self.radius, self.width
         offsets = (0.0, r, w - r, w) if r > 0 else (0.0, w)
@@ -159,7 +159,7 @@ class Envelope:
                         cands.add(c)
         return sorted(cands)
 
-    def trace(self, lo, hi, tol=0.0002):
+    def trace(self, lo: float, hi: float, tol: float = 0.0002) -> List[Point]:
         """Points (u, lowest(u)) from lo to hi, close enough that the straight
         moves between them stay within ``tol`` of the true boundary."""
         if hi < lo:
@@ -213,7 +213,7 @@ def _drop_collinear(pts, eps=1e-9):
     return out
 
 
-def arc_points(center, radius, a0, a1, outside, tol=0.0002):
+def arc_points(center: Point, radius: float, a0: float, a1: float, outside: bool, tol: float = 0.0002) -> List[Point]:
     """Points from angle a0 to a1 (radians) on a circle; ``outside`` puts the
     chords outside the circle (tangent polygon) instead of inside it."""
     sweep = a1 - a0

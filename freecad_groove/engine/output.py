@@ -4,7 +4,7 @@ import os
 import tempfile
 
 
-def write_atomically(filename, text, encoding="utf-8", errors="strict"):
+def write_atomically(filename: str, text: str, encoding: str = "utf-8", errors: str = "strict") -> None:
     """Write ``text`` to ``filename`` through a temporary file in the same
     folder renamed over it: the file is either the old one (keeping its
     permissions) or the whole new one. OSError propagates; the temporary file

@@ -34,9 +34,9 @@ Choices (the manuals leave them open):
   ProgramError instead of being written.
 * Comments: ``(text)``; parentheses inside the text are dropped, characters
   other than printable ASCII become ``?``, the text is cut to ``MAX_COMMENT``
-  characters (and a block to ``MAX_LINE``: LinuxCNC's limit is 252), and a text LinuxCNC would execute (``MSG,``, ``DEBUG,``,
-  ``PRINT,``, ``LOG...``, ``PROBEOPEN``, ``PY,``, ``ABORT,``, ``AXIS,`` ...) is
-  prefixed with ``- `` so it stays a plain comment.
+  characters (and a block to ``MAX_LINE``: LinuxCNC's limit is 252), and a
+  text LinuxCNC would execute (``MSG,``, ``DEBUG,``, ``PRINT,``, ``LOG...``,
+  ``PROBEOPEN``, ``PY,``, ``ABORT,``, ``AXIS,`` ...) is prefixed with ``- `` so it stays a plain comment.
 * Expanded moves never carry line numbers.
 """
 

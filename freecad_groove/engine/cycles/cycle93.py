@@ -149,7 +149,11 @@ class Cycle93:
             try:
                 num = float(arg)
             except ValueError:
-                raise cycle93_error(name, arg, "must be a number (variables and expressions are not evaluated)") from None
+                raise cycle93_error(
+                    name,
+                    arg,
+                    "must be a number (variables and expressions are not evaluated)",
+                ) from None
             if not math.isfinite(num):
                 raise cycle93_error(name, arg, "must be a finite number")
             if name in ("TYP", "DN"):

@@ -8,12 +8,18 @@ how the seed manual is read.
 """
 
 import math
-from typing import Optional
+from typing import TYPE_CHECKING, List, Optional, Tuple
 
 from ..envelope import Envelope, arc_points
 from ..errors import CycleError
-from ..moves import REFERENCE_PLUS, dwell, feed, rapid
+from ..moves import REFERENCE_PLUS, Move, dwell, feed, rapid
 from ..numbers import format_value
+from ..settings import Settings
+
+if TYPE_CHECKING:  # the model imports this module
+    from .cycle93 import Cycle93
+
+Point = Tuple[float, float]
 
 NAME = "CYCLE93"
 PARAMS = (
@@ -31,7 +37,8 @@ PATH_TOLERANCE = 0.0002  # chord error allowed on contour passes and arcs
 EPS = 1e-9
 
 
-def cycle93_error(param, value, rule, alarm=None):
+def cycle93_error(param: str, value: object, rule: str, alarm: Optional[int] = None) -> CycleError:
+    """A CycleError of CYCLE93."""
     return CycleError(param, value, rule, alarm=alarm, cycle=NAME)
 
 
@@ -41,20 +48,22 @@ class Frame:
     of the material) to world (x radius, z) and blade positions to the
     reference corner."""
 
-    def __init__(self, x0, z0, longitudinal, su, sv, width, ref_plus):
+    def __init__(
+        self, x0: float, z0: float, longitudinal: bool, su: float, sv: float, width: float, ref_plus: bool
+    ) -> None:
         self.x0, self.z0 = x0, z0
         self.longitudinal = longitudinal
         self.su, self.sv = su, sv
         self.width = width
         self.ref_shift = width if ref_plus else 0.0
 
-    def point(self, u, v):
+    def point(self, u: float, v: float) -> Point:
         """World (x, z) of a groove-frame point."""
         if self.longitudinal:
             return self.x0 + self.sv * v, self.z0 + self.su * u
         return self.x0 + self.su * u, self.z0 + self.sv * v
 
-    def blade(self, u, v):
+    def blade(self, u: float, v: float) -> Point:
         """World reference corner (x, z) of the blade whose minus-u edge is at u."""
         lo = u if self.su > 0 else -(u + self.width)
         along = lo + self.ref_shift
@@ -62,7 +71,7 @@ class Frame:
             return self.x0 + self.sv * v, self.z0 + along
         return self.x0 + along, self.z0 + self.sv * v
 
-    def blade_of(self, x, z):
+    def blade_of(self, x: float, z: float) -> Point:
         """Inverse of blade(): the blade position (u, v) for a reference corner."""
         if self.longitudinal:
             along, v = z - self.z0, self.sv * (x - self.x0)
@@ -129,12 +138,17 @@ class GrooveGeometry:
     """A validated CYCLE93 groove: its frame, final and roughing profiles and
     the expansion into moves."""
 
-    def __init__(self, call, settings, metric=True):
+    def __init__(self, call: "Cycle93", settings: Settings, metric: bool = True) -> None:
         self.call = call
         self.settings = settings
         self.metric = metric
         if not settings.tool.width > 0:
-            raise cycle93_error("tool width", settings.tool.width, "cutting edge width must be greater than 0", ALARM_WIDTH)
+            raise cycle93_error(
+                "tool width",
+                settings.tool.width,
+                "cutting edge width must be greater than 0",
+                ALARM_WIDTH,
+            )
         tool = settings.tool.validate(NAME)
         self.tool = tool
         longitudinal, external, left, chr_mode = call.kind()
@@ -173,23 +187,40 @@ class GrooveGeometry:
         if p["WIDG"] < 0:
             raise cycle93_error("WIDG", call.widg, "must be entered without sign")
         if p["WIDG"] < settings.tool.width - EPS:
-            raise cycle93_error("WIDG", call.widg, "groove is narrower than the tool width %s" % format_value(settings.tool.width), ALARM_WIDTH)
+            raise cycle93_error(
+                "WIDG",
+                call.widg,
+                "groove is narrower than the tool width %s" % format_value(settings.tool.width),
+                ALARM_WIDTH,
+            )
         if p["DEPG"] <= 0:
             raise cycle93_error("DEPG", call.depg, "must be greater than 0 (enter without sign)")
         if not 0 <= p["ANGC"] <= 180:
             raise cycle93_error("ANGC", call.angc, "must be in the range 0 <= ANGC <= 180 degrees")
         for name in ("ANG1", "ANG2"):
             if not 0 <= p[name] < MAX_FLANK_ANGLE:
-                raise cycle93_error(name, getattr(call, name.lower()), "must be in the range 0 <= %s < 89.999 degrees" % name)
+                raise cycle93_error(
+                    name,
+                    getattr(call, name.lower()),
+                    "must be in the range 0 <= %s < 89.999 degrees" % name,
+                )
         if p["IDEP"] <= 0:
             raise cycle93_error("IDEP", call.idep, "must be greater than 0 (enter without sign)")
         for name in ("FAL1", "FAL2", "DWT", "VRT"):
             if p[name] < 0:
                 raise cycle93_error(name, getattr(call, name.lower()), "must not be negative (enter without sign)")
         if p["FAL1"] >= p["DEPG"]:
-            raise cycle93_error("FAL1", call.fal1, "base allowance must be less than the groove depth DEPG %s" % format_value(call.depg))
+            raise cycle93_error(
+                "FAL1",
+                call.fal1,
+                "base allowance must be less than the groove depth DEPG %s" % format_value(call.depg),
+            )
         if 2 * p["FAL2"] >= p["WIDG"]:
-            raise cycle93_error("FAL2", call.fal2, "two flank allowances must be less than the groove width WIDG %s" % format_value(call.widg))
+            raise cycle93_error(
+                "FAL2",
+                call.fal2,
+                "two flank allowances must be less than the groove width WIDG %s" % format_value(call.widg),
+            )
         if p["VRT"] == 0:
             p["VRT"] = DEFAULT_VRT_MM if metric else DEFAULT_VRT_INCH
         return p
@@ -199,12 +230,22 @@ class GrooveGeometry:
         if self.longitudinal:
             c = math.cos(a)
             if abs(c) < 1e-9:
-                raise cycle93_error("ANGC", angc, "a longitudinal groove needs a contour that is not perpendicular to the longitudinal axis", ALARM_FORM)
+                raise cycle93_error(
+                    "ANGC",
+                    angc,
+                    "a longitudinal groove needs a contour that is not perpendicular to the longitudinal axis",
+                    ALARM_FORM,
+                )
             slope = su * sv * math.tan(a)
         else:
             s = math.sin(a)
             if abs(s) < 1e-9:
-                raise cycle93_error("ANGC", angc, "face groove on a contour element parallel to the longitudinal axis", ALARM_FORM)
+                raise cycle93_error(
+                    "ANGC",
+                    angc,
+                    "face groove on a contour element parallel to the longitudinal axis",
+                    ALARM_FORM,
+                )
             slope = su * sv * math.cos(a) / s
         if abs(slope) < 1e-12:
             slope = 0.0  # cos(90 degrees) is 6e-17 in floating point: keep faces exactly square
@@ -214,7 +255,8 @@ class GrooveGeometry:
             axis = "longitudinal" if self.longitudinal else "facing"
             raise cycle93_error(
                 "ANGC", angc,
-                "contour is %.3f degrees off the %s axis; paraxial roughing accepts at most %g (setting cycle93_max_contour_tilt)"
+                "contour is %.3f degrees off the %s axis; paraxial roughing accepts at most %g "
+                "(setting cycle93_max_contour_tilt)"
                 % (tilt, axis, limit),
             )
         return slope
@@ -228,9 +270,19 @@ class GrooveGeometry:
         d1 = (t1, -1.0)  # flank 1, going down into the groove
         d2 = (t2, 1.0)  # flank 2, going up out of it
         if 1 + m * t1 <= 1e-9:
-            raise cycle93_error("ANG1", p["ANG1"], "flank 1 does not reach the groove base on this contour (ANGC %s)" % format_value(p["ANGC"]), ALARM_FORM)
+            raise cycle93_error(
+                "ANG1",
+                p["ANG1"],
+                "flank 1 does not reach the groove base on this contour (ANGC %s)" % format_value(p["ANGC"]),
+                ALARM_FORM,
+            )
         if 1 - m * t2 <= 1e-9:
-            raise cycle93_error("ANG2", p["ANG2"], "flank 2 does not reach the groove base on this contour (ANGC %s)" % format_value(p["ANGC"]), ALARM_FORM)
+            raise cycle93_error(
+                "ANG2",
+                p["ANG2"],
+                "flank 2 does not reach the groove base on this contour (ANGC %s)" % format_value(p["ANGC"]),
+                ALARM_FORM,
+            )
         p1 = (0.0, 0.0)
         b1 = _intersect(p1, d1, (0.0, -depth), contour_dir)
         b2 = (b1[0] + width, b1[1] + m * width)
@@ -338,28 +390,29 @@ class GrooveGeometry:
         return [(lo, m * lo)] + pts + [(hi, m * hi)]
 
     # -- derived quantities -------------------------------------------------
-    def opening(self, top):
+    def opening(self, top: List[Point]) -> Point:
         """u of the first and last point where the profile leaves the contour."""
         return top[1][0], top[-2][0]
 
-    def contour_top(self, u):
+    def contour_top(self, u: float) -> float:
         """Highest contour level under the blade at u."""
         m = self.slope
         return max(m * u, m * (u + self.tool.width))
 
-    def clearance(self, u):
+    def clearance(self, u: float) -> float:
+        """The level VRT above the contour under the blade at u."""
         return self.contour_top(u) + self.params["VRT"]
 
-    def region_uv(self):
+    def region_uv(self) -> List[Point]:
         """The finished groove region (closed polygon, groove frame)."""
         top = self.final_top[1:-1]
         return top + [top[0]]
 
-    def region_world(self):
+    def region_world(self) -> List[Point]:
         """The finished groove region as world (x, z) points."""
         return [self.frame.point(u, v) for u, v in self.region_uv()]
 
-    def stock_world(self, margin=None):
+    def stock_world(self, margin: Optional[float] = None) -> List[Point]:
         """A window of the part's material around the groove, world (x, z):
         everything below the contour line, for simulation."""
         m = self.slope
@@ -370,7 +423,8 @@ class GrooveGeometry:
         pts = [(lo, m * lo), (hi, m * hi), (hi, bottom), (lo, bottom)]
         return [self.frame.point(u, v) for u, v in pts]
 
-    def plunge_positions(self):
+    def plunge_positions(self) -> List[float]:
+        """u of the roughing plunges, from the start side, equally spaced."""
         lo, hi = self.opening(self.rough_top)
         tool = self.tool
         hi -= tool.width
@@ -381,7 +435,7 @@ class GrooveGeometry:
         return [lo + (hi - lo) * k / n for k in range(n + 1)]
 
     # -- moves --------------------------------------------------------------
-    def expand(self, x_start, z_start):
+    def expand(self, x_start: float, z_start: float) -> List[Move]:
         """Moves from the reference-corner position (x_start radius, z_start)."""
         frame = self.frame
         out = []

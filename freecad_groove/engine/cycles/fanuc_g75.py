@@ -51,7 +51,7 @@ from typing import ClassVar, Optional
 
 from ..errors import CycleError
 from ..registry import G_WORD, register
-from ..settings import DEFAULT_SETTINGS
+from ..settings import DEFAULT_SETTINGS, Settings
 from .pecking import PeckingCycle, check_number, format_number, read_block
 
 __all__ = ["FanucG75", "FanucG74", "HaasG75", "HaasG74"]
@@ -82,7 +82,7 @@ class _Fanuc(PeckingCycle):
             return self.e, "R(e)"
         return super()._retract(settings, metric)
 
-    def validate(self, settings=DEFAULT_SETTINGS):
+    def validate(self, settings: Settings = DEFAULT_SETTINGS) -> "PeckingCycle":
         if self.e is not None:
             check_number(self.NAME, "R(e)", self.e)
         return super().validate(settings)
@@ -94,7 +94,7 @@ class _Fanuc(PeckingCycle):
         return "%s R%s\n%s" % (self.NAME, format_number(self.e), cycle)
 
     @classmethod
-    def parse(cls, text: str):
+    def parse(cls, text: str) -> "PeckingCycle":
         blocks = [block for block in text.replace(";", "\n").split("\n") if block.strip()]
         if len(blocks) > 2:
             raise CycleError(
@@ -104,7 +104,9 @@ class _Fanuc(PeckingCycle):
         if len(blocks) == 2:
             e = read_block(blocks[0], cls.NAME, ("R",)).get("R")
             if e is None:
-                raise CycleError("R(e)", None, "must be programmed in the first block %s R(e)" % cls.NAME, cycle=cls.NAME)
+                raise CycleError(
+                    "R(e)", None, "must be programmed in the first block %s R(e)" % cls.NAME, cycle=cls.NAME
+                )
         words = read_block(blocks[-1] if blocks else "", cls.NAME, cls.WORDS, cls.COUNTED)
         if set(words) == {"R"} and len(blocks) == 1:
             raise CycleError(

@@ -34,7 +34,7 @@ Choices the manuals leave open (each a named constant here, each with a test):
 
 import math
 import re
-from typing import ClassVar, Optional
+from typing import ClassVar, Dict, List, Optional, Sequence, Tuple
 
 from ..errors import CycleError
 from ..moves import FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID, MachineState, Move
@@ -55,7 +55,7 @@ def format_number(value: float) -> str:
     return format_decimal(value, DECIMALS)
 
 
-def check_number(cycle, letter, value, counted=False):
+def check_number(cycle: str, letter: str, value: object, counted: bool = False) -> None:
     """Refuse a word value the control cannot read back exactly as held."""
     if counted:
         if isinstance(value, bool) or not isinstance(value, int):
@@ -79,7 +79,7 @@ _WORD = re.compile(r"([A-Z])([+-]?(?:\d+\.?\d*|\.\d+))")
 _BLOCK_NUMBER = re.compile(r"N\d+")
 
 
-def read_block(text, cycle, letters, counted=()):
+def read_block(text: str, cycle: str, letters: Sequence[str], counted: Sequence[str] = ()) -> Dict[str, float]:
     """Read one block ``G77 X40. Z-30. ...`` into {letter: value}.
 
     ``cycle`` is the G word expected ("G77"); ``letters`` the words the block may
@@ -152,8 +152,17 @@ def _points(start, end, step, count):
 
 
 def peck_grooves(
-    axis, start, bottom, positions, peck, retract, relief=0.0, relief_on_first=True, feed=None, return_to_start=True
-):
+    axis: str,
+    start: Tuple[float, float],
+    bottom: float,
+    positions: Sequence[float],
+    peck: float,
+    retract: float,
+    relief: float = 0.0,
+    relief_on_first: bool = True,
+    feed: Optional[float] = None,
+    return_to_start: bool = True,
+) -> List[Move]:
     """Expand pecked grooves: the loop every pecking cycle shares.
 
     axis       plunge axis, "X" (grooves along Z) or "Z" (face grooves along X).
@@ -299,7 +308,7 @@ class PeckingCycle:
 
     # -- the common API
 
-    def validate(self, settings=DEFAULT_SETTINGS):
+    def validate(self, settings: Settings = DEFAULT_SETTINGS) -> "PeckingCycle":
         """Check every rule that does not depend on the machine state; returns self."""
         name = self.NAME
         for letter in self.WORDS:
@@ -345,7 +354,7 @@ class PeckingCycle:
             return MINUS_X if bottom < start else PLUS_X
         return MINUS_Z if bottom < start else PLUS_Z
 
-    def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> list:
+    def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
         """The moves the control makes, from ``state`` (x radius, z)."""
         self.validate(settings)
         name = self.NAME
@@ -411,6 +420,6 @@ class PeckingCycle:
         return self._words_text()
 
     @classmethod
-    def parse(cls, text: str):
+    def parse(cls, text: str) -> "PeckingCycle":
         """The model of a block as written; raises CycleError naming the word."""
         return cls(**read_block(text, cls.NAME, cls.WORDS, cls.COUNTED)).validate()
