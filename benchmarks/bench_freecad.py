@@ -55,6 +55,7 @@ def _freecad_groove_bench():
     sys.dont_write_bytecode = True  # the checkout may be mounted read-only
 
     import parts  # tests/freecad/parts.py: the stepped shaft and its Job
+
     from freecad_groove import demo, make_groove
 
     share = os.environ.get("FREECAD_GROOVE_SHARE", "")
@@ -112,7 +113,7 @@ def _freecad_groove_bench():
         op.Position = base
         doc.recompute()
         valid = op.isValid()
-        plan_times, plans = timed(lambda: op.Proxy.plan(op), 20)
+        plan_times, plans = timed(lambda op=op: op.Proxy.plan(op), 20)
         moves = sum(len(p.moves) for p in plans)
         med = statistics.median(times)
         if headline is None:

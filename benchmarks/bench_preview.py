@@ -35,7 +35,8 @@ def _bench():
     FreeCADGui.getMainWindow().showMaximized()
     FreeCADGui.activateWorkbench("CAMWorkbench")
     process(0.2)
-    lines = ["freecad-groove preview benchmark, FreeCAD %s, %s" % (".".join(FreeCAD.Version()[:3]), sys.version.split()[0]),
+    version = ".".join(FreeCAD.Version()[:3])
+    lines = ["freecad-groove preview benchmark, FreeCAD %s, %s" % (version, sys.version.split()[0]),
              "time from the last key press of a new Width to the redrawn preview (median / min / max of %d):" % REPEATS]
     for label, face, count in (("cylinder, 1 groove", "cylinder", 1), ("cone, 1 groove", "cone_up", 1),
                                ("cylinder, 10 grooves", "cylinder", 10)):
@@ -47,7 +48,8 @@ def _bench():
             page.field("Width").setProperty("rawValue", 3.5)
             page.field("Position").setProperty("rawValue", 0.0)
             page.field("GrooveCount").setValue(count)
-            wait_for(lambda: page.error is None and len(page.preview.sections) == count, what="the grooves")
+            wait_for(lambda page=page, count=count: page.error is None and len(page.preview.sections) == count,
+                     what="the grooves")
         field = page.field("Width")
         times = []
         for i in range(REPEATS):
@@ -60,7 +62,7 @@ def _bench():
             before = page.preview.updates
             t0 = time.perf_counter()
             press(field, key_of(text[-1]), text[-1])
-            wait_for(lambda: page.preview.updates > before, what="the redraw")
+            wait_for(lambda page=page, before=before: page.preview.updates > before, what="the redraw")
             process()  # and let Coin draw the changed scene
             times.append((time.perf_counter() - t0) * 1000.0)
             assert page.error is None, page.error

@@ -84,7 +84,7 @@ def _numbers(args, count, line):
     try:
         values = [float(a) for a in args.split(",")]
     except ValueError:
-        raise RS274Error("cannot read the arguments of a canonical call", line=line)
+        raise RS274Error("cannot read the arguments of a canonical call", line=line) from None
     if len(values) < count:
         raise RS274Error("canonical call has %d arguments, expected %d" % (len(values), count), line=line)
     return values
@@ -161,7 +161,7 @@ def run_rs274(program_text, timeout=60, tool_table=None):
             timeout=timeout,
         )
     output = proc.stdout
-    errors = [l for l in proc.stderr.splitlines() if l.strip() and l.strip() != "executing"]
+    errors = [text for text in proc.stderr.splitlines() if text.strip() and text.strip() != "executing"]
     if errors:
         # rs274 prints the message, then the offending line.
         message = errors[0].strip()
@@ -220,8 +220,8 @@ def written_moves(moves, metric=True):
     """The moves as the LinuxCNC writer puts them on paper: a move whose written
     X and Z equal the previous ones is dropped (it does not move the tool), so
     the list compares one to one with rs274's canonical moves."""
-    from freecad_groove.engine.targets import Writer
     from freecad_groove.engine.moves import DWELL
+    from freecad_groove.engine.targets import Writer
 
     w = Writer("linuxcnc", metric)
     out, prev = [], None

@@ -10,15 +10,16 @@ Tuples are (kind, x radius, z, f).
 import math
 
 import pytest
-from hypothesis import given, settings as hsettings, strategies as st
+from hypothesis import given
+from hypothesis import settings as hsettings
+from hypothesis import strategies as st
+from pecking_helpers import F, R, moves_of, raises, state
 
 from freecad_groove.engine.cycles import ab_g77
 from freecad_groove.engine.cycles.ab_g77 import G76, G77
 from freecad_groove.engine.cycles.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
 from freecad_groove.engine.moves import FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, MachineState
 from freecad_groove.engine.settings import Settings
-from pecking_helpers import F, R, moves_of, raises, state
-
 
 # ---------------------------------------------------------------- G77 expansions
 

@@ -190,7 +190,9 @@ def test_typ_units_digit_selects_the_plunge_direction(typ, plunge):
 
 
 def test_left_and_right_longitudinal_grooves_extend_toward_plus_and_minus_z():
-    sharp = lambda c: [c.geometry(TOOL).frame.point(u, v) for u, v in c.geometry(TOOL).corners_sharp]
+    def sharp(c):
+        return [c.geometry(TOOL).frame.point(u, v) for u, v in c.geometry(TOOL).corners_sharp]
+
     right = sharp(call(typ=5))  # start point on the right: groove toward -Z
     left = sharp(call(typ=1))
     assert max(z for _x, z in right) == pytest.approx(-10) and min(z for _x, z in right) == pytest.approx(-16)
@@ -204,7 +206,8 @@ def test_face_grooves_swap_the_axes():
     face = call(typ=2, angc=90, axfa=10.0, axsa=0.0)
     pts = [face.geometry(TOOL).frame.point(u, v) for u, v in face.geometry(TOOL).corners_sharp]
     assert min(z for _x, z in pts) == pytest.approx(-3)  # plunged 3 deep toward -Z
-    assert min(x for x, _z in pts) == pytest.approx(10) and max(x for x, _z in pts) == pytest.approx(16)  # "left": toward +X
+    # "left": toward +X
+    assert min(x for x, _z in pts) == pytest.approx(10) and max(x for x, _z in pts) == pytest.approx(16)
     right = call(typ=6, angc=90, axfa=16.0, axsa=0.0)
     pts = [right.geometry(TOOL).frame.point(u, v) for u, v in right.geometry(TOOL).corners_sharp]
     assert min(x for x, _z in pts) == pytest.approx(10) and max(x for x, _z in pts) == pytest.approx(16)
@@ -320,7 +323,9 @@ def test_reference_corner_plus_shifts_every_move_by_the_width():
     minus = call().expand(MachineState(x=25.0, z=0.0), TOOL)
     plus_settings = Settings(tool=GroovingTool(3.0, 0.4, reference="plus"))
     plus = call().expand(MachineState(x=25.0, z=3.0), plus_settings)
-    body = lambda ms: [(m.kind, round(m.x, 9), round(m.z, 9)) for m in ms[:-2]]
+    def body(ms):
+        return [(m.kind, round(m.x, 9), round(m.z, 9)) for m in ms[:-2]]
+
     assert [(k, x, z + 3.0) for k, x, z in body(minus)][1:] == body(plus)[1:]
 
 

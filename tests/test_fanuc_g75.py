@@ -8,13 +8,13 @@ shortened); the cycle ends at its start point. Tuples are (kind, x radius, z, f)
 """
 
 import pytest
-from hypothesis import given, strategies as st
+from hypothesis import given
+from hypothesis import strategies as st
+from pecking_helpers import F, R, moves_of, raises, state
 
 from freecad_groove.engine.cycles.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
 from freecad_groove.engine.moves import MINUS_X, MINUS_Z, PLUS_X
 from freecad_groove.engine.settings import Settings
-from pecking_helpers import F, R, moves_of, raises, state
-
 
 # ---------------------------------------------------------------- Fanuc G75
 

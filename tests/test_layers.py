@@ -11,7 +11,6 @@ import glob
 import os
 
 import pytest
-
 from conftest import ROOT
 
 FREECAD = {"FreeCAD", "Part", "Path", "PathScripts", "Mesh", "Sketcher"}

@@ -2,9 +2,9 @@
 a hand-written lathe program into the moves we expect, and rejects bad ones."""
 
 import pytest
+from rs274 import RS274Error, canonical_matches, parse_canonical, require_rs274, run_rs274
 
 from freecad_groove.engine.moves import dwell, feed, rapid
-from rs274 import RS274Error, canonical_matches, parse_canonical, require_rs274, run_rs274
 
 
 @pytest.fixture

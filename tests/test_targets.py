@@ -7,6 +7,8 @@ import time
 
 import pytest
 
+from freecad_groove.engine.errors import ProgramError
+from freecad_groove.engine.moves import FEED, RAPID, MachineState, Move, dwell, feed, rapid
 from freecad_groove.engine.targets import (
     MAX_COMMENT,
     Writer,
@@ -15,8 +17,6 @@ from freecad_groove.engine.targets import (
     write_moves,
     write_program,
 )
-from freecad_groove.engine.errors import ProgramError
-from freecad_groove.engine.moves import FEED, RAPID, MachineState, Move, dwell, feed, rapid
 
 # A plunge from X80 Z65 (radius 40): rapid to Z60, feed to X60 at F0.2, dwell
 # 1.5 s, rapid out, rapid back to Z65.

@@ -8,7 +8,6 @@ import glob
 import os
 
 import pytest
-
 from conftest import ROOT
 
 ENGINE = sorted(glob.glob(os.path.join(ROOT, "freecad_groove", "engine", "**", "*.py"), recursive=True))
