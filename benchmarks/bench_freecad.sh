@@ -13,23 +13,8 @@
 set -euo pipefail
 
 cd "$(dirname "$(readlink -f "$0")")/.."
+. benchmarks/freecad_run.sh
 
-LABEL="${1:-1.1}"
-SHARE="$(mktemp -d "${TMPDIR:-/tmp}/freecad-groove-bench.XXXXXX")"
-trap 'rm -rf "$SHARE"' EXIT
-chmod 755 "$SHARE"
 # Short: FreeCAD 1.1 crashes on a -c text of 256 characters or more.
 CODE="import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT'] + '/benchmarks/bench_freecad.py').read())"
-set +e
-scripts/freecad-roots run "$LABEL" --share "$SHARE" -- \
-    sh -c 'exec freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$1"' sh "$CODE" >"$SHARE/freecad.log" 2>&1
-rc=$?
-set -e
-if [ -f "$SHARE/bench_freecad.txt" ]; then
-    cat "$SHARE/bench_freecad.txt"
-fi
-if [ "$rc" -ne 0 ]; then
-    echo "bench_freecad: FreeCAD $LABEL exited with status $rc; the end of its output:" >&2
-    tr '\r' '\n' <"$SHARE/freecad.log" | grep -v '^[[:space:]]*$' | tail -n 30 >&2
-    exit "$rc"
-fi
+run_benchmark bench_freecad "${1:-1.1}" 'exec freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$1"' "$CODE"

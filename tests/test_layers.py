@@ -81,19 +81,17 @@ def test_rule_catches_a_forbidden_import(tmp_path):
     assert "PySide" in list(imported_modules(str(bad)))
 
 
-def test_rule_catches_a_relative_import_of_the_gui_layer(tmp_path):
+@pytest.mark.parametrize("source, package, found, layer, allowed", [
+    # the FreeCAD layer importing the GUI layer
+    ("from ..gui import task_panel\n", "freecad", "freecad_groove.gui.task_panel", GUI_LAYER,
+     "freecad_groove.freecad.groove_op"),
+    # the engine importing the verification package
+    ("from ..verify import simulate\n", "engine", "freecad_groove.verify", VERIFY_LAYER, "freecad_groove.engine.moves"),
+])
+def test_rule_catches_a_relative_import_of_an_upper_layer(tmp_path, source, package, found, layer, allowed):
     bad = tmp_path / "bad.py"
-    bad.write_text("from ..gui import task_panel\n")
-    names = list(imported_modules(str(bad), package=["freecad_groove", "freecad"]))
-    assert "freecad_groove.gui.task_panel" in names
-    assert _hits("freecad_groove.gui.task_panel", GUI_LAYER)
-    assert not _hits("freecad_groove.freecad.groove_op", GUI_LAYER)
-
-
-def test_rule_catches_the_engine_importing_the_verification_package(tmp_path):
-    bad = tmp_path / "bad.py"
-    bad.write_text("from ..verify import simulate\n")
-    names = list(imported_modules(str(bad), package=["freecad_groove", "engine"]))
-    assert "freecad_groove.verify" in names
-    assert _hits("freecad_groove.verify", VERIFY_LAYER)
-    assert not _hits("freecad_groove.engine.moves", VERIFY_LAYER)
+    bad.write_text(source)
+    names = list(imported_modules(str(bad), package=["freecad_groove", package]))
+    assert found in names
+    assert _hits(found, layer)
+    assert not _hits(allowed, layer)

@@ -545,31 +545,29 @@ def place(case):
     return plunge_dir, tool, a0, a0 + width, depth
 
 
+def verdict_of_groove(case, **program_options):
+    """The oracle's verdict on ``groove_program(case, **program_options)`` in TUBE."""
+    plunge_dir, tool, a0, a1, depth = place(case)
+    moves, start = groove_program(plunge_dir, tool, a0, a1, depth, **program_options)
+    result = simulate(moves, tool, plunge_dir, start, TUBE)
+    return check_groove(result, groove_target(plunge_dir, a0, a1, depth), tool)
+
+
 @given(grooves)
 def test_property_correct_groove_programs_pass(case):
-    plunge_dir, tool, a0, a1, depth = place(case)
-    moves, start = groove_program(plunge_dir, tool, a0, a1, depth)
-    result = simulate(moves, tool, plunge_dir, start, TUBE)
-    verdict = check_groove(result, groove_target(plunge_dir, a0, a1, depth), tool)
-    assert_clean(verdict)
+    assert_clean(verdict_of_groove(case))
 
 
 @given(grooves, st.floats(0.003, 0.5))
 def test_property_too_deep_floor_is_a_gouge_of_that_size(case, extra):
-    plunge_dir, tool, a0, a1, depth = place(case)
-    moves, start = groove_program(plunge_dir, tool, a0, a1, depth, extra=extra)
-    result = simulate(moves, tool, plunge_dir, start, TUBE)
-    verdict = check_groove(result, groove_target(plunge_dir, a0, a1, depth), tool)
+    verdict = verdict_of_groove(case, extra=extra)
     assert verdict.gouge == pytest.approx(extra, abs=1e-4), verdict.describe()
     assert not verdict.incomplete and not verdict.rapid_collisions, verdict.describe()
 
 
 @given(grooves, st.floats(0.003, 0.09))
 def test_property_short_floor_is_incomplete_by_that_much(case, short):
-    plunge_dir, tool, a0, a1, depth = place(case)
-    moves, start = groove_program(plunge_dir, tool, a0, a1, depth, short=short)
-    result = simulate(moves, tool, plunge_dir, start, TUBE)
-    verdict = check_groove(result, groove_target(plunge_dir, a0, a1, depth), tool)
+    verdict = verdict_of_groove(case, short=short)
     assert verdict.incomplete, verdict.describe()
     assert verdict.incomplete_depth == pytest.approx(short, abs=1e-3), verdict.describe()
     assert verdict.gouge == 0.0, verdict.describe()

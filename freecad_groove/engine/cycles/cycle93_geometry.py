@@ -230,22 +230,14 @@ class GrooveGeometry:
         if self.longitudinal:
             c = math.cos(a)
             if abs(c) < 1e-9:
-                raise cycle93_error(
-                    "ANGC",
-                    angc,
-                    "a longitudinal groove needs a contour that is not perpendicular to the longitudinal axis",
-                    ALARM_FORM,
-                )
+                rule = "a longitudinal groove needs a contour that is not perpendicular to the longitudinal axis"
+                raise cycle93_error("ANGC", angc, rule, ALARM_FORM)
             slope = su * sv * math.tan(a)
         else:
             s = math.sin(a)
             if abs(s) < 1e-9:
-                raise cycle93_error(
-                    "ANGC",
-                    angc,
-                    "face groove on a contour element parallel to the longitudinal axis",
-                    ALARM_FORM,
-                )
+                rule = "face groove on a contour element parallel to the longitudinal axis"
+                raise cycle93_error("ANGC", angc, rule, ALARM_FORM)
             slope = su * sv * math.cos(a) / s
         if abs(slope) < 1e-12:
             slope = 0.0  # cos(90 degrees) is 6e-17 in floating point: keep faces exactly square
