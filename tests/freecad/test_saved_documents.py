@@ -1,14 +1,26 @@
 """Documents in FreeCAD (1.1 and 1.0; run by tests/freecad/run_suite.py):
-an op saved and opened again, and one whose document lacks newer properties.
+an op saved and opened again, one whose document lacks newer properties, and
+the demo document saved by the previous release (commit bfb45ff), whose ops
+name the class ``freecad_groove.freecad.groove_op.ObjectGroove``.
 """
 
-import test_groove_op as tg
-from documents import path_commands, reopened
+import os
 
+import pytest
+import test_groove_op as tg
+from documents import DATA, opened, path_commands, reopened
+
+from freecad_groove import make_groove
 from freecad_groove.freecad import groove_op
+from freecad_groove.freecad.api import snake_case
 
 # The Groove op tests' document and shop fixtures, and their groove maker.
 doc, shop, groove = tg.doc, tg.shop, tg.groove
+
+# scripts/demo's document (freecad_groove/demo.py) as commit bfb45ff saved it from FreeCAD 1.1.
+DEMO_AT_BFB45FF = os.path.join(DATA, "demo_part_saved_at_bfb45ff.FCStd")
+DEMO_OPS = ["External grooves", "Face groove", "Bore groove", "Cone groove", "Cut-off"]
+SETTABLE = [name for name in groove_op.PROPERTY_NAMES if name not in groove_op.DERIVED] + ["Comment"]
 
 
 def _values(op):
@@ -60,3 +72,52 @@ def test_missing_properties_come_back_with_defaults(shop, tmp_path):
         assert op2.ReferenceCorner == "minus"
         doc2.recompute()
         assert op2.isValid(), op2.getStatusString()
+
+
+def _groove_ops(doc):
+    return [obj for obj in doc.Objects if type(getattr(obj, "Proxy", None)).__name__ == "ObjectGroove"]
+
+
+def _same_op_made_now(op):
+    """A new op in ``op``'s Job on the same faces, with the same tool
+    controller and the same values, made by this code."""
+    job = op.Proxy.getJob(op)
+    values = {snake_case(name): getattr(op, name) for name in SETTABLE}
+    return make_groove(job, [(base, list(subs)) for base, subs in op.Base], name="Again",
+                       tool_controller=op.ToolController, **values)
+
+
+@pytest.fixture
+def demo_at_bfb45ff():
+    with opened(DEMO_AT_BFB45FF) as demo:
+        yield demo
+
+
+def test_the_previous_releases_demo_opens_with_its_ops(demo_at_bfb45ff):
+    ops = _groove_ops(demo_at_bfb45ff)
+    assert [op.Label for op in ops] == DEMO_OPS
+    for op in ops:
+        assert isinstance(op.Proxy, groove_op.ObjectGroove)
+        assert op.Path.Commands, op.Label
+        assert op.getEditorMode("AXFA") == ["ReadOnly"]  # opOnDocumentRestored ran
+
+
+def test_the_previous_releases_demo_recomputes_to_the_paths_it_saved(demo_at_bfb45ff):
+    ops = _groove_ops(demo_at_bfb45ff)
+    saved = {op.Name: path_commands(op) for op in ops}
+    for op in ops:
+        op.touch()
+    demo_at_bfb45ff.recompute()
+    for op in ops:
+        assert op.isValid(), "%s: %s" % (op.Label, op.getStatusString())
+        assert any(name == "G1" for name, _words in path_commands(op)), op.Label
+        assert path_commands(op) == saved[op.Name], op.Label
+
+
+def test_the_previous_releases_demo_ops_cut_what_a_new_op_cuts(demo_at_bfb45ff):
+    for op in _groove_ops(demo_at_bfb45ff):
+        again = _same_op_made_now(op)
+        assert again.isValid(), "%s: %s" % (op.Label, again.getStatusString())
+        # the same after each op's own label comment
+        assert path_commands(again)[1:] == path_commands(op)[1:], op.Label
+        assert len(again.Proxy.plan(again)) == len(op.Proxy.plan(op)), op.Label
