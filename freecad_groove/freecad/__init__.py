@@ -4,9 +4,12 @@ Imports FreeCAD, Part and Path (never Qt or FreeCADGui), so it works in
 ``freecadcmd`` scripts. The GUI layer (task panel, commands, view provider)
 builds on it.
 
-    faces.py      what a picked face of a turned part means for a groove
-    groove_op.py  ObjectGroove (the op's proxy) and Create()
-    api.py        make_groove(): a groove op in a job from a script
+    faces.py              what a picked face of a turned part means for a groove
+    groove_properties.py  the op's properties, declared once, and the errors that name them
+    groove_op.py          ObjectGroove (the op's proxy, a class path saved documents store) and Create()
+    groove_plan.py        one groove's plan: its start point, the engine's moves, the link to it
+    links.py              the safe envelope around the model and the link rapids along it
+    api.py                make_groove(): a groove op in a job from a script
 """
 
 from .api import make_groove

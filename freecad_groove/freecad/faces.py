@@ -187,7 +187,8 @@ def analyse_face(face, name="face"):
     """GrooveFace for a Part face; ValueError naming the face when no groove
     can be cut into it (sphere, torus, plane not square to Z, off-axis)."""
     if not isinstance(face, Part.Face):
-        raise ValueError("%s: not a face (%s); pick a cylinder, cone or plane face" % (name, getattr(face, "ShapeType", type(face).__name__)))
+        shape_type = getattr(face, "ShapeType", type(face).__name__)
+        raise ValueError("%s: not a face (%s); pick a cylinder, cone or plane face" % (name, shape_type))
     surface = face.Surface
     if isinstance(surface, (Part.Cylinder, Part.Cone)):
         return _revolution_face(name, face, surface)

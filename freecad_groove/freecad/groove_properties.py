@@ -1,6 +1,7 @@
 """The Groove op's properties, declared once: their types, groups, tooltips
 and defaults, and which property each CYCLE93 parameter comes from (so the
-op, its task panel and the posts name the same property for an error).
+op, its task panel and the posts name the same property for an error), and
+the error that names the properties to fix.
 
 FreeCAD layer: imports FreeCAD (for the tooltips' translation marker), never Qt.
 """
@@ -18,13 +19,26 @@ CHAMFER_MEASURES = ["Chamfer length (CHF)", "Leg length (CHR)"]
 REFERENCE_CORNERS = ["minus", "plus"]
 MAX_GROOVES = 10000
 
-def _tip(text):
+
+def _tip(text: str) -> str:
+    """A tooltip, marked for translation in the "App::Property" context."""
     return QT_TRANSLATE_NOOP("App::Property", text)
 
 
 _EDGE1 = "1 = the groove's start edge: its +Z edge (longitudinal grooves) or its outer edge (face grooves)"
-_CORNER_SIZE = "Size of the %s %s (RC%s%s): the radius, or the chamfer measured as ChamferMeasure says. " + _EDGE1 + "."
+_CORNER_SIZE = "Size of the %s %s (RC%s): the radius, or the chamfer measured as ChamferMeasure says. " + _EDGE1 + "."
 _CORNER_TYPE = "What the %s %s gets: None (sharp), Radius or Chamfer (the size is %s)."
+
+
+def _corner(name: str, size_place: str, type_place: str, flank: str, word: str) -> tuple:
+    """The two rows of a corner: its size ``name`` (CYCLE93's RC``word``) and
+    its kind ``name``Type; the tooltips say where the corner is."""
+    return (
+        ("App::PropertyLength", name, "Groove", _tip(_CORNER_SIZE % (size_place, flank, word)), 0.0),
+        ("App::PropertyEnumeration", name + "Type", "Groove", _tip(_CORNER_TYPE % (type_place, flank, name)),
+         CORNER_TYPES),
+    )
+
 
 # (type, name, group, tooltip, default); enumerations: default = the list, first entry selected.
 PROPERTIES = (
@@ -35,19 +49,18 @@ PROPERTIES = (
     ("App::PropertyLength", "Width", "Groove", _tip(
         "Width of the groove base along the groove's own axis (WIDG); at least the tool width."), 4.0),
     ("App::PropertyLength", "Depth", "Groove", _tip(
-        "Depth of the groove from the face, along the plunge axis (DEPG, a radius value for longitudinal grooves)."), 2.0),
+        "Depth of the groove from the face, along the plunge axis (DEPG, a radius value for longitudinal "
+        "grooves)."), 2.0),
     ("App::PropertyAngle", "FlankAngle1", "Groove", _tip(
-        "Angle of flank 1 from the plunge direction, opening outward (ANG1), 0 <= angle < 89.999. " + _EDGE1 + "."), 0.0),
+        "Angle of flank 1 from the plunge direction, opening outward (ANG1), 0 <= angle < 89.999. "
+        + _EDGE1 + "."), 0.0),
     ("App::PropertyAngle", "FlankAngle2", "Groove", _tip(
-        "Angle of flank 2 (the far edge) from the plunge direction, opening outward (ANG2), 0 <= angle < 89.999."), 0.0),
-    ("App::PropertyLength", "EdgeCorner1", "Groove", _tip(_CORNER_SIZE % ("part's edge at the top of", "flank 1", "O", "1")), 0.0),
-    ("App::PropertyEnumeration", "EdgeCorner1Type", "Groove", _tip(_CORNER_TYPE % ("edge at the top of", "flank 1", "EdgeCorner1")), CORNER_TYPES),
-    ("App::PropertyLength", "EdgeCorner2", "Groove", _tip(_CORNER_SIZE % ("part's edge at the top of", "flank 2", "O", "2")), 0.0),
-    ("App::PropertyEnumeration", "EdgeCorner2Type", "Groove", _tip(_CORNER_TYPE % ("edge at the top of", "flank 2", "EdgeCorner2")), CORNER_TYPES),
-    ("App::PropertyLength", "BaseCorner1", "Groove", _tip(_CORNER_SIZE % ("corner between the base and", "flank 1", "I", "1")), 0.0),
-    ("App::PropertyEnumeration", "BaseCorner1Type", "Groove", _tip(_CORNER_TYPE % ("corner between the base and", "flank 1", "BaseCorner1")), CORNER_TYPES),
-    ("App::PropertyLength", "BaseCorner2", "Groove", _tip(_CORNER_SIZE % ("corner between the base and", "flank 2", "I", "2")), 0.0),
-    ("App::PropertyEnumeration", "BaseCorner2Type", "Groove", _tip(_CORNER_TYPE % ("corner between the base and", "flank 2", "BaseCorner2")), CORNER_TYPES),
+        "Angle of flank 2 (the far edge) from the plunge direction, opening outward (ANG2), "
+        "0 <= angle < 89.999."), 0.0),
+    *_corner("EdgeCorner1", "part's edge at the top of", "edge at the top of", "flank 1", "O1"),
+    *_corner("EdgeCorner2", "part's edge at the top of", "edge at the top of", "flank 2", "O2"),
+    *_corner("BaseCorner1", "corner between the base and", "corner between the base and", "flank 1", "I1"),
+    *_corner("BaseCorner2", "corner between the base and", "corner between the base and", "flank 2", "I2"),
     ("App::PropertyEnumeration", "ChamferMeasure", "Groove", _tip(
         "How chamfer sizes are measured: the chamfer's own length (CHF, TYP 1..8) or the leg along each "
         "element it cuts (CHR, TYP 11..18)."), CHAMFER_MEASURES),
@@ -91,6 +104,14 @@ PROPERTY_TYPES = {p[1]: p[0] for p in PROPERTIES}
 DERIVED = tuple(p[1] for p in PROPERTIES if p[2] == "Derived")
 DEFAULTS = {p[1]: (p[4][0] if isinstance(p[4], list) else p[4]) for p in PROPERTIES}
 
+
+class GrooveInputError(ValueError):
+    """A value of the op that cannot make a groove; ``properties`` names the
+    op properties to fix (the task panel marks their fields)."""
+
+    def __init__(self, message: str, properties: Tuple[str, ...] = ()):
+        super().__init__(message)
+        self.properties = tuple(properties)
 
 
 # CYCLE93 parameter (a CycleError.parameter, composite ones split at "/") ->

@@ -9,6 +9,7 @@ the page class): keep them stable.
 
     command.py     the Groove command and its place in CAM's toolbar and menu
     task_panel.py  view provider, task panel pages, OK/Cancel handling
+    widgets.py     the Qt helpers the pages are built from (forms, fields, error labels)
     preview.py     the groove cross-section and toolpath drawn while editing
 """
 

@@ -84,8 +84,8 @@ class Preview:
         self._section = _lines(SECTION_COLOR, 3)
         self._rapid = _lines(RAPID_COLOR, 1, 0x0F0F)
         self._feed = _lines(FEED_COLOR, 1.5)
-        for sep, _coords, _lines_ in (self._section, self._rapid, self._feed):
-            self.root.addChild(sep)
+        for separator, _coords, _line_set in (self._section, self._rapid, self._feed):
+            self.root.addChild(separator)
         self.sections, self.rapids, self.feeds = [], [], []
         self.updates = 0  # how many times it was redrawn
         self._graph = view.getSceneGraph() if view is not None else None
@@ -97,8 +97,9 @@ class Preview:
 
     def show(self, plans):
         self.sections, self.rapids, self.feeds = polylines(plans)
-        for (_sep, coords, lines), polys in ((self._section, self.sections), (self._rapid, self.rapids), (self._feed, self.feeds)):
-            _fill(coords, lines, polys)
+        drawn = ((self._section, self.sections), (self._rapid, self.rapids), (self._feed, self.feeds))
+        for (_separator, coords, line_set), polys in drawn:
+            _fill(coords, line_set, polys)
         self.updates += 1
 
     def clear(self):

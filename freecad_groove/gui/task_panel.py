@@ -17,6 +17,12 @@ message (with the Siemens alarm number where there is one) shows on the
 pages, and OK and Apply are refused until it is fixed. OK writes the values
 into the op and recomputes; Cancel aborts the panel's transaction (and, for a
 new op, deletes it), so the document is as it was.
+
+A document saved from the GUI stores the class paths
+``freecad_groove.gui.task_panel.ViewProvider`` and, in the view provider's
+state, ``freecad_groove.gui.task_panel.GroovePage`` (the page FreeCAD builds
+when the op is edited): both stay in this module. The pages are built from
+the small Qt helpers in widgets.py.
 """
 
 import os
@@ -29,13 +35,25 @@ from PySide import QtCore, QtGui
 from ..freecad import faces as faces_mod
 from ..freecad import groove_op
 from . import ICON, PANELS, preview
+from .widgets import (
+    CONTEXT,
+    ERROR_LABEL,
+    QuantityFields,
+    add_error_label,
+    add_label,
+    child,
+    connect_changed,
+    fill_combo,
+    load_form,
+    mark_invalid,
+    select_data,
+    show_error,
+    svg_pixmap,
+)
 
 translate = FreeCAD.Qt.translate
-CONTEXT = "FreeCADGroove"
 
 PREVIEW_DELAY_MS = 20  # coalesces the signals of one edit into one re-plan
-INVALID_STYLE = "border: 2px solid #d00000;"
-ERROR_STYLE = "color: #b00000;"
 
 # (widget name, op property): quantity fields (Gui::QuantitySpinBox)
 GROOVE_QUANTITIES = (
@@ -65,123 +83,13 @@ REFERENCE_CORNER_TEXT = {
 }
 
 
-def _load(name):
-    return FreeCADGui.PySideUic.loadUi(os.path.join(PANELS, name))
-
-
-def child(form, name):
-    """A form's widget by object name (not getattr: "width" is also QWidget.width())."""
-    return form.findChild(QtCore.QObject, name)
-
-
-def _svg_pixmap(path, width, height):
-    """An SVG drawn with QtSvg (FreeCAD 1.1's Qt has no SVG image plugin for QIcon)."""
-    from PySide import QtSvg
-
-    pixmap = QtGui.QPixmap(width, height)
-    pixmap.fill(QtCore.Qt.transparent)
-    painter = QtGui.QPainter(pixmap)
-    QtSvg.QSvgRenderer(path).render(painter)
-    painter.end()
-    return pixmap
-
-
-def _fill_combo(combo, texts):
-    combo.blockSignals(True)
-    combo.clear()
-    for value, text in texts.items():
-        combo.addItem(translate(CONTEXT, text), value)
-    combo.blockSignals(False)
-
-
-def _select(combo, value):
-    combo.blockSignals(True)
-    index = combo.findData(value)
-    if index >= 0:
-        combo.setCurrentIndex(index)
-    combo.blockSignals(False)
-
-
-def _connect_changed(widget, slot):
-    """Call slot() whenever the user changes the widget's value."""
-    if isinstance(widget, QtGui.QComboBox):
-        widget.currentIndexChanged.connect(lambda *_a: slot())
-    else:
-        widget.valueChanged.connect(lambda *_a: slot())
-
-
-def _mark(widget, invalid):
-    if widget is None:
-        return
-    if invalid:
-        if widget.property("grooveInvalid") is not True:
-            widget.setProperty("grooveInvalid", True)
-            widget.setStyleSheet(INVALID_STYLE)
-    elif widget.property("grooveInvalid") is True:
-        widget.setProperty("grooveInvalid", False)
-        widget.setStyleSheet("")
-
-
-def _show_error(label, message):
-    if label is None:
-        return
-    label.setText(message or "")
-    label.setStyleSheet(ERROR_STYLE)
-    label.setVisible(bool(message))
-
-
-def _add_to_layout(layout, widget):
-    if isinstance(layout, QtGui.QGridLayout):
-        layout.addWidget(widget, layout.rowCount(), 0, 1, max(1, layout.columnCount()))
-    else:
-        layout.addWidget(widget)
-
-
-def _add_error_label(form):
-    """The label the engine's message shows in (objectName errorLabel), hidden while all is well."""
-    label = QtGui.QLabel(form)
-    label.setObjectName("errorLabel")
-    label.setWordWrap(True)
-    label.setVisible(False)
-    _add_to_layout(form.layout(), label)
-    return label
-
-
-class _Fields:
-    """Quantity fields (Gui::QuantitySpinBox, unit set in the .ui) for op
-    properties. Not CAM's PathGuiUtil.QuantitySpinBox: that one resets a field
-    from its property whenever the field gets focus, which would drop a value
-    typed earlier, since this panel writes to the op only on OK or Apply."""
-
-    def __init__(self, form, obj, pairs):
-        self.widgets = {prop: child(form, name) for name, prop in pairs}
-
-    def set_from(self, obj):
-        for prop, widget in self.widgets.items():
-            widget.blockSignals(True)
-            widget.setProperty("rawValue", float(getattr(obj, prop).Value))
-            widget.blockSignals(False)
-
-    def write_to(self, obj):
-        for prop, value in self.values().items():
-            if abs(getattr(obj, prop).Value - value) > 1e-12:
-                setattr(obj, prop, value)
-
-    def values(self):
-        """{property: value in mm or degrees} as the fields show them now."""
-        return {prop: float(widget.property("rawValue")) for prop, widget in self.widgets.items()}
-
-
 class BaseGeometryPage(PathOpGui.TaskPanelBaseGeometryPage):
     """FreeCAD's base geometry page, plus the groove kind of the picked faces."""
 
     def getForm(self):
         form = super().getForm()
-        self.kind_label = QtGui.QLabel(form)
-        self.kind_label.setObjectName("grooveKind")
-        self.kind_label.setWordWrap(True)
-        _add_to_layout(form.layout(), self.kind_label)
-        _add_error_label(form)
+        self.kind_label = add_label(form, "grooveKind")
+        add_error_label(form)
         return form
 
     def supportsEdges(self):
@@ -194,7 +102,7 @@ class BaseGeometryPage(PathOpGui.TaskPanelBaseGeometryPage):
         super().setFields(obj)
         self.show_kind(obj)
 
-    def show_kind(self, obj):
+    def show_kind(self, obj: object) -> None:
         """The groove kind of the faces in Base, in words."""
         words = []
         try:
@@ -219,13 +127,13 @@ class ToolPage(PathOpGui.TaskPanelPage):
     """Tool controller, coolant, and the blade's size when the tool bit has none."""
 
     def getForm(self):
-        form = _load("PageGrooveToolEdit.ui")
-        _fill_combo(form.referenceCorner, REFERENCE_CORNER_TEXT)
-        _add_error_label(form)
+        form = load_form("PageGrooveToolEdit.ui")
+        fill_combo(form.referenceCorner, REFERENCE_CORNER_TEXT)
+        add_error_label(form)
         return form
 
     def initPage(self, obj):
-        self.fields = _Fields(self.form, obj, TOOL_QUANTITIES)
+        self.fields = QuantityFields(self.form, TOOL_QUANTITIES)
         self.groove_page = None  # set by GrooveTaskPanel
 
     def getTitle(self, obj):
@@ -238,7 +146,7 @@ class ToolPage(PathOpGui.TaskPanelPage):
         self.setupToolController(obj, self.form.toolController)
         self.setupCoolant(obj, self.form.coolantController)
         self.fields.set_from(obj)
-        _select(self.form.referenceCorner, str(obj.ReferenceCorner))
+        select_data(self.form.referenceCorner, str(obj.ReferenceCorner))
         self.show_tool_source(obj)
 
     def getFields(self, obj):
@@ -249,14 +157,15 @@ class ToolPage(PathOpGui.TaskPanelPage):
         if value and obj.ReferenceCorner != value:
             obj.ReferenceCorner = value
 
-    def values(self):
-        out = self.fields.values()
-        out["ReferenceCorner"] = self.form.referenceCorner.currentData()
-        return out
+    def values(self) -> dict:
+        """{op property: value} as this page shows them."""
+        values = self.fields.values()
+        values["ReferenceCorner"] = self.form.referenceCorner.currentData()
+        return values
 
     def registerSignalHandlers(self, obj):
         for widget in list(self.fields.widgets.values()) + [self.form.referenceCorner, self.form.coolantController]:
-            _connect_changed(widget, self.changed)
+            connect_changed(widget, self.changed)
         if not hasattr(self, "tcEditor"):  # FreeCAD 1.0: the base class does not follow the combo
             self.form.toolController.currentIndexChanged.connect(self._tool_controller_changed)
 
@@ -264,23 +173,28 @@ class ToolPage(PathOpGui.TaskPanelPage):
         self.updateToolController(self.obj, self.form.toolController)
         self.changed()
 
-    def changed(self):
+    def changed(self) -> None:
+        """A value changed: the panel is dirty, the preview follows."""
         self.setDirty()
         if self.groove_page is not None:
             self.groove_page.schedule_preview()
 
-    def show_tool_source(self, obj):
-        tc = getattr(obj, "ToolController", None)
-        bit = getattr(tc, "Tool", None)
-        has = [n for n in ("Width", "CornerRadius") if bit is not None and getattr(bit, n, None) is not None]
-        if has:
-            text = translate(CONTEXT, "The tool bit {0} gives the blade's {1}: the fields below are not used for it.").format(
-                bit.Label, " and ".join(has))
+    def show_tool_source(self, obj: object) -> None:
+        """Say where the blade's size comes from; the op's own size fields are
+        enabled only for what the tool bit does not give."""
+        tool_controller = getattr(obj, "ToolController", None)
+        bit = getattr(tool_controller, "Tool", None)
+        given = [name for name in ("Width", "CornerRadius")
+                 if bit is not None and getattr(bit, name, None) is not None]
+        if given:
+            text = translate(
+                CONTEXT, "The tool bit {0} gives the blade's {1}: the fields below are not used for it."
+            ).format(bit.Label, " and ".join(given))
         else:
             text = translate(CONTEXT, "The tool bit has no Width or CornerRadius: the blade size below is used.")
         self.form.toolSourceLabel.setText(text)
-        self.form.toolWidth.setEnabled("Width" not in has)
-        self.form.toolCornerRadius.setEnabled("CornerRadius" not in has)
+        self.form.toolWidth.setEnabled("Width" not in given)
+        self.form.toolCornerRadius.setEnabled("CornerRadius" not in given)
 
     def updateData(self, obj, prop):
         if prop == "ToolController":
@@ -293,13 +207,13 @@ class GroovePage(PathOpGui.TaskPanelPage):
     """The groove's size; owns the live preview and the validity state."""
 
     def getForm(self):
-        form = _load("PageGrooveEdit.ui")
+        form = load_form("PageGrooveEdit.ui")
         for name in ("edgeCorner1Type", "edgeCorner2Type", "baseCorner1Type", "baseCorner2Type"):
-            _fill_combo(child(form, name), CORNER_TYPE_TEXT)
-        _fill_combo(form.chamferMeasure, CHAMFER_MEASURE_TEXT)
-        child(form, "diagram").setPixmap(_svg_pixmap(os.path.join(PANELS, "groove_section.svg"), 360, 170))
+            fill_combo(child(form, name), CORNER_TYPE_TEXT)
+        fill_combo(form.chamferMeasure, CHAMFER_MEASURE_TEXT)
+        child(form, "diagram").setPixmap(svg_pixmap(os.path.join(PANELS, "groove_section.svg"), 360, 170))
         # The message goes first: the page is taller than the task view.
-        error = child(form, "errorLabel")
+        error = child(form, ERROR_LABEL)
         error.parentWidget().layout().removeWidget(error)
         form.layout().insertWidget(0, error)
         error.setVisible(False)
@@ -309,7 +223,7 @@ class GroovePage(PathOpGui.TaskPanelPage):
         return BaseGeometryPage(obj, features)
 
     def initPage(self, obj):
-        self.fields = _Fields(self.form, obj, GROOVE_QUANTITIES)
+        self.fields = QuantityFields(self.form, GROOVE_QUANTITIES)
         self.other_pages = []  # set by GrooveTaskPanel: pages whose values and errors share this state
         self.preview = None
         self.error = None  # the message while the values make no groove
@@ -332,8 +246,8 @@ class GroovePage(PathOpGui.TaskPanelPage):
     def setFields(self, obj):
         self.fields.set_from(obj)
         for name in CORNERS:
-            _select(self.field(name + "Type"), str(getattr(obj, name + "Type")))
-        _select(self.form.chamferMeasure, str(obj.ChamferMeasure))
+            select_data(self.field(name + "Type"), str(getattr(obj, name + "Type")))
+        select_data(self.form.chamferMeasure, str(obj.ChamferMeasure))
         self.form.dwell.setValue(float(obj.Dwell))
         self.form.grooveCount.setValue(int(obj.GrooveCount))
         self._enable_corner_sizes()
@@ -353,25 +267,26 @@ class GroovePage(PathOpGui.TaskPanelPage):
         if int(obj.GrooveCount) != self.form.grooveCount.value():
             obj.GrooveCount = self.form.grooveCount.value()
 
-    def values(self):
+    def values(self) -> dict:
         """{op property: value} as this page shows them."""
-        out = self.fields.values()
+        values = self.fields.values()
         for name in CORNERS:
-            out[name + "Type"] = self.field(name + "Type").currentData()
-        out["ChamferMeasure"] = self.form.chamferMeasure.currentData()
-        out["Dwell"] = self.form.dwell.value()
-        out["GrooveCount"] = self.form.grooveCount.value()
-        return out
+            values[name + "Type"] = self.field(name + "Type").currentData()
+        values["ChamferMeasure"] = self.form.chamferMeasure.currentData()
+        values["Dwell"] = self.form.dwell.value()
+        values["GrooveCount"] = self.form.grooveCount.value()
+        return values
 
-    def all_values(self):
-        out = {}
+    def all_values(self) -> dict:
+        """{op property: value} as every page of the panel shows them."""
+        values = {}
         for page in self.other_pages:
             if hasattr(page, "values"):
-                out.update(page.values())
-        out.update(self.values())
-        return out
+                values.update(page.values())
+        values.update(self.values())
+        return values
 
-    def field(self, prop):
+    def field(self, prop: str) -> object:
         """The field of an op property ("Width") on any page, or None."""
         name = prop[0].lower() + prop[1:]
         for page in [self] + list(self.other_pages):
@@ -385,9 +300,10 @@ class GroovePage(PathOpGui.TaskPanelPage):
         widgets += [self.field(n + "Type") for n in CORNERS]
         widgets += [self.form.chamferMeasure, self.form.dwell, self.form.grooveCount]
         for widget in widgets:
-            _connect_changed(widget, self.changed)
+            connect_changed(widget, self.changed)
 
-    def changed(self):
+    def changed(self) -> None:
+        """A value changed: the panel is dirty, the preview follows."""
         self._enable_corner_sizes()
         self.setDirty()
         self.schedule_preview()
@@ -401,23 +317,24 @@ class GroovePage(PathOpGui.TaskPanelPage):
             self.schedule_preview()
 
     # -- preview and validity ---------------------------------------------------
-    def schedule_preview(self):
+    def schedule_preview(self) -> None:
+        """Re-plan once the signals of the current edit are in."""
         self._timer.start()
 
-    def update_preview(self):
+    def update_preview(self) -> None:
         """Re-plan the op from the panel's values; redraw or show the error."""
         self._timer.stop()
         obj = self.obj
         error, invalid, plans = None, (), []
         try:
             plans = obj.Proxy.plan_with(obj, self.all_values())
-        except ValueError as e:  # CycleError and GrooveInputError are ValueErrors
-            error, invalid = str(e), groove_op.error_properties(e)
-        except Exception as e:  # a bug, not bad input: say so in the panel, details in the report view
+        except ValueError as bad_input:  # CycleError and GrooveInputError are ValueErrors
+            error, invalid = str(bad_input), groove_op.error_properties(bad_input)
+        except Exception as bug:  # a bug, not bad input: say so in the panel, details in the report view
             import traceback
 
             FreeCAD.Console.PrintError(traceback.format_exc())
-            error = translate(CONTEXT, "Internal error while planning the groove: {0}").format(e)
+            error = translate(CONTEXT, "Internal error while planning the groove: {0}").format(bug)
         self.replans += 1
         self.plans = plans
         self._show_angc(obj, plans)
@@ -441,20 +358,19 @@ class GroovePage(PathOpGui.TaskPanelPage):
             text = ""
         self.form.angc.setText(text)
 
-    def set_error(self, message, properties=()):
+    def set_error(self, message: object, properties: tuple = ()) -> None:
+        """Show ``message`` (None: the values make a groove) on every page and
+        mark the fields of ``properties``."""
         was_valid = self.error is None
         self.error = message
         for prop in self.invalid:
-            _mark(self.field(prop), False)
+            mark_invalid(self.field(prop), False)
         self.invalid = tuple(properties) if message else ()
         for prop in self.invalid:
-            _mark(self.field(prop), True)
-        if "Base" in self.invalid:
-            _mark(self._base_list(), True)
-        else:
-            _mark(self._base_list(), False)
+            mark_invalid(self.field(prop), True)
+        mark_invalid(self._base_list(), "Base" in self.invalid)
         for page in [self] + list(self.other_pages):
-            _show_error(child(page.form, "errorLabel"), message)
+            show_error(child(page.form, ERROR_LABEL), message)
         if was_valid != (message is None) and self.on_validity_changed is not None:
             self.on_validity_changed()
 
@@ -504,10 +420,11 @@ class GrooveTaskPanel(PathOpGui.TaskPanel):
             self.form.insert(at + 1 if reversed_order else at, page.form)
 
     @property
-    def valid(self):
+    def valid(self) -> bool:
         return self.groove_page.error is None
 
-    def update_buttons(self):
+    def update_buttons(self) -> None:
+        """OK only while the groove is valid, Apply also only while there is something to apply."""
         box = getattr(self, "buttonBox", None)
         if box is None:
             return
@@ -560,7 +477,8 @@ class ViewProvider(PathOpGui.ViewProvider):
         page = self.getTaskPanelOpPage(vobj.Object)
         page.setTitle(translate(CONTEXT, "Groove"))
         page.setIcon(ICON)
-        self.setupTaskPanel(GrooveTaskPanel(vobj.Object, self.deleteObjectsOnReject(), page, self.getSelectionFactory()))
+        panel = GrooveTaskPanel(vobj.Object, self.deleteObjectsOnReject(), page, self.getSelectionFactory())
+        self.setupTaskPanel(panel)
         self.deleteOnReject = False
         return True
 
@@ -568,7 +486,7 @@ class ViewProvider(PathOpGui.ViewProvider):
 class TurnedFaceGate:
     """Lets the user pick only faces a groove can be cut into."""
 
-    def allow(self, doc, obj, sub):
+    def allow(self, doc: object, obj: object, sub: str) -> bool:
         if not sub or not sub.startswith("Face") or not hasattr(obj, "Shape"):
             return False
         try:
@@ -578,11 +496,13 @@ class TurnedFaceGate:
         return True
 
 
-def select_turned_faces():
+def select_turned_faces() -> None:
+    """Let the user pick only faces a groove can be cut into."""
     FreeCADGui.Selection.addSelectionGate(TurnedFaceGate())
 
 
-def resources():
+def resources() -> object:
+    """The op's command resources (PathOpGui.CommandResources)."""
     return PathOpGui.CommandResources(
         "Groove", groove_op.Create, GroovePage, ICON,
         FreeCAD.Qt.QT_TRANSLATE_NOOP("FreeCADGroove_Groove", "Groove"), None,
@@ -590,7 +510,7 @@ def resources():
     )
 
 
-def attach_view_provider(obj, delete_on_reject=False):
+def attach_view_provider(obj: object, delete_on_reject: bool = False) -> None:
     """Give the op its view provider (ops made by scripts get one too)."""
     vobj = obj.ViewObject
     if vobj is None:
@@ -600,7 +520,7 @@ def attach_view_provider(obj, delete_on_reject=False):
     vobj.Proxy.setDeleteObjectsOnReject(delete_on_reject)
 
 
-def create(job):
+def create(job: object) -> object:
     """A new Groove op in ``job`` with its task panel open (what the command
     does). Cancel deletes it again. Returns the op, or None."""
     doc = job.Document
@@ -609,9 +529,9 @@ def create(job):
         obj = groove_op.Create("Groove", parentJob=job)
         attach_view_provider(obj, delete_on_reject=True)
         obj.ViewObject.Visibility = True
-    except Exception as e:
+    except Exception as error:
         doc.abortTransaction()
-        FreeCAD.Console.PrintError(translate(CONTEXT, "Groove: cannot create the operation: {0}").format(e) + "\n")
+        FreeCAD.Console.PrintError(translate(CONTEXT, "Groove: cannot create the operation: {0}").format(error) + "\n")
         return None
     doc.commitTransaction()
     obj.ViewObject.Document.setEdit(obj.ViewObject, 0)

@@ -6,6 +6,11 @@ shoulder face looking +Z, the left end face looking -Z and a blind bore open
 toward +Z. A Job and tool controller are built by script (parts.py, shared
 with test_posts.py and benchmarks/bench_freecad.py) and a Groove op put on
 each face.
+
+The expected Paths are worked out here, not taken from the op: the CYCLE93
+call and the start point of each groove by hand (CASES, STARTS), the moves
+from the engine's own expansion of that call, written in the Path's form
+spelled out in PATH_FORM.
 """
 
 import math
@@ -14,16 +19,21 @@ import FreeCAD
 import Part
 import Path.Main.Job as PathJob
 import pytest
+from parts import FACES, FEED_MM_MIN, face_name, make_shop, shaft_shape  # noqa: F401 - shaft_shape: test_posts uses it
 
 from freecad_groove import make_groove
+from freecad_groove.engine import GroovingTool, MachineState, Settings
+from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.moves import DWELL, FEED, RAPID
 from freecad_groove.freecad import faces as faces_mod
 from freecad_groove.freecad import groove_op
-from parts import FACES, FEED_MM_MIN, face_name, make_shop, shaft_shape
+from freecad_groove.freecad.groove_plan import rapids_clear
+from freecad_groove.freecad.links import SafeEnvelope
 
 V = FreeCAD.Vector
 
 CONE_ANGLE = math.degrees(math.atan2(4, 10))  # both cones change radius by 4 over 10 in Z
+TAN_30 = math.tan(math.radians(30))
 
 # name -> (make_groove keywords, GrooveKind, AXFA, AXSA, ANGC, TYP)
 CASES = {
@@ -33,6 +43,37 @@ CASES = {
     "shoulder": (dict(position=1, width=3.5), "face, external", 19.0, 30.0, 90.0, 6),
     "left_end": (dict(position=2), "face, internal", 14.0, 0.0, 90.0, 8),
     "bore": (dict(position=10, depth=1.5), "longitudinal, internal", 6.0, 50.0, 0.0, 7),
+}
+
+# The shaft's safe envelope (Retract 0 = 1 mm clearance): its largest radius
+# R20 and its Z extent 0..60, 1 mm out.
+R_SAFE, Z_TOP, Z_BOTTOM = 21.0, 61.0, -1.0
+BLADE = 3.0  # the blade's width (tool_width)
+# name -> the first groove's start point (x, z), worked out by hand:
+# - longitudinal external: on the safe cylinder, the blade (its minus corner
+#   on the -Z side) over its first plunge at the groove's start edge AXSA;
+# - face grooves: on the safe cylinder (the minus corner on the blade's -X
+#   side: the blade wholly outside), 1 mm (the clearance) off the face;
+# - the bore: beyond the part's +Z end, 1 mm inside the bore wall R6.
+STARTS = {
+    "cylinder": (R_SAFE, 25.0 - BLADE),
+    "cone_up": (R_SAFE, 7.0 - BLADE),
+    "cone_down": (R_SAFE, 58.0 - BLADE),
+    "shoulder": (R_SAFE, 30.0 + 1.0),
+    "left_end": (R_SAFE, 0.0 - 1.0),
+    "bore": (6.0 - 1.0, Z_TOP),
+}
+# With the plus reference corner (and 0.1 mm flank allowance): the corner on
+# the blade's +Z side stands the allowance off the start edge; on face grooves
+# it is on the blade's +X side, the blade still wholly outside; in the bore
+# the blade is wholly beyond the +Z end.
+PLUS_STARTS = {
+    "cylinder": (R_SAFE, 25.0 - 0.1),
+    "cone_up": (R_SAFE, 7.0 - 0.1),
+    "cone_down": (R_SAFE, 58.0 - 0.1),
+    "shoulder": (R_SAFE + BLADE, 31.0),
+    "left_end": (R_SAFE + BLADE, -1.0),
+    "bore": (5.0, Z_TOP + BLADE),
 }
 
 
@@ -62,36 +103,56 @@ def groove(shop, key, **extra):
 
 def path_moves(op):
     """[(name, params)] of the op's Path without comments and G18."""
-    out = []
-    for c in op.Path.Commands:
-        if c.Name.startswith("(") or c.Name == "G18":
-            continue
-        out.append((c.Name, dict(c.Parameters)))
-    return out
+    return [(command.Name, dict(command.Parameters)) for command in op.Path.Commands
+            if not command.Name.startswith("(") and command.Name != "G18"]
 
 
-def expected_moves(op):
-    """What the Path must hold after G18: per groove the link rapids, then the
-    engine's own expansion of the derived call from the derived start point."""
-    f = op.ToolController.HorizFeed.Value
-    out = []
-    for plan in op.Proxy.plan(op):
-        for x, z in plan.link:
-            params = {}
-            if x is not None:
-                params["X"] = x
-            if z is not None:
-                params["Z"] = z
-            out.append(("G0", params))
-        for m in plan.cycle.expand(plan.start, plan.settings):
-            if m.kind == RAPID:
-                out.append(("G0", {"X": m.x, "Z": m.z}))
-            elif m.kind == FEED:
-                out.append(("G1", {"X": m.x, "Z": m.z, "F": f}))
-            else:
-                assert m.kind == DWELL
-                out.append(("G4", {"P": m.p}))
-    return out
+def cycle93(axfa, axsa, typ, angc=0.0, **words):
+    """The CYCLE93 call an op must derive: a groove 4 wide, 2 deep, infeed 1,
+    no flank angles, corners or allowances, unless ``words`` say otherwise."""
+    values = dict(widg=4.0, depg=2.0, ang1=0.0, ang2=0.0, rco1=0.0, rco2=0.0, rci1=0.0, rci2=0.0,
+                  fal1=0.0, fal2=0.0, idep=1.0, dwt=0.0, vrt=0.0)
+    values.update(words)
+    return Cycle93(axfa=axfa, axsa=axsa, angc=angc, typ=typ, **values)
+
+
+def first_link(start, on="side"):
+    """The first groove's link from wherever the tool is: one axis onto the
+    envelope (out to the safe radius, or beyond the part's +Z end for "top"),
+    then along it to ``start``."""
+    x, z = start
+    return [(x, None), (x, z)] if on == "side" else [(None, z), (x, z)]
+
+
+TOOL = GroovingTool(BLADE, 0.2)  # tool_width 3, tool_corner_radius 0.2, the minus reference corner
+FEED_MM_S = FEED_MM_MIN / 60.0  # the tool controller's feed as the Path holds it (FreeCAD's mm/s)
+
+# The Path's form of each kind of engine move, spelled out: (command, words).
+PATH_FORM = {
+    RAPID: lambda move, feed: ("G0", {"X": move.x, "Z": move.z}),
+    FEED: lambda move, feed: ("G1", {"X": move.x, "Z": move.z, "F": feed}),
+    DWELL: lambda move, feed: ("G4", {"P": move.p}),
+}
+
+
+def groove_path(link, call, start, tool=TOOL, feed=FEED_MM_S):
+    """The Path the op must write for one groove, after its comment: every
+    link step a G0 with the axes it moves, then the engine's expansion of
+    ``call`` from ``start`` (x, z) with ``tool`` in PATH_FORM (``feed`` in mm/s)."""
+    path = [("G0", {axis: value for axis, value in zip("XZ", step) if value is not None}) for step in link]
+    for move in call.expand(MachineState(x=start[0], z=start[1]), Settings(tool=tool)):
+        path.append(PATH_FORM[move.kind](move, feed))
+    return path
+
+
+def case_path(key, start=None, tool=TOOL, feed=FEED_MM_S, **words):
+    """groove_path of the CASES groove ``key`` from its hand-worked start point
+    (or ``start``); ``words`` change its CYCLE93 call."""
+    kw, _kind, axfa, axsa, angc, typ = CASES[key]
+    words = dict(dict(widg=kw.get("width", 4.0), depg=kw.get("depth", 2.0), typ=typ), **words)
+    call = cycle93(axfa, axsa, angc=angc, **words)
+    start = STARTS[key] if start is None else start
+    return groove_path(first_link(start, "top" if key == "bore" else "side"), call, start, tool, feed)
 
 
 def assert_same_moves(actual, expected, tol=1e-6):
@@ -125,7 +186,7 @@ def test_derived_parameters_and_path(shop, key):
     assert commands[0].Name == "(%s)" % op.Label
     assert commands[1].Name == "G18"
     moves = path_moves(op)
-    assert_same_moves(moves, expected_moves(op))
+    assert_same_moves(moves, case_path(key))
     assert any(name == "G1" for name, _p in moves)
     assert all("Y" not in p for _n, p in moves)
     assert all(p["F"] == pytest.approx(FEED_MM_MIN / 60.0) for n, p in moves if n == "G1")
@@ -166,7 +227,7 @@ def test_chr_chamfers_add_ten_to_typ(shop):
     assert op.TYP == 15
     (call, _s, _st), = op.Proxy.cycles(op)
     assert (call.rco1, call.rco2, call.rci1, call.rci2) == (-0.5, 0.0, 0.0, 0.3)
-    assert_same_moves(path_moves(op), expected_moves(op))
+    assert_same_moves(path_moves(op), case_path("cylinder", typ=15, rco1=-0.5, rci2=0.3))
 
 
 def test_several_grooves_pitch_toward_minus_z(shop):
@@ -178,7 +239,11 @@ def test_several_grooves_pitch_toward_minus_z(shop):
     assert sum(1 for c in op.Path.Commands if "groove" in c.Name) == 3
     assert plans[1].link == [(21.0, plans[1].start.z)]  # along Z on the safe cylinder
     moves = path_moves(op)
-    assert_same_moves(moves, expected_moves(op))
+    # the blade 3 wide over each groove's +Z edge, from one to the next along Z on the safe cylinder
+    expected = []
+    for axsa, link in ((28.0, first_link((R_SAFE, 25.0))), (22.0, [(R_SAFE, 19.0)]), (16.0, [(R_SAFE, 13.0)])):
+        expected += groove_path(link, cycle93(20.0, axsa, 5, dwt=0.5), (R_SAFE, axsa - BLADE))
+    assert_same_moves(moves, expected)
     assert any(n == "G4" and p["P"] == pytest.approx(0.5) for n, p in moves)
 
 
@@ -192,7 +257,8 @@ def test_tool_size_comes_from_the_bit_when_it_has_one(shop):
     op = groove(shop, "cylinder", tool_width=3, tool_corner_radius=0.2)
     (_c, settings, _st), = op.Proxy.cycles(op)
     assert (settings.tool.width, settings.tool.corner_radius) == (2.5, 0.1)
-    assert_same_moves(path_moves(op), expected_moves(op))
+    # the 2.5 wide blade over the groove's +Z edge Z25
+    assert_same_moves(path_moves(op), case_path("cylinder", start=(R_SAFE, 25.0 - 2.5), tool=GroovingTool(2.5, 0.1)))
 
 
 # -- errors -----------------------------------------------------------------------
@@ -217,7 +283,7 @@ def test_engine_error_marks_the_op_invalid_and_a_fix_recovers(shop):
     doc.recompute()
     assert op.isValid(), op.getStatusString()
     assert "Invalid" not in op.State
-    assert_same_moves(path_moves(op), expected_moves(op))
+    assert_same_moves(path_moves(op), case_path("cylinder"))
 
 
 def test_groove_past_the_face_is_refused(shop):
@@ -273,89 +339,22 @@ def test_face_analysis_directions():
     # a steep cone (60 degrees off Z) takes face grooves; its Z normal decides external/internal
     steep = Part.makeCone(20, 10, 10 * math.tan(math.radians(30)))  # radius 20 -> 10 over 5.77 in Z
     cone = [f for f in steep.Faces if isinstance(f.Surface, Part.Cone)][0]
-    gf = faces_mod.analyse_face(cone, "Steep")
-    assert (gf.kind, gf.external) == ("face", True)
-    assert gf.angc == pytest.approx(180 - 60)
-    assert gf.describe() == "oblique face (ANGC 120°), external"
+    steep_face = faces_mod.analyse_face(cone, "Steep")
+    assert (steep_face.kind, steep_face.external) == ("face", True)
+    assert steep_face.angc == pytest.approx(180 - 60)
+    assert steep_face.describe() == "oblique face (ANGC 120°), external"
 
 
 def test_rapids_through_the_part_are_detected():
-    env = groove_op.SafeEnvelope([shaft_shape()], 1.0)
-    assert (env.r_safe, env.z_top, env.z_bottom) == (21.0, 61.0, -1.0)
-    assert env.hits((21.0, 20.0), (5.0, 20.0))  # radially into the R20 cylinder
-    assert not env.hits((21.0, 20.0), (21.0, 65.0))
-    assert not env.hits((5.0, 61.0), (5.0, 30.0))  # down the bore
-    assert env.hits((5.0, 61.0), (5.0, 20.0))  # through the bore's bottom
+    envelope = SafeEnvelope([shaft_shape()], 1.0)
+    assert (envelope.r_safe, envelope.z_top, envelope.z_bottom) == (21.0, 61.0, -1.0)
+    assert envelope.hits((21.0, 20.0), (5.0, 20.0))  # radially into the R20 cylinder
+    assert not envelope.hits((21.0, 20.0), (21.0, 65.0))
+    assert not envelope.hits((5.0, 61.0), (5.0, 30.0))  # down the bore
+    assert envelope.hits((5.0, 61.0), (5.0, 20.0))  # through the bore's bottom
 
 
-# -- documents ----------------------------------------------------------------------
-
-
-def _values(op):
-    out = {}
-    for name in groove_op.PROPERTY_NAMES:
-        v = getattr(op, name)
-        out[name] = round(v.Value, 9) if hasattr(v, "Value") else v
-    return out
-
-
-def _commands(op):
-    return [(c.Name, {k: round(v, 6) for k, v in c.Parameters.items()}) for c in op.Path.Commands]
-
-
-def test_save_and_reopen(shop, tmp_path):
-    doc, shaft, job, tc = shop
-    op = groove(shop, "cone_up", flank_angle1=10, edge_corner2=0.5, edge_corner2_type="Radius", base_allowance=0.2,
-                flank_allowance=0.1, dwell=0.3, retract=0.5)
-    assert op.isValid(), op.getStatusString()
-    values, commands, name = _values(op), _commands(op), op.Name
-    path = str(tmp_path / "groove.FCStd")
-    doc.saveAs(path)
-    FreeCAD.closeDocument(doc.Name)
-    doc2 = FreeCAD.openDocument(path)
-    try:
-        op2 = doc2.getObject(name)
-        assert op2 is not None
-        assert isinstance(op2.Proxy, groove_op.ObjectGroove)
-        assert _values(op2) == values
-        assert _commands(op2) == commands
-        assert op2.getEditorMode("AXFA") == ["ReadOnly"]
-        doc2.recompute()
-        assert op2.isValid(), op2.getStatusString()
-        assert _commands(op2) == commands
-    finally:
-        FreeCAD.closeDocument(doc2.Name)
-
-
-def test_missing_properties_come_back_with_defaults(shop, tmp_path):
-    doc, shaft, job, tc = shop
-    op = groove(shop, "cylinder", pitch=5)
-    name = op.Name
-    for prop in ("Pitch", "ChamferMeasure", "GrooveCount", "AXFA"):
-        op.removeProperty(prop)
-    assert not hasattr(op, "Pitch")
-    op.Proxy.onDocumentRestored(op)
-    assert op.Pitch.Value == 0.0
-    assert op.ChamferMeasure == "Chamfer length (CHF)"
-    assert op.GrooveCount == 1
-    assert op.getEditorMode("AXFA") == ["ReadOnly"]
-    doc.recompute()
-    assert op.isValid() and op.AXFA.Value == 20.0
-    # the same through a saved document that lacks the properties
-    op.removeProperty("Dwell")
-    op.removeProperty("ReferenceCorner")
-    path = str(tmp_path / "old.FCStd")
-    doc.saveAs(path)
-    FreeCAD.closeDocument(doc.Name)
-    doc2 = FreeCAD.openDocument(path)
-    try:
-        op2 = doc2.getObject(name)
-        assert op2.Dwell == 0.0
-        assert op2.ReferenceCorner == "minus"
-        doc2.recompute()
-        assert op2.isValid(), op2.getStatusString()
-    finally:
-        FreeCAD.closeDocument(doc2.Name)
+# -- approaching the groove ------------------------------------------------------
 
 
 def _revolved(doc, name, profile):
@@ -366,21 +365,15 @@ def _revolved(doc, name, profile):
 
 
 def _find(obj, predicate):
-    for i, face in enumerate(obj.Shape.Faces):
-        try:
-            gf = faces_mod.analyse_face(face, "Face%d" % (i + 1))
-        except ValueError:
-            continue
-        if predicate(gf):
-            return "Face%d" % (i + 1)
-    raise AssertionError("no such face")
+    """The name of the one face of ``obj`` that ``predicate`` accepts."""
+    return face_name(obj.Shape, "wanted", {"wanted": predicate})
 
 
 def _rapids_outside(op, part):
     """Every rapid of the approach and of the final retreat stays out of the part."""
-    env = groove_op.SafeEnvelope([part.Shape], 1.0)
+    envelope = SafeEnvelope([part.Shape], 1.0)
     for plan in op.Proxy.plan(op):
-        assert groove_op._rapids_clear(env, (plan.start.x, plan.start.z), plan.moves)
+        assert rapids_clear(envelope, (plan.start.x, plan.start.z), plan.moves)
 
 
 def test_bore_open_toward_minus_z_is_entered_from_below(doc):
@@ -397,7 +390,10 @@ def test_bore_open_toward_minus_z_is_entered_from_below(doc):
     assert plan.start.z == pytest.approx(-4.0)  # the 3 mm blade wholly 1 mm below the part
     assert plan.start.x == pytest.approx(5.0)
     _rapids_outside(op, part)
-    assert_same_moves(path_moves(op), expected_moves(op))
+    # out to the safe radius R21, below the part, in to the start point; the Job's own tool controller feeds at 0
+    start = (5.0, -4.0)
+    expected = groove_path([(21.0, None), (21.0, -4.0), start], cycle93(6.0, 30.0, 7, depg=1.0), start, feed=0.0)
+    assert_same_moves(path_moves(op), expected)
 
 
 def test_face_groove_inside_a_recess_is_approached_along_z(doc):
@@ -413,7 +409,10 @@ def test_face_groove_inside_a_recess_is_approached_along_z(doc):
     plan, = op.Proxy.plan(op)
     assert plan.start_on == "top" and plan.start.z == pytest.approx(31.0)
     _rapids_outside(op, part)
-    assert_same_moves(path_moves(op), expected_moves(op))
+    # a column over the first plunge (the blade's minus corner 3 inside the groove's outer edge R14.5)
+    start = (14.5 - BLADE, 31.0)
+    expected = groove_path(first_link(start, "top"), cycle93(14.5, 25.0, 6, 90.0, widg=3.5), start, feed=0.0)
+    assert_same_moves(path_moves(op), expected)
     # the shoulder-like outer end face (R15..R20 at Z30) is reached radially
     rim = _find(part, lambda f: f.surface == "plane" and abs(f.z_min - 30) < 1e-9 and f.r_min > 14)
     op2 = make_groove(job, (part, rim), position=0.5, width=3.2, depth=1, tool_width=3, tool_corner_radius=0.2)
@@ -434,9 +433,12 @@ def test_steep_cone_takes_a_face_groove(doc):
     assert op.TYP == 6
     assert op.ANGC.Value == pytest.approx(120.0)
     assert op.AXFA.Value == pytest.approx(26.0)
-    assert op.AXSA.Value == pytest.approx(10 + 4 * math.tan(math.radians(30)))
+    assert op.AXSA.Value == pytest.approx(10 + 4 * TAN_30)
     _rapids_outside(op, part)
-    assert_same_moves(path_moves(op), expected_moves(op))
+    # on the safe cylinder R31, 1 mm above the cone where the blade (R23..26) plunges first: at R23
+    start = (31.0, 10 + (30 - 23) * TAN_30 + 1.0)
+    expected = groove_path(first_link(start), cycle93(26.0, 10 + 4 * TAN_30, 6, 120.0), start, feed=0.0)
+    assert_same_moves(path_moves(op), expected)
 
 
 def test_one_op_on_several_faces_links_along_the_envelope(shop):
@@ -450,7 +452,12 @@ def test_one_op_on_several_faces_links_along_the_envelope(shop):
     plans = op.Proxy.plan(op)
     assert [p.start_on for p in plans] == ["top", "side", "side"]
     assert [c.Name for c in op.Path.Commands[:3]] == ["(%s)" % op.Label, "(three faces)", "G18"]
-    assert_same_moves(path_moves(op), expected_moves(op))
+    # bore (from beyond the +Z end), cylinder (up, out and down the safe cylinder), left end (down it)
+    bore_start, cylinder_start, end_start = (5.0, Z_TOP), (R_SAFE, 25.0 - BLADE), (R_SAFE, Z_BOTTOM)
+    expected = groove_path(first_link(bore_start, "top"), cycle93(6.0, 55.0, 7, depg=1.0), bore_start)
+    expected += groove_path([(R_SAFE, Z_TOP), cylinder_start], cycle93(20.0, 25.0, 5, depg=1.0), cylinder_start)
+    expected += groove_path([end_start], cycle93(11.0, 0.0, 8, 90.0, depg=1.0), end_start)
+    assert_same_moves(path_moves(op), expected)
     for plan in plans[1:]:
         prev = None
         for x, z in plan.link:  # one axis at a time, never inside R21 x Z-1..61
@@ -469,7 +476,9 @@ def test_plus_reference_corner(shop, key):
     assert op.isValid(), op.getStatusString()
     (_c, settings, _st), = op.Proxy.cycles(op)
     assert settings.tool.reference == "plus"
-    assert_same_moves(path_moves(op), expected_moves(op))
+    expected = case_path(key, start=PLUS_STARTS[key], tool=GroovingTool(BLADE, 0.2, "plus"), ang2=5.0, rci1=0.3,
+                         fal1=0.1, fal2=0.1)
+    assert_same_moves(path_moves(op), expected)
     _rapids_outside(op, shaft)
 
 
@@ -484,7 +493,8 @@ def test_a_job_without_tool_controller_gets_one(shop):
     assert op.ToolController == job.Tools.Group[0]
     assert op.ToolController.Label == "TC: Grooving tool"
     assert op.isValid(), op.getStatusString()
-    assert_same_moves(path_moves(op), expected_moves(op))
+    assert op.ToolController.HorizFeed.Value == 0.0  # a new tool controller's feed
+    assert_same_moves(path_moves(op), case_path("cylinder", feed=0.0))
 
 
 def test_make_groove_rejects_unknown_keywords(shop):

@@ -10,15 +10,26 @@ import FreeCAD
 import FreeCADGui
 import Part
 import pytest
+from gui_helpers import (  # noqa: E402
+    choose,
+    make_gui_shop,
+    open_panel,
+    process,
+    roomy_task_panel,
+    screenshot,
+    show_part,
+    start_groove_command,
+    task_button,
+    type_into,
+    version,
+    wait_for,
+    zoom_to,
+)
+from parts import face_name  # noqa: E402
 from PySide import QtGui
 
-from gui_helpers import (  # noqa: E402
-    choose, make_gui_shop, open_panel, process, roomy_task_panel, screenshot, show_part, start_groove_command,
-    task_button, type_into, version, wait_for, zoom_to)
-from parts import face_name  # noqa: E402
-
 from freecad_groove import make_groove  # noqa: E402
-from freecad_groove.gui import task_panel  # noqa: E402
+from freecad_groove.gui import task_panel, widgets  # noqa: E402
 
 Ok, Apply, Cancel = QtGui.QDialogButtonBox.Ok, QtGui.QDialogButtonBox.Apply, QtGui.QDialogButtonBox.Cancel
 TOOL_WIDTH = 3.0  # the default tool bit has no Width: the op's ToolWidth default
@@ -98,7 +109,7 @@ def test_groove_made_in_the_panel(shop):
     base_page = next(p for p in panel.featurePages if isinstance(p, task_panel.BaseGeometryPage))
     assert base_page.form.baseList.count() == 1
     assert "longitudinal, external" in base_page.kind_label.text()
-    assert task_panel.child(page.form, "angc").text().startswith("0")
+    assert widgets.child(page.form, "angc").text().startswith("0")
 
     # The preview is in the 3D view: one groove section, the toolpath.
     assert page.preview.in_scene()
@@ -172,7 +183,7 @@ def test_invalid_width_shows_the_message_and_ok_is_refused(shop):
     replan(page, page.field("Width"), "2 mm")
     assert page.error is not None
     assert "WIDG=2" in page.error and "61602" in page.error
-    label = task_panel.child(page.form, "errorLabel")
+    label = widgets.child(page.form, "errorLabel")
     assert label.isVisible() and label.text() == page.error
     assert page.field("Width").property("grooveInvalid") is True
     assert not task_button(panel, Ok).isEnabled()
@@ -293,7 +304,7 @@ def test_a_blade_wider_than_the_groove_is_shown_on_the_tool_page(shop):
     assert page.field("ToolWidth").isEnabled()  # the default tool bit has no Width
     replan(page, page.field("ToolWidth"), "5 mm")
     assert page.error is not None and "tool width 5" in page.error and "61602" in page.error
-    label = task_panel.child(tool_page.form, "errorLabel")
+    label = widgets.child(tool_page.form, "errorLabel")
     assert label.text() == page.error and not label.isHidden()
     assert page.field("ToolWidth").property("grooveInvalid") is True
     assert page.field("Width").property("grooveInvalid") is True

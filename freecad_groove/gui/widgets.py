@@ -1,0 +1,153 @@
+"""Small Qt helpers the Groove task panel's pages are built from: loading a
+page's .ui form, finding its widgets, filling and reading combo boxes,
+marking invalid fields, showing the engine's message, and the quantity fields
+bound to op properties.
+
+GUI layer: Qt only through FreeCAD's ``PySide`` shim. Widgets and FreeCAD
+objects are typed ``object``.
+"""
+
+import os
+
+import FreeCAD
+import FreeCADGui
+from PySide import QtCore, QtGui
+
+from . import PANELS
+
+translate = FreeCAD.Qt.translate
+CONTEXT = "FreeCADGroove"
+
+INVALID_STYLE = "border: 2px solid #d00000;"
+ERROR_STYLE = "color: #b00000;"
+INVALID_PROPERTY = "grooveInvalid"  # the Qt property that marks a field invalid
+ERROR_LABEL = "errorLabel"  # object name of the label the engine's message shows in
+
+
+def load_form(name: str) -> object:
+    """A page's form from resources/panels/<name> (a .ui file)."""
+    return FreeCADGui.PySideUic.loadUi(os.path.join(PANELS, name))
+
+
+def child(form: object, name: str) -> object:
+    """A form's widget by object name (not getattr: "width" is also QWidget.width())."""
+    return form.findChild(QtCore.QObject, name)
+
+
+def svg_pixmap(path: str, width: int, height: int) -> object:
+    """An SVG drawn with QtSvg (FreeCAD 1.1's Qt has no SVG image plugin for QIcon)."""
+    from PySide import QtSvg
+
+    pixmap = QtGui.QPixmap(width, height)
+    pixmap.fill(QtCore.Qt.transparent)
+    painter = QtGui.QPainter(pixmap)
+    QtSvg.QSvgRenderer(path).render(painter)
+    painter.end()
+    return pixmap
+
+
+def fill_combo(combo: object, texts: dict) -> None:
+    """Fill a combo box from {stored value: text shown (translated here)}."""
+    combo.blockSignals(True)
+    combo.clear()
+    for value, text in texts.items():
+        combo.addItem(translate(CONTEXT, text), value)
+    combo.blockSignals(False)
+
+
+def select_data(combo: object, value: str) -> None:
+    """Show the combo box entry whose stored value is ``value``, without a signal."""
+    combo.blockSignals(True)
+    index = combo.findData(value)
+    if index >= 0:
+        combo.setCurrentIndex(index)
+    combo.blockSignals(False)
+
+
+def connect_changed(widget: object, slot: object) -> None:
+    """Call slot() whenever the user changes the widget's value."""
+    if isinstance(widget, QtGui.QComboBox):
+        widget.currentIndexChanged.connect(lambda *_a: slot())
+    else:
+        widget.valueChanged.connect(lambda *_a: slot())
+
+
+def mark_invalid(widget: object, invalid: bool) -> None:
+    """Frame a field red while its value is what makes the groove invalid."""
+    if widget is None:
+        return
+    if invalid:
+        if widget.property(INVALID_PROPERTY) is not True:
+            widget.setProperty(INVALID_PROPERTY, True)
+            widget.setStyleSheet(INVALID_STYLE)
+    elif widget.property(INVALID_PROPERTY) is True:
+        widget.setProperty(INVALID_PROPERTY, False)
+        widget.setStyleSheet("")
+
+
+def show_error(label: object, message: object) -> None:
+    """Show ``message`` in an error label, or hide the label (message None or "")."""
+    if label is None:
+        return
+    label.setText(message or "")
+    label.setStyleSheet(ERROR_STYLE)
+    label.setVisible(bool(message))
+
+
+def add_to_layout(layout: object, widget: object) -> None:
+    """Add a widget at the end of a layout (a new full-width row of a grid)."""
+    if isinstance(layout, QtGui.QGridLayout):
+        layout.addWidget(widget, layout.rowCount(), 0, 1, max(1, layout.columnCount()))
+    else:
+        layout.addWidget(widget)
+
+
+def _new_label(form: object, name: str) -> object:
+    label = QtGui.QLabel(form)
+    label.setObjectName(name)
+    label.setWordWrap(True)
+    return label
+
+
+def add_label(form: object, name: str) -> object:
+    """A word-wrapping label named ``name`` at the end of a form's layout."""
+    label = _new_label(form, name)
+    add_to_layout(form.layout(), label)
+    return label
+
+
+def add_error_label(form: object) -> object:
+    """The label the engine's message shows in (objectName errorLabel), hidden while all is well."""
+    label = _new_label(form, ERROR_LABEL)
+    label.setVisible(False)
+    add_to_layout(form.layout(), label)
+    return label
+
+
+class QuantityFields:
+    """Quantity fields (Gui::QuantitySpinBox, unit set in the .ui) for op
+    properties. Not CAM's PathGuiUtil.QuantitySpinBox: that one resets a field
+    from its property whenever the field gets focus, which would drop a value
+    typed earlier, since this panel writes to the op only on OK or Apply.
+
+    ``pairs``: ((widget name, op property), ...)."""
+
+    def __init__(self, form: object, pairs: tuple):
+        self.widgets = {prop: child(form, name) for name, prop in pairs}
+
+    def set_from(self, obj: object) -> None:
+        """Show the op's values (no change signals)."""
+        for prop, widget in self.widgets.items():
+            widget.blockSignals(True)
+            widget.setProperty("rawValue", float(getattr(obj, prop).Value))
+            widget.blockSignals(False)
+
+    def write_to(self, obj: object) -> None:
+        """Write the values shown into the op (only those that differ)."""
+        for prop, value in self.values().items():
+            if abs(getattr(obj, prop).Value - value) > 1e-12:
+                setattr(obj, prop, value)
+
+    def values(self) -> dict:
+        """{property: value in mm or degrees} as the fields show them now."""
+        return {prop: float(widget.property("rawValue")) for prop, widget in self.widgets.items()}

@@ -1,0 +1,93 @@
+"""A document saved from FreeCAD 1.1's GUI by the previous release (commit
+bfb45ff), opened in FreeCAD's GUI (1.1 and 1.0, under Xvfb) with this code.
+
+tests/freecad/data/groove_gui_saved_at_bfb45ff.FCStd (made by
+tests/freecad/data/make_saved_documents.py) stores the class paths only a GUI
+document and a tool bit hold: the op's view provider
+``freecad_groove.gui.task_panel.ViewProvider`` with its page class
+``freecad_groove.gui.task_panel.GroovePage``, and the grooving blade's tool
+bit ``freecad_groove.freecad.toolbit.ToolBitGrooving`` (a FreeCAD 1.1 class:
+FreeCAD 1.0 opens the document, reports that it cannot restore the bit's
+proxy, and keeps the bit's Width and CornerRadius, which the op reads).
+"""
+
+import os
+
+import FreeCADGui
+import pytest
+from gui_helpers import open_panel, process, screenshot, task_button, version, wait_for
+from PySide import QtGui
+
+# isort: split
+# (gui_helpers has put tests/freecad on sys.path)
+from documents import DATA, opened, path_commands
+
+from freecad_groove.freecad import groove_op, toolbit
+from freecad_groove.gui import ICON, task_panel
+
+GUI_AT_BFB45FF = os.path.join(DATA, "groove_gui_saved_at_bfb45ff.FCStd")
+# What make_saved_documents.py made: the blade, and the groove on the R20 cylinder.
+BLADE_WIDTH, BLADE_CORNER_RADIUS = 2.5, 0.1
+GROOVE = {"Position": 5.0, "Width": 4.0, "Depth": 2.0, "Infeed": 1.0}
+
+
+@pytest.fixture
+def saved():
+    """(document, its Groove op) as bfb45ff saved them."""
+    FreeCADGui.getMainWindow().showMaximized()
+    FreeCADGui.activateWorkbench("CAMWorkbench")
+    with opened(GUI_AT_BFB45FF) as doc:
+        process()
+        yield doc, doc.getObject("Groove")
+        FreeCADGui.Control.closeDialog()
+        process()
+    process()
+
+
+def test_the_op_keeps_this_codes_view_provider(saved):
+    doc, op = saved
+    view_provider = op.ViewObject.Proxy
+    assert isinstance(view_provider, task_panel.ViewProvider)
+    assert view_provider.getIcon() == ICON
+    # what the view provider stored: the page FreeCAD builds to edit the op
+    assert (view_provider.OpPageModule, view_provider.OpPageClass) == ("freecad_groove.gui.task_panel", "GroovePage")
+
+
+def test_the_op_recomputes_to_the_path_it_saved(saved):
+    doc, op = saved
+    assert isinstance(op.Proxy, groove_op.ObjectGroove)
+    path = path_commands(op)
+    op.touch()
+    doc.recompute()
+    assert op.isValid(), op.getStatusString()
+    assert any(name == "G1" for name, _words in path_commands(op))
+    assert path_commands(op) == path
+
+
+def test_the_tool_bit_still_gives_the_blade_size(saved):
+    doc, op = saved
+    bit = op.ToolController.Tool
+    assert (bit.Width.Value, bit.CornerRadius.Value) == (BLADE_WIDTH, BLADE_CORNER_RADIUS)
+    if toolbit.NEW_TOOLBITS:
+        assert isinstance(bit.Proxy, toolbit.ToolBitGrooving)
+    else:  # FreeCAD 1.0 has no asset tool bits, so no such class: the bit comes back without a proxy
+        assert getattr(bit, "Proxy", None) is None
+    (_call, settings, _start), = op.Proxy.cycles(op)
+    assert (settings.tool.width, settings.tool.corner_radius) == (BLADE_WIDTH, BLADE_CORNER_RADIUS)
+
+
+def test_double_click_opens_the_groove_panel(saved):
+    doc, op = saved
+    FreeCADGui.getDocument(doc.Name).setEdit(op.Name)  # what a double-click in the tree does
+    panel = wait_for(lambda: open_panel(doc), what="the Groove task panel")
+    page = panel.groove_page
+    assert isinstance(page, task_panel.GroovePage)
+    for prop, value in GROOVE.items():
+        assert page.field(prop).property("rawValue") == pytest.approx(value), prop
+    wait_for(lambda: page.replans > 0, what="the preview")
+    assert page.error is None and len(page.preview.sections) == 1
+    assert not page.field("ToolWidth").isEnabled()  # the tool bit gives the width
+    screenshot("%s-saved-at-bfb45ff" % version())
+    task_button(panel, QtGui.QDialogButtonBox.Cancel).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    assert doc.getObject(op.Name) is op and op.Width.Value == GROOVE["Width"]
