@@ -12,11 +12,9 @@ import math
 import os
 import sys
 
-import pytest
-
 import FreeCAD
 import Path
-
+import pytest
 import seed_case
 
 TOL = 1e-6  # FreeCAD writes G-code text with 6 decimals

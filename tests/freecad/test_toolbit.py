@@ -7,12 +7,11 @@ import os
 
 import FreeCAD
 import pytest
+import test_groove_op as tg
+from parts import face_name
 
 from freecad_groove import make_groove
 from freecad_groove.freecad import toolbit
-from parts import face_name
-import test_groove_op as tg
-
 
 # The Groove op tests' document and shop fixtures.
 doc, shop = tg.doc, tg.shop

@@ -10,5 +10,6 @@ tests/freecad_gui/test_*.py, the JSON result in FREECAD_GROOVE_RESULT.
 import os
 
 os.environ["FREECAD_GROOVE_SUITE"] = "gui"
-with open(os.path.join(os.environ.get("FREECAD_GROOVE_CHECKOUT", "/mnt/freecad-groove"), "tests", "freecad", "run_suite.py")) as _f:
+_checkout = os.environ.get("FREECAD_GROOVE_CHECKOUT", "/mnt/freecad-groove")
+with open(os.path.join(_checkout, "tests", "freecad", "run_suite.py")) as _f:
     exec(compile(_f.read(), _f.name, "exec"))
