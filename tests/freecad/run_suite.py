@@ -4,10 +4,8 @@ Executed *by* freecadcmd (FreeCAD 1.1 swallows print() of a script file given
 as `freecadcmd file.py`, so this file is exec'd from `-c`, and the result goes
 to a file rather than to stdout):
 
-    freecadcmd -M CHECKOUT -c "import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT']
-                                                     + '/tests/freecad/run_suite.py').read())"
-
-(one line)
+    freecadcmd -M CHECKOUT -c "$CODE"
+    CODE="import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT'] + '/tests/freecad/run_suite.py').read())"
 
 (`-M CHECKOUT` loads the checkout as a FreeCAD Mod, as an installed add-on
 would be. Keep the -c text short: FreeCAD 1.1 crashes on 256 characters or
