@@ -4,7 +4,7 @@
     python3 -m freecad_groove emit cycle93 --axfa 35 --axsa 60 ...
 
 Thin layer: argument parsing and error reporting; the work is done by
-freecad_groove.engine (program.translate_program, targets.write_program and
+freecad_groove.engine (translator.translate_program, targets.write_program and
 the cycle classes).
 
 Errors: an invalid cycle or a line the reader cannot translate prints exactly
@@ -20,20 +20,15 @@ import os
 import re
 import sys
 from dataclasses import replace
+from typing import Callable
 
 from . import __version__
+from .engine import registry
+from .engine.input_controls import DIALECTS, INPUT_CONTROLS
 from .engine.output import write_atomically
+from .engine.registry import CALL, CycleEntry, CycleWord
 
 EXIT_ERROR = 2
-
-DIALECT_HELP = {
-    "sinumerik": "Siemens (CYCLE93 calls; DIAMON/DIAMOF, G70/G71, G700/G710, G90/G91, G94/G95)",
-    "ab9": "Allen-Bradley 9/Series lathe (G77 grooving/cut-off, G76 face grooving; G07/G08, G20/G21, "
-    "G90/G91, G94/G95)",
-    "fanuc": "Fanuc lathe, G code system A (two-block G75/G74: G75 R(e) then G75 X(U) Z(W) P Q R F; "
-    "G20/G21, G98/G99, U/W incremental)",
-    "haas": "Haas lathe (one-block G75/G74 X(U) Z(W) I K D F; G20/G21, G98/G99, U/W incremental)",
-}
 
 DESCRIPTION = """\
 Expand the grooving cycles of a lathe program into plain G0/G1/G4 moves.
@@ -241,182 +236,99 @@ def _start_state(args, feed_default=None):
 
 # ---------------------------------------------------------------- emit: one cycle call
 
-# name -> (engine module, class, dialect label, [(option letters, word, kind, help)])
-# kind: "d" decimal word, "c" counted integer (Fanuc P/Q), "s" Siemens value
-_AB_HELP = {
-    "X": "groove bottom X (absolute or incremental per G90/G91; diameter in diameter mode)",
-    "Z": "Z of the LAST groove (omit for one groove)",
-    "I": "infeed per peck along X, per side",
-    "K": "distance between grooves along Z (always incremental)",
-    "F": "feed for the infeeds (optional: the active feed otherwise)",
-    "D": "rapid shift along Z at full depth (signed, away from the part; 0 when not cutting off; required)",
-}
-_AB76_HELP = {
-    "X": "X of the LAST face groove (omit for one; diameter in diameter mode)",
-    "Z": "groove bottom Z (absolute or incremental)",
-    "I": "distance between grooves along X, per side",
-    "K": "infeed per peck along Z",
-    "F": "feed for the infeeds (optional)",
-    "D": "rapid shift along X at full depth (signed, per side; required, 0 = none)",
-}
-_FANUC75_HELP = {
-    "X": "groove bottom X (diameter, absolute)",
-    "U": "groove bottom as an increment from the start X (diameter)",
-    "Z": "Z of the last groove (absolute; omit for one groove)",
-    "W": "last groove as an increment from the start Z",
-    "P": "peck depth along X in least input increments, no decimal point (P2000 = 2 mm)",
-    "Q": "groove spacing along Z in least input increments (Q5000 = 5 mm)",
-    "R": "relief along Z at the groove bottom (not on the first groove)",
-    "F": "feed (optional)",
-}
-_FANUC74_HELP = {
-    "X": "X of the last face groove (diameter; omit for one groove / peck drilling)",
-    "U": "last groove as an increment from the start X (diameter)",
-    "Z": "groove bottom Z (absolute)",
-    "W": "groove bottom as an increment from the start Z",
-    "P": "groove spacing along X in least input increments (P5000 = 5 mm)",
-    "Q": "peck depth along Z in least input increments, no decimal point (Q2000 = 2 mm)",
-    "R": "relief along X at the groove bottom (not on the first groove)",
-    "F": "feed (optional)",
-}
-_HAAS75_HELP = {
-    "X": "groove bottom X (diameter, absolute)",
-    "U": "groove bottom as an increment from the start X (diameter)",
-    "Z": "Z of the last groove (omit for one groove)",
-    "W": "last groove as an increment from the start Z",
-    "I": "peck depth along X, per side",
-    "K": "groove spacing along Z",
-    "D": "relief along Z at the groove bottom (not on the first groove)",
-    "F": "feed (optional)",
-}
-_HAAS74_HELP = {
-    "X": "X of the last face groove (diameter; omit for one)",
-    "U": "last groove as an increment from the start X (diameter)",
-    "Z": "groove bottom Z (absolute)",
-    "W": "groove bottom as an increment from the start Z",
-    "I": "groove spacing along X, per side",
-    "K": "peck depth along Z",
-    "D": "relief along X at the groove bottom (not on the first groove)",
-    "F": "feed (optional)",
-}
-_CYCLE93_HELP = (
-    ("AXFA", "start point in the transverse axis X (radius value unless --diameter-input)"),
-    ("AXSA", "start point in the longitudinal axis Z (absolute)"),
-    ("WIDG", "groove width (without sign)"),
-    ("DEPG", "groove depth (without sign; radius value unless --diameter-input)"),
-    ("ANGC", "angle between the contour and the longitudinal axis, 0..180 degrees"),
-    ("ANG1", "flank angle on the start point side, 0..<89.999 degrees"),
-    ("ANG2", "flank angle on the other side, 0..<89.999 degrees"),
-    ("RCO1", "outer edge on the start side: radius (positive) or chamfer (negative)"),
-    ("RCO2", "outer edge on the other side: radius (positive) or chamfer (negative)"),
-    ("RCI1", "groove base corner on the start side: radius (positive) or chamfer (negative)"),
-    ("RCI2", "groove base corner on the other side: radius (positive) or chamfer (negative)"),
-    ("FAL1", "finishing allowance on the groove base"),
-    ("FAL2", "finishing allowance on the flanks"),
-    ("IDEP", "infeed depth per plunge (required, without sign)"),
-    ("DWT", "dwell at the groove base, seconds"),
-    ("TYP", "machining type 1..8 / 11..18: 1 long. ext. left, 2 face ext. left, 3 long. int. left, "
-     "4 face int. left, 5..8 the same on the right; +10 = chamfers as CHR"),
-    ("VRT", "retraction distance from the contour (0 = 1 mm), also the chip-breaking retract"),
-    ("DN", "D number of the second cutting edge (840D, optional)"),
-)
 
-_CYCLES = {
-    "cycle93": ("Siemens CYCLE93 groove", "sinumerik", None, None),
-    "ab-g77": ("Allen-Bradley 9/Series G77 grooving / cut-off", "ab9", "G77", _AB_HELP),
-    "ab-g76": ("Allen-Bradley 9/Series G76 face grooving", "ab9", "G76", _AB76_HELP),
-    "fanuc-g75": ("Fanuc two-block G75 grooving", "fanuc", "G75", _FANUC75_HELP),
-    "fanuc-g74": ("Fanuc two-block G74 face grooving / peck drilling", "fanuc", "G74", _FANUC74_HELP),
-    "haas-g75": ("Haas one-block G75 grooving", "haas", "G75", _HAAS75_HELP),
-    "haas-g74": ("Haas one-block G74 face grooving", "haas", "G74", _HAAS74_HELP),
-}
-_ALIASES = {"g77": "ab-g77", "g76": "ab-g76", "g75": "fanuc-g75", "g74": "fanuc-g74"}
+def _word_type(entry: CycleEntry, word: CycleWord) -> Callable[[str], str]:
+    """How a cycle word is typed on the command line: a Siemens call parameter,
+    a counted integer (Fanuc P/Q) or a decimal word."""
+    if entry.form == CALL:
+        return _siemens_value
+    return _counted if word.counted else _decimal_word
 
 
-def _add_emit_parsers(sub):
+def _add_cycle_words(parser: argparse.ArgumentParser, entry: CycleEntry) -> None:
+    """One option per cycle word (``--axfa``; ``-X``/``--x``), and Fanuc's first-block R."""
+    words = parser.add_argument_group("cycle parameters")
+    for word in entry.words:
+        flags = ("--" + word.name.lower(),) if entry.form == CALL else ("-" + word.name, "--" + word.name.lower())
+        words.add_argument(*flags, dest="w_" + word.name, type=_word_type(entry, word), metavar="V", help=word.help)
+    if entry.retract_block:
+        words.add_argument(
+            "-e", "--first-block-r", dest="retract_e", type=_decimal_word, metavar="E",
+            help="peck retract e: writes the first block '%s %s(e)' (parameter 5139 otherwise)"
+            % (entry.name, entry.retract_block),
+        )
+
+
+def _add_expand_options(parser: argparse.ArgumentParser) -> None:
+    """emit --expand: the start point and modes of the whole program."""
+    ex = parser.add_argument_group("expanded output (--expand)")
+    ex.add_argument("--expand", action="store_true",
+                    help="print a whole program with the expanded moves instead of the native call")
+    ex.add_argument("--start-x", type=_finite, metavar="X",
+                    help="start point X as a DIAMETER (the tool position before the call; required with "
+                    "--expand)")
+    ex.add_argument("--start-z", type=_finite, metavar="Z", help="start point Z (required with --expand)")
+    ex.add_argument("--feed", type=_positive, metavar="F", help="feed in force before the call")
+    ex.add_argument("--spindle", type=_positive, metavar="RPM",
+                    help="spindle speed started (M3) before the moves; needed with feed per revolution")
+    ex.add_argument("--incremental", action="store_true", help="G91 in force (AB, Siemens)")
+    ex.add_argument("--to", choices=("linuxcnc", "fanuc"), default="linuxcnc", help="output control")
+    _add_start_options(parser, expand=False)
+
+
+def _add_emit_parsers(sub: argparse._SubParsersAction) -> None:
+    entries = registry.cycles()
+    aliases = ", ".join("%s = %s" % (alias, entry.key) for entry in entries for alias in entry.aliases)
     emit = sub.add_parser(
         "emit",
         help="check one cycle call and print it in the control's own syntax (or expanded)",
         description="Check one cycle call with its parameters and print it as the control reads it. "
         "With --expand, print instead a whole program that goes to the start point and runs the "
         "expanded moves. Cycles: "
-        + ", ".join(sorted(_CYCLES))
-        + " (aliases: g77 = ab-g77, g76 = ab-g76, g75 = fanuc-g75, g74 = fanuc-g74).",
+        + ", ".join(sorted(entry.key for entry in entries))
+        + " (aliases: %s)." % aliases,
         epilog=EPILOG,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     cycles = emit.add_subparsers(dest="cycle", metavar="CYCLE", required=True)
-    for name, (title, dialect, code, helps) in _CYCLES.items():
-        aliases = [a for a, target in _ALIASES.items() if target == name]
-        p = cycles.add_parser(
-            name,
-            aliases=aliases,
-            help=title,
-            description=title + ". Lengths in the program's units; X as a diameter unless stated.",
+    for entry in entries:
+        parser = cycles.add_parser(
+            entry.key,
+            aliases=list(entry.aliases),
+            help=entry.title,
+            description=entry.title + ". Lengths in the program's units; X as a diameter unless stated.",
             epilog=EPILOG,
             formatter_class=argparse.RawDescriptionHelpFormatter,
         )
-        p.set_defaults(cycle_name=name)
-        words = p.add_argument_group("cycle parameters")
-        if helps is None:
-            for param, text in _CYCLE93_HELP:
-                words.add_argument("--" + param.lower(), dest="w_" + param, type=_siemens_value, metavar="V",
-                                   help=text)
-        else:
-            for letter, text in helps.items():
-                kind = _counted if (dialect == "fanuc" and letter in "PQ") else _decimal_word
-                words.add_argument("-" + letter, "--" + letter.lower(), dest="w_" + letter, type=kind, metavar="V",
-                                   help=text)
-            if dialect == "fanuc":
-                words.add_argument(
-                    "-e", "--first-block-r", dest="fanuc_e", type=_decimal_word, metavar="E",
-                    help="peck retract e: writes the first block '%s R(e)' (parameter 5139 otherwise)" % code,
-                )
-        _add_settings_options(p)
-        ex = p.add_argument_group("expanded output (--expand)")
-        ex.add_argument("--expand", action="store_true",
-                        help="print a whole program with the expanded moves instead of the native call")
-        ex.add_argument("--start-x", type=_finite, metavar="X",
-                        help="start point X as a DIAMETER (the tool position before the call; required with "
-                        "--expand)")
-        ex.add_argument("--start-z", type=_finite, metavar="Z", help="start point Z (required with --expand)")
-        ex.add_argument("--feed", type=_positive, metavar="F", help="feed in force before the call")
-        ex.add_argument("--spindle", type=_positive, metavar="RPM",
-                        help="spindle speed started (M3) before the moves; needed with feed per revolution")
-        ex.add_argument("--incremental", action="store_true", help="G91 in force (AB, Siemens)")
-        ex.add_argument("--to", choices=("linuxcnc", "fanuc"), default="linuxcnc", help="output control")
-        _add_start_options(p, expand=False)
+        parser.set_defaults(cycle_name=entry.key)
+        _add_cycle_words(parser, entry)
+        _add_settings_options(parser)
+        _add_expand_options(parser)
 
 
-def _native_text(args):
-    title, dialect, code, helps = _CYCLES[args.cycle_name]
-    if helps is None:
-        values = [getattr(args, "w_" + param) for param, _ in _CYCLE93_HELP]
-        while values and values[-1] is None:
+def _native_text(args: argparse.Namespace, entry: CycleEntry) -> str:
+    """The call as the control writes it, from the options given."""
+    values = [(word.name, getattr(args, "w_" + word.name)) for word in entry.words]
+    if entry.form == CALL:
+        while values and values[-1][1] is None:
             values.pop()
-        return "CYCLE93(%s)" % ", ".join("" if v is None else v for v in values)
-    parts = [code]
-    for letter in helps:
-        value = getattr(args, "w_" + letter)
-        if value is not None:
-            parts.append(letter + value)
-    text = " ".join(parts)
-    if dialect == "fanuc" and args.fanuc_e is not None:
-        text = "%s R%s\n%s" % (code, args.fanuc_e, text)
+        return "%s(%s)" % (entry.name, ", ".join("" if value is None else value for _, value in values))
+    text = " ".join([entry.name] + [name + value for name, value in values if value is not None])
+    retract_e = getattr(args, "retract_e", None)
+    if entry.retract_block and retract_e is not None:
+        text = "%s %s%s\n%s" % (entry.name, entry.retract_block, retract_e, text)
     return text
 
 
-def _emit(args):
+def _emit(args: argparse.Namespace) -> str:
     from .engine import targets
     from .engine.errors import CycleError, ProgramError
-    from .engine.registry import cycle_for
 
-    title, dialect, code, helps = _CYCLES[args.cycle_name]
+    entry = registry.entry(args.cycle_name)
     settings = _settings(args)
-    text = _native_text(args)
+    text = _native_text(args, entry)
     try:
-        cls = cycle_for(dialect, code or "CYCLE93")
-        model = cls.parse(text)
+        model = entry.cycle_class.parse(text)
         model.validate(settings)
         if not args.expand:
             return model.emit() + "\n"
@@ -429,7 +341,7 @@ def _emit(args):
         state.incremental = args.incremental
         moves = model.expand(state, settings)
         return targets.write_program(
-            moves, args.to, state, title="%s: %s" % (title, " / ".join(text.split("\n"))), spindle=args.spindle
+            moves, args.to, state, title="%s: %s" % (entry.title, " / ".join(text.split("\n"))), spindle=args.spindle
         )
     except CycleError as exc:
         raise _Failure("emit %s" % args.cycle_name, 1, exc.message) from None
@@ -470,7 +382,7 @@ def _read_program(path):
 
 def _expand(args):
     from .engine.errors import ProgramError
-    from .engine.program import translate_program
+    from .engine.translator import translate_program
 
     name, text = _read_program(args.program)
     settings = _settings(args)
@@ -523,9 +435,9 @@ def build_parser():
     ex.add_argument(
         "--dialect",
         required=True,
-        choices=tuple(DIALECT_HELP),
+        choices=DIALECTS,
         help="the control the program is written for: "
-        + "; ".join("%s = %s" % item for item in DIALECT_HELP.items()),
+        + "; ".join("%s = %s" % (control.name, control.help) for control in INPUT_CONTROLS.values()),
     )
     ex.add_argument(
         "--to",

@@ -10,12 +10,12 @@ import subprocess
 import sys
 
 import pytest
+from conftest import EXAMPLES, ROOT
 from hypothesis import given
 from hypothesis import strategies as st
 
-from conftest import EXAMPLES, ROOT
 from freecad_groove import cli
-from freecad_groove.engine.program import translate_program
+from freecad_groove.engine.translator import translate_program
 
 SEED = os.path.join(ROOT, "examples", "seed_cycle93.mpf")
 ERROR_LINE = re.compile(r"^(?P<name>[^\n]*):(?P<line>\d+): (?P<message>[^\n]+)\n\Z")

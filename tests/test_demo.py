@@ -11,7 +11,7 @@ Runs ``scripts/demo DIR`` once into a temporary directory and checks:
   many as the summary says, and the expanded ones none;
 * every Sinumerik, Allen-Bradley, Fanuc and Haas program, native and
   expanded, is read back by the engine's program translator for its dialect
-  (freecad_groove.engine.program.translate_program), and rs274 accepts the
+  (freecad_groove.engine.translator.translate_program), and rs274 accepts the
   LinuxCNC program that makes.
 
 FreeCAD 1.1 comes from scripts/freecad-roots. When it is not built (or the
@@ -33,7 +33,7 @@ from test_freecad import HOW_TO_GET, available
 
 from freecad_groove import demo
 from freecad_groove.engine import GroovingTool, Settings
-from freecad_groove.engine.program import translate_program
+from freecad_groove.engine.translator import translate_program
 
 SCRIPT = os.path.join(ROOT, "scripts", "demo")
 LABEL = "1.1"

@@ -37,7 +37,7 @@ from conftest import IN_CI, ROOT
 from freecad_groove.engine import GroovingTool, Settings
 from freecad_groove import verify as sim
 from freecad_groove.engine.moves import DWELL, FEED, RAPID, Move
-from freecad_groove.engine.program import translate_program
+from freecad_groove.engine.translator import translate_program
 import rs274
 from rs274 import RS274Error, canonical_matches, require_rs274, written_moves
 

@@ -1,4 +1,4 @@
-"""The program reader and translator (freecad_groove.engine.program): tokenizer,
+"""The program reader and translator (freecad_groove.engine.reader, .translator): tokenizer,
 modal tracking (diameter/radius, G90/G91, U/W, units, N numbers, comments),
 translation of carried blocks, cycle expansion in place, errors with line
 numbers, and LinuxCNC's rs274 accepting every translated example."""
@@ -6,19 +6,16 @@ numbers, and LinuxCNC's rs274 accepting every translated example."""
 import os
 
 import pytest
+from conftest import EXAMPLES, ROOT
 from hypothesis import given
 from hypothesis import strategies as st
 
-from conftest import EXAMPLES, ROOT
 from freecad_groove.engine.errors import ProgramError
+from freecad_groove.engine.input_controls import DIALECTS
 from freecad_groove.engine.moves import RAPID, MachineState
-from freecad_groove.engine.program import (
-    DIALECTS,
-    Translator,
-    parse_block,
-    translate_program,
-)
+from freecad_groove.engine.reader import parse_block
 from freecad_groove.engine.settings import DEFAULT_SETTINGS, Settings
+from freecad_groove.engine.translator import Translator, translate_program
 
 LINUXCNC_HEAD = ["G18 G7 G21 G90 G91.1 G40", "(PROGRAM: %s program, cycles expanded for linuxcnc by freecad-groove)"]
 

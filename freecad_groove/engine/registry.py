@@ -13,6 +13,8 @@ class attributes, and is registered with the ``@register`` decorator:
                letter-and-number words)
     WORD_HELP  ((word, help text), ...) in the order the cycle writes them
     COUNTED    words that are integers in least input increments (Fanuc P, Q)
+    RETRACT_BLOCK  optional: the letter of a separate first block ``NAME R(e)``
+               that only sets the peck retract for the next cycle (Fanuc "R")
 
 and the methods ``parse(text)``, ``emit()``, ``validate(settings)`` and
 ``expand(state, settings)``. The program reader, the command line (``expand``,
@@ -50,6 +52,7 @@ class CycleEntry:
     words: Tuple[CycleWord, ...]
     cycle_class: type
     aliases: Tuple[str, ...] = ()
+    retract_block: str = ""  # the letter of a separate "NAME R(e)" first block; "" when none
 
 
 _BY_KEY: Dict[str, CycleEntry] = {}
@@ -68,6 +71,7 @@ def register(cls: Type) -> Type:
         words=tuple(CycleWord(word, text, word in counted) for word, text in cls.WORD_HELP),
         cycle_class=cls,
         aliases=tuple(getattr(cls, "ALIASES", ())),
+        retract_block=getattr(cls, "RETRACT_BLOCK", ""),
     )
     if entry.form not in FORMS:
         raise ValueError("%s: FORM must be one of %s" % (cls.__name__, ", ".join(FORMS)))

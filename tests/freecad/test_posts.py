@@ -7,7 +7,7 @@ every post in postprocessors/:
   field by field with what the op derives (CYCLE93 with op.Proxy.cycles(op),
   G77/G76/G75/G74 with words worked out here from the op's properties), and
   every native program is read again by the engine's program translator
-  (freecad_groove.engine.program), which must accept it; for CYCLE93 the
+  (freecad_groove.engine.translator), which must accept it; for CYCLE93 the
   translated moves are the op's own moves;
 * ``--expand-cycles`` output, read back, is the engine's moves;
 * tool changes, spindle, coolant, other ops' Paths, dressups, options;
@@ -41,7 +41,7 @@ from freecad_groove.engine.cycles.ab_g77 import G76, G77
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.cycles.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
 from freecad_groove.engine.moves import DWELL, FEED, RAPID
-from freecad_groove.engine.program import translate_program
+from freecad_groove.engine.translator import translate_program
 from freecad_groove.freecad import posts, registration
 import test_groove_op as tg
 

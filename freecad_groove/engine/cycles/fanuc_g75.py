@@ -66,6 +66,7 @@ class _Fanuc(PeckingCycle):
     WORDS = ("X", "U", "Z", "W", "P", "Q", "R", "F")
     COUNTED = ("P", "Q")
     RELIEF = "R"
+    RETRACT_BLOCK: ClassVar[str] = "R"  # "G75 R(e)" before the cycle block sets e
 
     e: Optional[float] = None
     X: Optional[float] = None

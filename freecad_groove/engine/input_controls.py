@@ -1,0 +1,263 @@
+"""What each input control's codes mean, as data: one InputControl per dialect.
+
+A *dialect* is the input control a program is written for: "sinumerik",
+"ab9", "fanuc", "haas" (``DIALECTS``); the output side is the *target*
+(targets.py). What differs between the input controls is here and nowhere
+else: the G-code table, the letters a block may hold, the decimal-point rule,
+the dwell and tool words, what a cycle leaves modal. Their grooving cycles come
+from the cycle registry (``registry.cycles_of``): Siemens calls (``NAME(...)``,
+FORM CALL) are read by the tokenizer (reader.py), G-word cycles (FORM G_WORD)
+are added to the control's G-code table (``InputControl.code_table``).
+"""
+
+from dataclasses import dataclass, field, replace
+from typing import Dict, FrozenSet, Mapping, NamedTuple, Tuple
+
+from .moves import FEED, RAPID
+from .registry import CALL, G_WORD, CycleEntry, cycles_of
+
+__all__ = [
+    "DIALECTS",
+    "INPUT_CONTROLS",
+    "GCode",
+    "InputControl",
+    "Units",
+    "g_code_key",
+    "input_control",
+]
+
+# ---------------------------------------------------------------- G codes
+
+# modal groups (and kinds) of the G codes the reader knows
+MOTION = "motion"
+DWELL = "dwell"
+PLANE = "plane"
+COMPENSATION = "compensation"
+CSS = "constant surface speed"
+OFFSET = "work offset"
+UNITS = "units"
+DISTANCE = "distance mode"
+FEED_MODE = "feed mode"
+DIAMETER = "diameter mode"
+SPEED_LIMIT = "spindle speed limit"
+CYCLE = "cycle"
+REFUSED = "refused"
+MODE_GROUPS = (UNITS, DISTANCE, FEED_MODE, DIAMETER)  # may share a block with a cycle
+
+
+class GCode(NamedTuple):
+    """What a G code means: its group and a value the group's handler reads
+    (the motion kind, True for G91, a Units, the cycle's name, a refusal's reason...)."""
+
+    group: str
+    value: object = None
+
+
+class Units(NamedTuple):
+    """A units code: metric or inch, and whether the feed stays in the basic
+    system (Siemens G70: inch lengths, metric feed)."""
+
+    metric: bool
+    feed_in_basic_system: bool = False
+
+
+_PLANE_ONLY_XZ = "only the XZ plane (G18) is supported on a lathe"
+_NOSE_RADIUS = "tool nose radius compensation (G41/G42) is not translated"
+
+_COMMON = {
+    "0": GCode(MOTION, RAPID),
+    "1": GCode(MOTION, FEED),
+    "2": GCode(MOTION, "G2"),
+    "3": GCode(MOTION, "G3"),
+    "4": GCode(DWELL),
+    "18": GCode(PLANE),
+    "17": GCode(REFUSED, _PLANE_ONLY_XZ),
+    "19": GCode(REFUSED, _PLANE_ONLY_XZ),
+    "40": GCode(COMPENSATION),
+    "41": GCode(REFUSED, _NOSE_RADIUS),
+    "42": GCode(REFUSED, _NOSE_RADIUS),
+    "96": GCode(CSS, True),
+    "97": GCode(CSS, False),
+    "54": GCode(OFFSET, "G54"),
+    "55": GCode(OFFSET, "G55"),
+    "56": GCode(OFFSET, "G56"),
+    "57": GCode(OFFSET, "G57"),
+}
+_G58_G59 = {"58": GCode(OFFSET, "G58"), "59": GCode(OFFSET, "G59")}
+_G20_G21 = {"20": GCode(UNITS, Units(metric=False)), "21": GCode(UNITS, Units(metric=True))}
+_G90_G91 = {"90": GCode(DISTANCE, False), "91": GCode(DISTANCE, True)}
+_G94_G95 = {"94": GCode(FEED_MODE, False), "95": GCode(FEED_MODE, True)}
+
+_SIEMENS_CODES = {
+    **_COMMON,
+    "70": GCode(UNITS, Units(metric=False, feed_in_basic_system=True)),
+    "71": GCode(UNITS, Units(metric=True)),
+    "700": GCode(UNITS, Units(metric=False)),
+    "710": GCode(UNITS, Units(metric=True)),
+    **_G90_G91,
+    **_G94_G95,
+}
+
+_AB9_CODES = {
+    **_COMMON,
+    **_G58_G59,
+    "7": GCode(DIAMETER, "G07"),
+    "8": GCode(DIAMETER, "G08"),
+    **_G20_G21,
+    **_G90_G91,
+    **_G94_G95,
+}
+
+# Fanuc and Haas lathes, G code system A
+_SYSTEM_A_CODES = {
+    **_COMMON,
+    **_G58_G59,
+    **_G20_G21,
+    "98": GCode(FEED_MODE, False),
+    "99": GCode(FEED_MODE, True),
+    "50": GCode(SPEED_LIMIT),
+    "28": GCode(REFUSED, "reference return G28 is not translated (LinuxCNC's G28 goes to a stored position)"),
+    "90": GCode(REFUSED, "G90 is the turning cycle on this lathe control (G code system A): not supported"),
+    "92": GCode(REFUSED, "G92 is the threading cycle on this lathe control: not supported"),
+    "94": GCode(REFUSED, "G94 is the facing cycle on this lathe control (feed per minute is G98): not supported"),
+    "70": GCode(REFUSED, "G70 (finishing cycle) is not supported"),
+    "71": GCode(REFUSED, "G71 (turning stock removal cycle) is not supported"),
+    "72": GCode(REFUSED, "G72 (facing stock removal cycle) is not supported"),
+    "73": GCode(REFUSED, "G73 (pattern repeating cycle) is not supported"),
+    "76": GCode(REFUSED, "G76 (threading cycle) is not supported"),
+}
+
+
+def g_code_key(text: str) -> str:
+    """The table key of a G number as written: "00" -> "0", "+1" -> "1", "91.1" stays."""
+    key = text.lstrip("+")
+    return key if "." in key else str(int(key))
+
+
+# M codes every control shares: code -> modal group
+M_GROUPS = {0: "stop", 1: "stop", 2: "end", 30: "end", 3: "spindle", 4: "spindle", 5: "spindle", 7: "coolant",
+            8: "coolant", 9: "coolant"}
+
+# ---------------------------------------------------------------- input controls
+
+# how a dwell word is read (InputControl.dwell_words)
+DWELL_SECONDS = "seconds"
+DWELL_LENGTH_SECONDS = "seconds, written as a length word (decimal point rule)"
+DWELL_MILLISECONDS = "milliseconds, a whole number"
+DWELL_POINT_SECONDS = "seconds with a decimal point, milliseconds without"
+
+# how the tool is selected (InputControl.tool_words)
+TOOL_AND_EDGE = "T<tool> D<cutting edge>"
+TOOL_AND_OFFSET = "T<tool><2-digit offset>"
+
+
+@dataclass(frozen=True)
+class InputControl:
+    """What the reader and the translator need to know of one input control."""
+
+    name: str  # the dialect: "sinumerik"
+    maker: str  # for messages: "Siemens"
+    help: str  # one line for the command line's --dialect help
+    g_codes: Mapping[str, GCode]  # without the cycles: code_table() adds them from the registry
+    plain_letters: FrozenSet[str]  # the letters a block other than a cycle or dwell may hold
+    letter_refusals: Mapping[str, str] = field(default_factory=dict)  # letter -> why it is refused
+    decimal_point: bool = True  # a non-zero length or feed word needs a decimal point
+    long_names: bool = False  # Siemens names: keywords, NAME= assignments, NAME(...) calls, X=20
+    keywords: Tuple[str, ...] = ()  # words without a value (DIAMON)
+    assignments: Tuple[str, ...] = ()  # NAME=value words (CR=5)
+    arc_radius_word: str = "R"  # as messages write it: "R", "CR="
+    tool_words: str = TOOL_AND_OFFSET
+    dwell_words: Mapping[str, str] = field(default_factory=dict)  # letter -> DWELL_* reading
+    dwell_refusals: Mapping[str, str] = field(default_factory=dict)  # letter -> message
+    dwell_unsupported: str = ""  # when set, G4 is refused with this message
+    cycle_keeps_motion: bool = False  # after a cycle the motion mode is the one before it (group 00)
+    program_numbers: bool = True  # an O number may name the program
+
+    def cycles(self) -> Tuple[CycleEntry, ...]:
+        """The registered cycles of this control."""
+        return cycles_of(self.name)
+
+    def cycle(self, name: str) -> CycleEntry:
+        """The registry entry of this control's cycle ``name`` ("G75", "CYCLE93")."""
+        return next(entry for entry in self.cycles() if entry.name == name)
+
+    def call_names(self) -> Tuple[str, ...]:
+        """The names of the cycles called as ``NAME(...)``."""
+        return tuple(entry.name for entry in self.cycles() if entry.form == CALL)
+
+    def code_table(self) -> Dict[str, GCode]:
+        """G number (``g_code_key``) -> meaning, the control's G-word cycles included."""
+        table = dict(self.g_codes)
+        for entry in self.cycles():
+            if entry.form == G_WORD:
+                table[g_code_key(entry.name[1:])] = GCode(CYCLE, entry.name)
+        return table
+
+    @property
+    def feed_mode_codes(self) -> str:
+        """The feed-mode codes as messages name them: "G94/G95", "G98/G99"."""
+        codes = sorted((code.value, key) for key, code in self.g_codes.items() if code.group == FEED_MODE)
+        return "/".join("G" + key for _, key in codes)
+
+
+_PLAIN = frozenset("XZFSTMGIK")
+
+_FANUC = InputControl(
+    name="fanuc",
+    maker="Fanuc",
+    help="Fanuc lathe, G code system A (two-block G75/G74: G75 R(e) then G75 X(U) Z(W) P Q R F; "
+    "G20/G21, G98/G99, U/W incremental)",
+    g_codes=_SYSTEM_A_CODES,
+    plain_letters=_PLAIN | {"U", "W", "R"},
+    dwell_words={"X": DWELL_LENGTH_SECONDS, "U": DWELL_LENGTH_SECONDS, "P": DWELL_MILLISECONDS},
+    cycle_keeps_motion=True,
+)
+
+INPUT_CONTROLS: Dict[str, InputControl] = {
+    control.name: control
+    for control in (
+        InputControl(
+            name="sinumerik",
+            maker="Siemens",
+            help="Siemens (CYCLE93 calls; DIAMON/DIAMOF, G70/G71, G700/G710, G90/G91, G94/G95)",
+            g_codes=_SIEMENS_CODES,
+            plain_letters=_PLAIN | {"D", "CR", "LIMS"},
+            letter_refusals={"R": "Siemens R parameters are not evaluated"},
+            decimal_point=False,  # Siemens reads X80 as 80.
+            long_names=True,
+            keywords=("DIAMON", "DIAMOF", "DIAM90"),
+            assignments=("CR", "LIMS"),
+            arc_radius_word="CR=",
+            tool_words=TOOL_AND_EDGE,
+            dwell_words={"F": DWELL_SECONDS},
+            dwell_refusals={"S": "G4 S (dwell in spindle revolutions) is not translated: use G4 F<seconds>"},
+            program_numbers=False,
+        ),
+        InputControl(
+            name="ab9",
+            maker="Allen-Bradley",
+            help="Allen-Bradley 9/Series lathe (G77 grooving/cut-off, G76 face grooving; G07/G08, G20/G21, "
+            "G90/G91, G94/G95)",
+            g_codes=_AB9_CODES,
+            plain_letters=_PLAIN | {"R"},
+            dwell_unsupported="G04: the 9/Series dwell word is not documented here; not translated",
+        ),
+        _FANUC,
+        replace(  # a Fanuc-like lathe that reads the dwell P with or without a decimal point
+            _FANUC,
+            name="haas",
+            maker="Haas",
+            help="Haas lathe (one-block G75/G74 X(U) Z(W) I K D F; G20/G21, G98/G99, U/W incremental)",
+            dwell_words={"P": DWELL_POINT_SECONDS},
+        ),
+    )
+}
+DIALECTS = tuple(INPUT_CONTROLS)
+
+
+def input_control(dialect: str) -> InputControl:
+    """The InputControl of ``dialect``; ValueError when unknown."""
+    try:
+        return INPUT_CONTROLS[dialect]
+    except KeyError:
+        raise ValueError("unknown dialect %r (known: %s)" % (dialect, ", ".join(DIALECTS))) from None

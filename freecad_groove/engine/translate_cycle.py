@@ -1,0 +1,142 @@
+"""Cycle blocks of the translator: a registered cycle's call read, checked
+against the modal state, expanded and written in place."""
+
+from typing import List, NamedTuple, Sequence
+
+from .errors import CycleError, ProgramError
+from .input_controls import CYCLE, MODE_GROUPS
+from .moves import Move
+from .reader import Block, Word
+from .registry import CycleEntry
+from .translate_base import Groups, TranslatorBase
+
+__all__ = ["CycleCall", "CycleTranslation"]
+
+
+class CycleCall(NamedTuple):
+    """A cycle block as read: the cycle's name, its text for the cycle's parse(),
+    and its words (G-word cycles; empty for a ``NAME(...)`` call)."""
+
+    name: str
+    text: str
+    words: List[Word]
+
+
+class CycleTranslation(TranslatorBase):
+    """Siemens calls and G-word cycles (G77/G76, G75/G74), from the cycle registry."""
+
+    def _cycle_block(self, block: Block, groups: Groups) -> None:
+        """A block with a cycle call: its mode codes, then the expanded moves."""
+        call = self._cycle_call(block, groups)
+        early: List[str] = []
+        output: List[str] = []
+        self._modes(block, groups, output, early)
+        self._emit_early(block, early, True)
+        if output:
+            self._emit(" ".join(output))
+            self._sync_writer()
+        entry = self.control.cycle(call.name)
+        if entry.retract_block:
+            if self._is_retract_block(entry, call.words):
+                self._retract_block(block, entry, call.words)
+                return
+            call = self._with_retract_block(entry, call)
+        try:  # the call itself first: its own errors are the most useful
+            model = entry.cycle_class.parse(call.text)
+            model.validate(self.settings)
+        except CycleError as exc:
+            self._fail(exc.message)
+        self._check_cycle_start(call.name)
+        try:
+            moves = model.expand(self.state.machine_state(), self.settings)
+        except CycleError as exc:
+            self._fail(exc.message)
+        label = " / ".join(call.text.split("\n")).replace("(", " ").replace(")", "")
+        self._emit(self._words_line(block, [], label))
+        try:
+            lines = self.writer.write(moves, self._prefix)
+        except ProgramError as exc:
+            self._fail("%s: %s" % (call.name, exc))
+        self.body.extend(lines)
+        self._after_cycle(moves)
+
+    def _cycle_call(self, block: Block, groups: Groups) -> CycleCall:
+        """The cycle's name, text and words; refuses what may not share its block."""
+        for group, code in groups.items():
+            if group not in MODE_GROUPS and group != CYCLE:
+                self._fail("G%s shares the block with the cycle call: only N, a comment and mode codes may"
+                           % code.word.text + " share it")
+        others = [word for word in block.words if word.letter != "G"]
+        if block.call is not None:
+            name = block.call.split("(")[0]
+            if others:
+                self._fail("%s%s shares the block with %s: a cycle call takes only N, a comment and mode codes"
+                           % (others[0].letter, others[0].text, name))
+            return CycleCall(name, block.call, [])
+        name = groups[CYCLE].value
+        for word in others:
+            if word.letter in ("M", "S", "T", "N"):
+                self._fail("%s%s shares the block with %s: program it in its own block"
+                           % (word.letter, word.text, name))
+        if block.keywords:
+            self._fail("%s shares the block with %s" % (block.keywords[0], name))
+        return CycleCall(name, " ".join([name] + ["%s%s" % (word.letter, word.text) for word in others]), others)
+
+    # -- the separate retract block (Fanuc "G75 R(e)") ---------------------------------
+
+    @staticmethod
+    def _is_retract_block(entry: CycleEntry, words: Sequence[Word]) -> bool:
+        """True when the block holds none of the cycle's words but the retract block's."""
+        cycle_words = {word.name for word in entry.words} - {entry.retract_block}
+        return not {word.letter for word in words} & cycle_words
+
+    def _retract_block(self, block: Block, entry: CycleEntry, words: Sequence[Word]) -> None:
+        """``G75 R(e)`` alone: it only stores e for the next cycle of its kind."""
+        letter = entry.retract_block
+        if len(words) != 1 or words[0].letter != letter:
+            self._fail("%s: the first block is %s %s(e) (the peck retract) alone" % (entry.name, entry.name, letter))
+        self._length(words[0])
+        self.state.retract_e = words[0]
+        self._defined.add("retract_e")
+        kinds = "/".join(other.name for other in self.control.cycles() if other.retract_block)
+        note = "%s %s%s: peck retract e for the next %s" % (entry.name, letter, words[0].text, kinds)
+        self._emit(self._words_line(block, [], note))
+
+    def _with_retract_block(self, entry: CycleEntry, call: CycleCall) -> CycleCall:
+        """The call with the retract block read before it, when there was one."""
+        retract = self.state.retract_e
+        if retract is None:
+            return call
+        self._not_ambiguous("retract_e", why="%s %s(e)" % (entry.name, entry.retract_block))
+        text = "%s %s%s\n%s" % (entry.name, retract.letter, retract.text, call.text)
+        return call._replace(text=text)
+
+    # -- state before and after ------------------------------------------------------------
+
+    def _check_cycle_start(self, name: str) -> None:
+        """A cycle needs a known start point, feed mode and (per revolution) spindle."""
+        state = self.state
+        if state.x is None or state.z is None:
+            self._fail("%s needs its start point: program an absolute X and Z before the call" % name)
+        self._not_ambiguous("x", "z", "feed", "feed_per_rev", "metric", "diameter", "diam90", "incremental",
+                            why=name)
+        if state.feed_per_rev is None:
+            self._fail("%s before the feed mode is programmed (%s)" % (name, self.control.feed_mode_codes))
+        if state.siemens_g70:
+            self._fail("%s in Siemens G70 (feed in the basic system): use G700" % name)
+        self._check_spindle_for_feed(name)
+
+    def _after_cycle(self, moves: Sequence[Move]) -> None:
+        """The position of the last move, the last feed written; the motion mode
+        the one before the cycle or unknown (InputControl.cycle_keeps_motion)."""
+        state = self.state
+        feeds = [move.f for move in moves if move.f is not None]
+        if moves:
+            state.x, state.z = float(moves[-1].x), float(moves[-1].z)
+        if feeds:
+            state.feed = float(feeds[-1])
+            self._defined.add("feed")
+        self._defined |= {"x", "z"}
+        if not self.control.cycle_keeps_motion:
+            state.motion = None
+            self._defined.add("motion")

@@ -1,0 +1,275 @@
+"""Machine functions of the translator: feed rate, tools, spindle speed and
+constant surface speed, M codes, dwell."""
+
+from typing import Callable, Dict, List, NamedTuple, Optional
+
+from .input_controls import (
+    CSS,
+    DWELL_LENGTH_SECONDS,
+    DWELL_MILLISECONDS,
+    DWELL_POINT_SECONDS,
+    DWELL_SECONDS,
+    M_GROUPS,
+    SPEED_LIMIT,
+    TOOL_AND_EDGE,
+    TOOL_AND_OFFSET,
+)
+from .numbers import MAX_DWELL_SECONDS, MAX_WORD
+from .reader import Block, Word
+from .targets import comment
+from .translate_base import Groups, TranslatorBase
+
+__all__ = ["MachineTranslation", "ToolSelection"]
+
+_SPINDLE_CODES = (3, 4, 5)
+_END_CODES = (2, 30)
+
+
+class ToolSelection(NamedTuple):
+    """A tool call as read: the tool (None: the one in the spindle), its offset,
+    and whether the offset is the tool's own tool-table entry."""
+
+    tool: Optional[int]
+    offset: int
+    own_entry: bool
+
+
+class MachineTranslation(TranslatorBase):
+    """F, T/D, S, G96/G97, G50 S/LIMS=, M codes and G4."""
+
+    # -- feed -----------------------------------------------------------------------
+
+    def _feed_word(self, block: Block) -> Optional[Word]:
+        """Read the block's F word into the state; the word, or None."""
+        feed_word = block.get("F")
+        if feed_word is None:
+            return None
+        if self.state.siemens_g70:
+            self._fail(
+                "F%s in G70: Siemens G70 leaves the feed in the metric basic system; use G700 for an inch feed"
+                % feed_word.text
+            )
+        feed = self._length(feed_word)
+        if not 0 < feed < MAX_WORD:
+            self._fail("F%s: the feed must be greater than 0" % feed_word.text)
+        self.state.feed = feed
+        self._defined.add("feed")
+        return feed_word
+
+    # -- tools ----------------------------------------------------------------------
+
+    def _tool(self, block: Block, output: List[str]) -> None:
+        """T (and Siemens D): a tool change, written as T M6 G43 (Fanuc output: T0101)."""
+        tool_word = block.get("T")
+        edge_word = block.get("D")
+        if tool_word is None and edge_word is None:
+            return
+        if "M" in block.letters() and 6 in [int(word.value) for word in block.all("M")]:
+            self._fail("M6 is added by the translation; program the tool with T alone")
+        readers: Dict[str, Callable[[Optional[Word], Optional[Word]], ToolSelection]] = {
+            TOOL_AND_EDGE: self._tool_and_edge,
+            TOOL_AND_OFFSET: self._tool_and_offset,
+        }
+        selection = readers[self.control.tool_words](tool_word, edge_word)
+        state = self.state
+        state.x = state.z = None
+        self._defined |= {"x", "z", "tool"}
+        if selection.tool is not None:
+            state.tool = selection.tool
+        if self.fanuc_output:
+            if state.tool is None:
+                self._fail("D%s: no tool selected before" % edge_word.text)
+            if state.tool > 99 or selection.offset > 99:
+                self._fail("T%d offset %d does not fit Fanuc's T<2 digits><2 digits>" % (state.tool, selection.offset))
+            output.append("T%02d%02d" % (state.tool, selection.offset))
+            return
+        if selection.tool is not None:
+            output.extend(["T%d" % selection.tool, "M6"])
+        if selection.offset == 0:
+            output.append("G49")
+        elif selection.own_entry:
+            output.append("G43")  # the tool's own tool-table entry
+        else:
+            output.extend(["G43", "H%d" % selection.offset])
+
+    def _tool_and_edge(self, tool_word: Optional[Word], edge_word: Optional[Word]) -> ToolSelection:
+        """Siemens ``T5 D1``; ``T5`` alone selects D1; D0 cancels the offset."""
+        tool = offset = None
+        if tool_word is not None:
+            tool = self._integer(tool_word)
+            offset = 1
+        if edge_word is not None:
+            offset = self._integer(edge_word)
+            if offset > 1:
+                self._fail("D%s: a second cutting edge has no LinuxCNC tool-table entry; only D0 and D1 are "
+                           "translated outside CYCLE93" % edge_word.text)
+        return ToolSelection(tool, offset, True)
+
+    def _tool_and_offset(self, tool_word: Optional[Word], edge_word: Optional[Word]) -> ToolSelection:
+        """Fanuc, Haas, Allen-Bradley ``T0512``: tool 5, offset 12."""
+        digits = tool_word.text.lstrip("+")
+        if "." in tool_word.text or not digits.isdigit() or len(digits) < 3:
+            self._fail("T%s: write the tool and offset as T<tool><2-digit offset>, e.g. T0101" % tool_word.text)
+        tool, offset = int(digits[:-2]), int(digits[-2:])
+        return ToolSelection(tool, offset, offset == tool)
+
+    def _restart_spindle(self, block: Block, output: List[str]) -> None:
+        """LinuxCNC's M6 stops the spindle; a lathe turret does not: start it again."""
+        state = self.state
+        if "M6" not in output or state.spindle_dir not in (3, 4):
+            return
+        if set(_SPINDLE_CODES) & {int(word.value) for word in block.all("M")}:
+            return  # the block starts or stops it itself
+        self._not_ambiguous("spindle_dir", why="restarting the spindle after the tool change")
+        output.append("M%d" % state.spindle_dir)
+
+    # -- spindle ----------------------------------------------------------------------
+
+    def _spindle(self, block: Block, groups: Groups, output: List[str], early: List[str]) -> None:
+        """S, G96/G97 and the speed limit (G50 S, LIMS=)."""
+        speed_word = block.get("S")
+        limit_word = block.get("LIMS")
+        speed = None
+        if speed_word is not None:
+            speed = speed_word.value
+            if not 0 <= speed < MAX_WORD:
+                self._fail("S%s is out of range" % speed_word.text)
+        if SPEED_LIMIT in groups:  # Fanuc/Haas G50 S: spindle speed limit
+            self._g50_limit(block, speed, output)
+            return
+        if limit_word is not None:
+            if not 0 < limit_word.value < MAX_WORD:
+                self._fail("LIMS=%s is out of range" % limit_word.text)
+            self.state.speed_limit = limit_word.value
+            self._defined.add("speed_limit")
+            if self.fanuc_output:
+                early.append("G50 S" + self._s_text(limit_word.value))
+        if CSS in groups:
+            self._css(groups[CSS].value, speed_word, output)
+            return
+        keep_css = limit_word is not None and self.state.css and not self.fanuc_output
+        if speed_word is not None:
+            self.state.spindle = speed
+            self._defined.add("spindle")
+            output.extend(self._css_words(speed) if keep_css else ["S" + self._s_text(speed)])
+        elif keep_css:
+            if self.state.spindle is None:
+                self._fail("LIMS=: the surface speed in force is not known")
+            output.extend(self._css_words(self.state.spindle))
+
+    def _g50_limit(self, block: Block, speed: Optional[float], output: List[str]) -> None:
+        if speed is None or block.letters() - {"G", "S"} or len(block.all("G")) > 1:
+            self._fail("G50 is supported only as the spindle speed limit, G50 S.. alone in its block")
+        state = self.state
+        state.speed_limit = speed
+        self._defined.add("speed_limit")
+        if self.fanuc_output:
+            output.append("G50 S" + self._s_text(speed))
+        elif state.css:
+            if state.spindle is None:
+                self._fail("G50 S: the surface speed in force is not known")
+            output.extend(self._css_words(state.spindle))
+        else:
+            output.append(comment("G50 S%s: spindle limit for G96" % self._s_text(speed)))
+
+    def _css(self, on: bool, speed_word: Optional[Word], output: List[str]) -> None:
+        """G96 (constant surface speed, S in the block) or G97."""
+        state = self.state
+        if on and speed_word is None:
+            self._fail("G96 needs the surface speed S in the same block")
+        if not on and state.css and speed_word is None:
+            self._fail("G97 after G96 needs the spindle speed S in the same block")
+        state.css = on
+        self._defined.add("css")
+        if speed_word is not None:
+            state.spindle = speed_word.value
+            self._defined.add("spindle")
+        if on:
+            output.extend(["G96", "S" + self._s_text(speed_word.value)])
+            if state.speed_limit is not None and not self.fanuc_output:
+                output.append("D" + self._s_text(state.speed_limit))
+            return
+        output.append("G97")
+        if speed_word is not None:
+            output.append("S" + self._s_text(speed_word.value))
+
+    def _css_words(self, surface_speed: float) -> List[str]:
+        """LinuxCNC's G96 with the speed limit in force as its D word."""
+        return ["G96", "S" + self._s_text(surface_speed), "D" + self._s_text(self.state.speed_limit)]
+
+    def _s_text(self, value: float) -> str:
+        if value == int(value):
+            return "%d" % value
+        if self.fanuc_output:
+            self._fail("S%s: a Fanuc S word is a whole number" % value)
+        return self.writer.number(value, 4)
+
+    # -- M codes ------------------------------------------------------------------------
+
+    def _m_codes(self, block: Block, output: List[str]) -> List[int]:
+        """Write the spindle and coolant M codes; return the stops and ends, written after the motion."""
+        after = []
+        modal = []
+        in_group: Dict[str, int] = {}
+        for word in block.all("M"):
+            code = self._integer(word)
+            group = M_GROUPS.get(code)
+            if group is None:
+                self._fail("M%s is not supported (machine-specific M codes are not translated)" % word.text)
+            if group in in_group and not (group == "coolant" and {code, in_group[group]} == {7, 8}):
+                self._fail("M%d and M%d are in the same modal group" % (in_group[group], code))
+            in_group[group] = code
+            (after if group in ("stop", "end") else modal).append(code)
+        for code in modal:
+            output.append(self._m_text(code))
+            if code in _SPINDLE_CODES:
+                self.state.spindle_dir = code
+                self._defined.add("spindle_dir")
+        return after
+
+    def _stops_and_ends(self, codes: List[int], output: List[str]) -> None:
+        """M0/M1 as they are; M2/M30 as the target's program end."""
+        state = self.state
+        for code in codes:
+            if code not in _END_CODES:
+                output.append(self._m_text(code))
+                continue
+            output.append(self.writer.spec.end)
+            state.ended = True
+            state.spindle_dir = None
+            state.x = state.z = None
+
+    def _m_text(self, code: int) -> str:
+        return ("M%02d" if self.fanuc_output else "M%d") % code
+
+    # -- dwell ----------------------------------------------------------------------------
+
+    def _dwell_block(self, block: Block) -> None:
+        """G4 with its time word, read as the input control reads it."""
+        control = self.control
+        others = [word for word in block.words if word.letter != "G"]
+        if len(block.all("G")) > 1 or block.keywords:
+            self._fail("G4 must be alone in its block (with its time word)")
+        if control.dwell_unsupported:
+            self._fail(control.dwell_unsupported)
+        if len(others) != 1:
+            self._fail("G4 needs exactly one time word")
+        word = others[0]
+        if word.letter in control.dwell_refusals:
+            self._fail(control.dwell_refusals[word.letter])
+        reading = control.dwell_words.get(word.letter)
+        if reading is None:
+            self._fail("G4 %s%s: not a dwell word of this control" % (word.letter, word.text))
+        seconds = self._dwell_seconds(reading, word)
+        if not 0 <= seconds <= MAX_DWELL_SECONDS:
+            self._fail("G4 %s%s: the dwell must be 0 to %g s" % (word.letter, word.text, MAX_DWELL_SECONDS))
+        self._emit(self._words_line(block, [self.writer.dwell(seconds)]))
+
+    def _dwell_seconds(self, reading: str, word: Word) -> float:
+        readers = {
+            DWELL_SECONDS: lambda: word.value,
+            DWELL_LENGTH_SECONDS: lambda: self._length(word),
+            DWELL_MILLISECONDS: lambda: self._integer(word) / 1000.0,
+            DWELL_POINT_SECONDS: lambda: word.value if "." in word.text else self._integer(word) / 1000.0,
+        }
+        return readers[reading]()

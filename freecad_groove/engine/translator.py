@@ -1,0 +1,320 @@
+"""Read lathe programs (Siemens, Allen-Bradley 9/Series, Fanuc, Haas), track their
+modal state, and translate them with every grooving cycle expanded.
+
+    translate_program(text, dialect, settings, target="linuxcnc", source_name="PROGRAM") -> str
+
+``dialect`` is the input: "sinumerik" (CYCLE93), "ab9" (G77/G76), "fanuc"
+(two-block G75/G74), "haas" (one-block G75/G74). ``target`` is "linuxcnc" or
+"fanuc" (see targets.py). Anything the reader cannot translate faithfully
+raises errors.ProgramError with the 1-based line number in ``.line``; a cycle's
+CycleError becomes a ProgramError on the cycle's line with the cycle's message.
+
+How the output is made
+----------------------
+Lines are not copied: each block is read into words and written again by the
+target's writer. The output is always absolute (G90) with X words as diameters
+(G7), so incremental words (G91, Fanuc/Haas U and W), radius programming
+(Siemens DIAMOF, the Allen-Bradley radius G code) and Siemens DIAM90 are
+resolved by the reader and never reach the output: an incremental move needs
+a known position (else ProgramError). N numbers, comments and the block delete
+``/`` are kept. A cycle block becomes a comment naming the call, then the
+expanded moves (no N numbers; each prefixed with ``/`` when the call was).
+
+Choices where the manuals are silent (each has a test)
+------------------------------------------------------
+* Diameter programming at the start for every dialect (the seed example:
+  ``G00 X80 Z65`` before CYCLE93 with AXFA 35 as a radius); metric at the start;
+  the feed mode at the start is *unknown*: a feed move or a cycle before the
+  program sets G94/G95 (G98/G99) is refused, because reading mm/rev as mm/min
+  or the reverse is a crash or a scrapped part. ``start`` (a MachineState) may
+  set other starting modes, including the feed mode.
+* The position at the start is unknown; so is it after a tool change (T, D),
+  a work offset (G54..G59) or a program end. An incremental move, or a cycle,
+  needs a known position: program an absolute X and Z first.
+* The motion mode (G0/G1/G2/G3) at the start is unknown: an axis word before
+  any motion code is refused. After a Siemens or Allen-Bradley cycle it is
+  unknown again (the manuals do not say what the cycle leaves modal); after a
+  Fanuc/Haas G75/G74 (group 00, non-modal) it is the one before the cycle.
+* After a cycle the position is its last move's and the feed the last F it
+  wrote (unchanged when it wrote none).
+* A units change converts the known position and forgets the feed (LinuxCNC
+  resets F to 0 on a feed-mode change too, so a feed-mode change also forgets
+  it unless the block has F).
+* Fanuc, Haas, Allen-Bradley: a non-zero length or feed word without a decimal
+  point (``X80``) is refused: those controls read it in least input increments
+  or per a zero-suppression parameter (X80 may be 0.080 mm). Write ``X80.``.
+  Siemens reads ``X80`` as 80. (The cycle parsers apply the same rule.)
+* Siemens G70 (inch lengths, feed still in the metric basic system) is read as
+  inch for lengths and forgets the feed; an F word in G70 is refused (use
+  G700, which LinuxCNC's G20 matches). The basic system is taken as metric.
+* Arc centres I, K are incremental radius values in every dialect; Fanuc/Haas/AB
+  R and Siemens CR= give the radius (negative = over 180 degrees is refused).
+  An arc needs a known start point; one whose end is off its circle by more
+  than ARC_IJK_TOLERANCE (I/K) or out of reach by ARC_R_TOLERANCE (R), computed
+  on the numbers as written, is refused: tighter than LinuxCNC's own limits, so
+  the output is never rejected there.
+* Tools: Siemens ``T5 D1`` (and ``T5`` alone: D1 is active after a tool
+  change) -> ``T5 M6 G43``; ``D0`` -> ``G49``; D2.. (a second edge) is refused
+  outside CYCLE93. Fanuc/Haas/AB ``T0512`` -> tool 5, offset 12 ->
+  ``T5 M6 G43 H12`` (``G43`` when the offset is the tool number, ``G49`` for
+  offset 00); T with fewer than three digits is refused. Fanuc output writes
+  ``T0512``.
+* LinuxCNC's M6 stops the spindle (a lathe turret's T does not): when the
+  spindle was running, the translated tool change starts it again (M3/M4).
+* A feed move or cycle in feed per revolution needs a spindle speed (S) and a
+  running spindle (M3/M4) programmed before it: LinuxCNC refuses the first and
+  waits for ever on the second.
+* Blocks are kept within MAX_LINE characters (LinuxCNC: 252) by cutting comments;
+  Fanuc output refuses N numbers above 99999.
+* M codes carried: M0 M1 (stops), M3 M4 M5 (spindle), M7 M8 M9 (coolant);
+  M2/M30 end the program and are written as the target's end (LinuxCNC M2,
+  Fanuc M30). Anything after the end except comments and ``%`` is refused;
+  comments after it are dropped. A program without an end gets one.
+  Other M codes (machine specific) are refused.
+* Constant surface speed: G96 needs S in its block; G97 after G96 needs S.
+  The speed limit (Fanuc/Haas ``G50 S``, Siemens ``LIMS=``) becomes LinuxCNC's
+  ``G96 ... D<limit>`` (Fanuc output: ``G50 S``).
+* Dwell: Siemens ``G4 F<s>``; Fanuc ``G04 X<s>``/``U<s>``/``P<ms>``; Haas ``G04 P``
+  (seconds with a decimal point, milliseconds without). The 9/Series dwell
+  word is not documented in the seed: G04 is refused for "ab9".
+* Block delete: a ``/`` block whose effect changes a mode or the position makes
+  that item *ambiguous* (it depends on the operator's switch). Using an
+  ambiguous item (incremental move, X word under an ambiguous diameter mode,
+  feed move without F, a cycle) is refused until a plain block sets it again.
+* ``;`` starts a comment in every dialect (Siemens comment; end of block
+  elsewhere). ``(...)`` is a comment in every dialect. ``%`` lines are skipped;
+  an ``O`` number (Fanuc, Haas, AB) before the first block names the program;
+  a second one (subprograms) is refused.
+* A cycle block may also hold its N number, a comment and mode G codes (units,
+  feed mode, G90/G91, diameter mode), which take effect before the cycle;
+  anything else in the block is refused.
+
+Where the parts are
+-------------------
+reader.py reads lines into words; input_controls.py says what each input
+control's codes mean (an InputControl per dialect); modal.py holds the
+ModalState; this module reads a program block by block, with the handlers of
+translate_motion.py (G0..G3, axis words, arcs), translate_machine.py (F,
+tools, spindle, M codes, dwell) and translate_cycle.py (the registered cycles)
+on translate_base.py's helpers.
+"""
+
+import re
+from typing import List, Optional
+
+from .errors import CycleError, ProgramError
+from .input_controls import COMPENSATION, CYCLE, DWELL, OFFSET, PLANE, REFUSED, g_code_key, input_control
+from .modal import TRACKED, ModalState
+from .moves import MachineState
+from .reader import Block, parse_block
+from .settings import DEFAULT_SETTINGS, Settings
+from .targets import MAX_LINE, Writer, comment, target_spec
+from .translate_base import ActiveCode, Groups
+from .translate_cycle import CycleTranslation
+from .translate_machine import MachineTranslation
+from .translate_motion import MotionTranslation
+
+__all__ = ["Translator", "translate_program"]
+
+
+class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
+    """Reads a program block by block and writes the translation.
+
+    ``line(text, number)`` reads one line; ``state`` is the ModalState after it;
+    ``result()`` is the translated program text.
+    """
+
+    def __init__(self, dialect: str, settings: Settings = DEFAULT_SETTINGS, target: str = "linuxcnc",
+                 source_name: str = "PROGRAM", start: Optional[MachineState] = None) -> None:
+        self.control = input_control(dialect)  # raises on an unknown dialect
+        target_spec(target)  # raises on an unknown target
+        self.dialect = dialect
+        self.settings = settings
+        self.target = target
+        self.fanuc_output = target == "fanuc"
+        self.source_name = source_name
+        self.codes = self.control.code_table()
+        state = ModalState()
+        if start is not None:
+            state.diameter = bool(start.diameter_mode)
+            state.incremental = bool(start.incremental)
+            state.metric = bool(start.metric)
+            state.feed_per_rev = start.feed_per_rev
+        self.state = state
+        self.start_metric = state.metric
+        self.start_feed_per_rev = state.feed_per_rev
+        self.writer = Writer(target, state.metric, state.feed_per_rev)
+        self.body: List[str] = []
+        self.program_number: Optional[int] = None
+        self.started = False  # a block other than %, O, comments was read
+        self.last_line = 0
+
+    # -- reading ------------------------------------------------------------
+
+    def line(self, text: str, number: int) -> None:
+        """Read one line (``number`` is its 1-based line number)."""
+        self._line = number
+        self.last_line = number
+        block = parse_block(text, self.dialect, number)
+        if self.fanuc_output and block.number is not None and block.number > 99999:
+            self._fail("N%d: a Fanuc block number has at most 5 digits" % block.number)
+        self._prefix = "/" if block.delete else ""
+        before = {name: getattr(self.state, name) for name in TRACKED} if block.delete else {}
+        self._defined = set()
+        try:
+            self._block(block)
+        except ProgramError as exc:
+            if exc.line is None:  # raised by the writer: this line's words
+                exc.line = number
+            raise
+        except CycleError as exc:
+            raise ProgramError(exc.message, number) from exc
+        except Exception as exc:  # a bug, reported on the line that triggered it
+            raise ProgramError("internal error (%s: %s)" % (type(exc).__name__, exc), number) from exc
+        self._track_block_delete(block, before)
+
+    def _track_block_delete(self, block: Block, before: dict) -> None:
+        """What a '/' line changed becomes ambiguous; what a plain line sets is known again."""
+        state = self.state
+        if block.delete:
+            changed = {name for name in TRACKED if getattr(state, name) != before[name]}
+            if "metric" in changed:
+                changed |= {"x", "z", "feed"}
+            state.ambiguous |= changed
+            self.writer.motion = None  # the output's motion depends on the switch too
+        else:
+            state.ambiguous -= self._defined
+        if state.ambiguous:
+            self._sync_writer()
+
+    def _block(self, block: Block) -> None:
+        if block.percent:
+            return
+        if self.state.ended:
+            if block.words or block.keywords or block.call or block.number is not None:
+                self._fail("text after the program end (M2/M30): subprograms and a second program are not supported")
+            return
+        if block.is_empty():
+            for text in block.comments:
+                self._emit(comment(text, MAX_LINE - 3))
+            return
+        letters = [word.letter for word in block.words]
+        if "O" in letters:
+            self._program_number(block)
+            return
+        self.started = True
+        for letter in set(letters):
+            if letter not in ("G", "M") and letters.count(letter) > 1:
+                self._fail("%s is programmed twice in the block" % letter)
+        groups = self._g_codes(block)
+        if block.call is not None or CYCLE in groups:
+            self._cycle_block(block, groups)
+        elif DWELL in groups:
+            self._dwell_block(block)
+        else:
+            self._plain_block(block, groups)
+
+    def _g_codes(self, block: Block) -> Groups:
+        """The block's G codes by modal group, from the input control's table."""
+        groups: Groups = {}
+        for word in block.all("G"):
+            code = self.codes.get(g_code_key(word.text))
+            if code is None:
+                self._fail("G%s is not supported in a %s program" % (word.text, self.dialect))
+            if code.group == REFUSED:
+                self._fail("G%s: %s" % (word.text, code.value))
+            if code.group in groups:
+                self._fail("G%s and G%s are in the same modal group" % (groups[code.group].word.text, word.text))
+            groups[code.group] = ActiveCode(code.value, word)
+        return groups
+
+    def _program_number(self, block: Block) -> None:
+        if not self.control.program_numbers:
+            self._fail("O is not a %s word" % self.control.maker)
+        if len(block.words) > 1 or block.keywords or block.call or block.number is not None:
+            self._fail("the O program number must be alone in its block")
+        if self.started or self.program_number is not None:
+            self._fail("a second O program number: subprograms and several programs in a file are not supported")
+        self.program_number = self._integer(block.words[0])
+        for text in block.comments:
+            self._emit(comment(text, MAX_LINE - 3))
+
+    def _plain_block(self, block: Block, groups: Groups) -> None:
+        """A block without a cycle or dwell: modes, tool, spindle, M codes, motion."""
+        state = self.state
+        self._check_plain_letters(block)
+        early: List[str] = []  # Fanuc output: blocks that must stand alone before this one
+        output: List[str] = []
+        self._modes(block, groups, output, early)
+        if PLANE in groups and not self.fanuc_output:  # Fanuc: G18 implied (plane selection is an option)
+            output.append("G18")
+        if OFFSET in groups:
+            output.append(groups[OFFSET].value)
+            state.x = state.z = None
+            self._defined |= {"x", "z"}
+        if COMPENSATION in groups:
+            output.append("G40")
+        feed_word = self._feed_word(block)
+        self._tool(block, output)  # tool, then spindle speed / CSS / limit
+        self._restart_spindle(block, output)
+        self._spindle(block, groups, output, early)
+        stops_and_ends = self._m_codes(block, output)  # written after the motion
+        self._motion(block, groups, output)
+        if feed_word is not None:
+            output.append("F" + self.writer.f_word(state.feed))
+        self._stops_and_ends(stops_and_ends, output)
+        self._emit_early(block, early, output or block.comments)
+        if output or block.comments:
+            self._emit(self._words_line(block, output))
+        self._sync_writer()
+
+    def _check_plain_letters(self, block: Block) -> None:
+        for word in block.words:
+            if word.letter in self.control.plain_letters:
+                continue
+            if word.letter in self.control.letter_refusals:
+                self._fail("%s%s: %s" % (word.letter, word.text, self.control.letter_refusals[word.letter]))
+            self._fail("%s%s is not supported here" % (word.letter, word.text))
+
+    # -- result -------------------------------------------------------------
+
+    def result(self) -> str:
+        """The translated program text."""
+        header_writer = Writer(self.target, self.start_metric, self.start_feed_per_rev)
+        title = "%s: %s program%s, cycles expanded for %s by freecad-groove" % (
+            self.source_name,
+            self.dialect,
+            " O%d" % self.program_number if self.program_number is not None else "",
+            self.target,
+        )
+        lines = header_writer.header(title, self.program_number if self.fanuc_output else None)
+        lines.extend(self.body)
+        if not self.state.ended:
+            lines.append(self.writer.spec.end)
+        if self.fanuc_output:
+            lines.append("%")
+        return "\n".join(lines) + "\n"
+
+
+_LINES = re.compile(r"\r\n|\r|\n")
+
+
+def translate_program(
+    text: str,
+    dialect: str,
+    settings: Settings = DEFAULT_SETTINGS,
+    target: str = "linuxcnc",
+    source_name: str = "PROGRAM",
+    start: Optional[MachineState] = None,
+) -> str:
+    """Translate a ``dialect`` program for ``target`` with every cycle call expanded.
+
+    ``start`` (moves.MachineState, optional) gives the modes at the start
+    (diameter_mode, incremental, metric, feed_per_rev); the position is never
+    taken from it. Raises ProgramError (``.line`` set) on the first line that
+    cannot be translated.
+    """
+    translator = Translator(dialect, settings, target=target, source_name=source_name, start=start)
+    for number, line in enumerate(_LINES.split(text), 1):
+        translator.line(line, number)
+    return translator.result()
