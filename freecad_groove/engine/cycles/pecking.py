@@ -151,6 +151,17 @@ def _points(start, end, step, count):
     return points
 
 
+def _plunge_axis_move(axis):
+    """A Move maker taking (kind, plunge coordinate, stepping coordinate, feed)."""
+    if axis == "X":
+        def move(kind, p, s, f=None):
+            return Move(kind, p, s, f)
+    else:
+        def move(kind, p, s, f=None):
+            return Move(kind, s, p, f)
+    return move
+
+
 def peck_grooves(
     axis: str,
     start: Tuple[float, float],
@@ -190,13 +201,7 @@ def peck_grooves(
     targets = _points(p0, bottom, peck, _count(depth, peck))[1:]
     pecks = [(t, t - sign * retract) for t in targets[:-1]]
 
-    if axis == "X":
-        def move(kind, p, s, f=None):
-            return Move(kind, p, s, f)
-    else:
-        def move(kind, p, s, f=None):
-            return Move(kind, s, p, f)
-
+    move = _plunge_axis_move(axis)
     out = []
     add = out.append
     s = s0
