@@ -27,6 +27,7 @@ from .engine import registry
 from .engine.input_controls import DIALECTS, INPUT_CONTROLS
 from .engine.output import write_atomically
 from .engine.registry import CALL, CycleEntry, CycleWord
+from .engine.targets import TARGETS
 
 EXIT_ERROR = 2
 
@@ -272,7 +273,7 @@ def _add_expand_options(parser: argparse.ArgumentParser) -> None:
     ex.add_argument("--spindle", type=_positive, metavar="RPM",
                     help="spindle speed started (M3) before the moves; needed with feed per revolution")
     ex.add_argument("--incremental", action="store_true", help="G91 in force (AB, Siemens)")
-    ex.add_argument("--to", choices=("linuxcnc", "fanuc"), default="linuxcnc", help="output control")
+    ex.add_argument("--to", choices=TARGETS, default="linuxcnc", help="output control")
     _add_start_options(parser, expand=False)
 
 
@@ -441,7 +442,7 @@ def build_parser():
     )
     ex.add_argument(
         "--to",
-        choices=("linuxcnc", "fanuc"),
+        choices=TARGETS,
         default="linuxcnc",
         help="the control the output is for: linuxcnc (G7 diameter mode, G4 P seconds, M2; the default) or "
         "fanuc (plain Fanuc lathe code: diameter X, G98/G99, G04 P milliseconds, M30, %% lines)",
