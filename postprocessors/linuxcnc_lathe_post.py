@@ -2,7 +2,7 @@
 """LinuxCNC lathe (G7 diameter mode): every groove expanded into G0/G1/G4 moves.
 
 A FreeCAD CAM script post of freecad-groove: this file is the argument parser
-and a call into the shared post logic, freecad_groove/freecad/posts.py (which
+and a call into the shared post logic, freecad_groove/freecad/posts/ (which
 documents the output, the options and every choice). `--help` in the Job's
 post-processor arguments returns the options instead of a program.
 """

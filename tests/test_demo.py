@@ -28,8 +28,8 @@ import zipfile
 
 import pytest
 from conftest import IN_CI, ROOT
+from freecad_roots import HOW_TO_GET, available
 from rs274 import RS274Error, require_rs274, run_rs274
-from test_freecad import HOW_TO_GET, available
 
 from freecad_groove import demo
 from freecad_groove.engine import GroovingTool, Settings

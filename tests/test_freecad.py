@@ -15,32 +15,26 @@ fails. (A host FreeCAD used instead of a root needs `freecad` and
 """
 
 import ast
-import functools
 import json
 import os
 import shutil
-import subprocess
 import sys
 
 import pytest
-
-from conftest import IN_CI, ROOT
+from conftest import ROOT
+from freecad_roots import FREECADCMD, LABELS, available, describe, exec_code, run
 
 sys.path.insert(0, os.path.join(ROOT, "tests", "freecad"))
 import seed_case  # noqa: E402  (no FreeCAD in it)
 
-SCRIPT = os.path.join(ROOT, "scripts", "freecad-roots")
 SUITE = os.path.join(ROOT, "tests", "freecad", "run_suite.py")
-LABELS = ["1.1", "1.0"]  # 1.1 first: the primary target
 TIMEOUT = 1800  # seconds for one FreeCAD's suite (about 30 s on a 2-core machine)
-# Short: FreeCAD 1.1 crashes on a -c text of 256 characters or more.
-RUN_SUITE_CODE = "import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT'] + '/tests/freecad/run_suite.py').read())"
+RUN_SUITE_CODE = exec_code("tests/freecad/run_suite.py")
 # The GUI suite: FreeCAD's GUI on a virtual X screen, running a script file.
 GUI_COMMAND = ('exec xvfb-run -a -s "-screen 0 1600x1000x24" freecad -M "$FREECAD_GROOVE_CHECKOUT" '
                '"$FREECAD_GROOVE_CHECKOUT/tests/freecad_gui/start.py"')
 GUI_TIMEOUT = 900
 CROSS_CHECK = "tests/freecad/test_environment.py::test_seed_cycle93_expands_to_the_hosts_moves"
-HOW_TO_GET = "`scripts/freecad-roots ensure` (as root) builds FreeCAD 1.1 and 1.0 (about 5 GB, a few minutes)"
 
 
 def engine_test_files():
@@ -51,28 +45,6 @@ def engine_test_files():
         if isinstance(node, ast.Assign) and [t.id for t in node.targets] == ["ENGINE_TESTS"]:
             return list(ast.literal_eval(node.value))
     raise AssertionError("ENGINE_TESTS not found in " + SUITE)
-
-
-@functools.lru_cache(maxsize=None)
-def available():
-    """{label: where} from `scripts/freecad-roots list`; {} if it fails."""
-    try:
-        out = subprocess.run([SCRIPT, "list"], capture_output=True, text=True, timeout=120).stdout
-    except (OSError, subprocess.SubprocessError):
-        return {}
-    found = {}
-    for line in out.splitlines():
-        fields = line.split("\t")
-        if len(fields) >= 2:
-            found[fields[0]] = fields[1]
-    return found
-
-
-def not_available(label, why):
-    message = "FreeCAD %s is not available: %s. %s" % (label, why.strip(), HOW_TO_GET)
-    if IN_CI:
-        pytest.fail(message + " (CI: a missing FreeCAD is a failure)", pytrace=False)
-    pytest.skip(message)
 
 
 def describe_failures(result):
@@ -92,16 +64,6 @@ def describe_failures(result):
     return "\n\n".join(parts)
 
 
-def publish_artifacts(src):
-    """Move the FreeCAD run's post artifacts to out/post-artifacts/<version>/."""
-    if not src.is_dir():
-        return
-    for sub in src.iterdir():
-        dest = os.path.join(ROOT, "out", "post-artifacts", sub.name)
-        shutil.rmtree(dest, ignore_errors=True)
-        shutil.copytree(sub, dest)
-
-
 def publish_screenshots(src, label):
     """The GUI run's screenshots to out/gui-screenshots/<label>/ (scripts/screenshots
     copies FreeCAD 1.1's into docs/ for the README)."""
@@ -111,27 +73,13 @@ def publish_screenshots(src, label):
         shutil.copytree(src, dest)
 
 
-def tail(text, lines=40):
-    return "\n".join(text.splitlines()[-lines:])
-
-
 def run_in_freecad(label, tmp_path, env_extra, command, args=(), timeout=TIMEOUT):
     """Run ``command`` (an sh -c text; ``args`` are its $1...) in FreeCAD
     ``label`` with tmp_path shared; returns (result JSON, summary, output,
     exit status); skips when that FreeCAD is missing."""
-    where = available().get(label)
-    if where is None:
-        not_available(label, "`scripts/freecad-roots list` does not list it")
-    env = dict(os.environ)
-    env.pop("FREECAD_GROOVE_PYTEST_ARGS", None)
-    env["FREECAD_GROOVE_SUITE_EXIT"] = "1"
-    env.update(env_extra)
-    proc = subprocess.run([SCRIPT, "run", label, "--share", str(tmp_path), "--", "sh", "-c", command, "sh", *args],
-                          capture_output=True, text=True, timeout=timeout, env=env)
-    if proc.returncode == 77:
-        not_available(label, proc.stderr)
-    output = "exit status %d\n--- stdout ---\n%s\n--- stderr ---\n%s" % (
-        proc.returncode, tail(proc.stdout), tail(proc.stderr))
+    env = dict(env_extra, FREECAD_GROOVE_SUITE_EXIT="1")
+    proc, where = run(label, tmp_path, command, args, env, timeout, drop=("FREECAD_GROOVE_PYTEST_ARGS",))
+    output = describe(proc)
     result_file = tmp_path / env_extra["FREECAD_GROOVE_RESULT"]
     assert result_file.exists(), "FreeCAD %s (%s) wrote no result:\n%s" % (label, where, output)
     result = json.loads(result_file.read_text())
@@ -157,13 +105,8 @@ LABELS_FOUND = LABELS + sorted(set(available()) - set(LABELS))
 def test_freecad_level_suite(label, tmp_path):
     with open(tmp_path / seed_case.HOST_MOVES_FILE, "w") as f:
         json.dump(seed_case.as_json(), f)
-    # The posts' LinuxCNC output and groove geometry, for the host-side rs274
-    # and simulation checks in test_post_artifacts.py (runs after this file).
-    env = {"FREECAD_GROOVE_RESULT": "result.json", "FREECAD_GROOVE_ARTIFACTS": "artifacts"}
-    # -M: the checkout is loaded as a FreeCAD Mod, like an installed add-on.
-    command = 'exec freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$1"'
-    result, summary, output, returncode = run_in_freecad(label, tmp_path, env, command, [RUN_SUITE_CODE])
-    publish_artifacts(tmp_path / "artifacts")
+    env = {"FREECAD_GROOVE_RESULT": "result.json"}
+    result, summary, output, returncode = run_in_freecad(label, tmp_path, env, FREECADCMD, [RUN_SUITE_CODE])
     check_result(result, summary, returncode, output)
     assert CROSS_CHECK in result["passed"], "%s: %s did not pass (skipped: %s)" % (
         summary, CROSS_CHECK, result["skipped"])

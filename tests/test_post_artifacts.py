@@ -1,13 +1,14 @@
 """The lathe posts' programs, checked on the host by LinuxCNC's rs274 and the
 simulation oracle (neither exists inside the FreeCAD roots).
 
-tests/freecad/test_posts.py::test_write_artifacts (run inside FreeCAD 1.1
-and 1.0 by tests/test_freecad.py) writes one JSON per case into
-<artifacts>/<FreeCAD major.minor>/: a Groove op's programs from every post,
-the engine's moves from the op's first start point on, and per groove the
-finished region and a stock window (engine geometry, world (x radius, z)),
-the tool (with the reference corner the programs use), the plunge direction
-and the peck retract. Here, for every case and post:
+The programs come from tests/freecad/write_post_artifacts.py, which the
+``posted`` fixture runs itself, once per session, inside FreeCAD 1.1 and 1.0
+(``scripts/freecad-roots run LABEL --share <pytest tmp dir>``): one JSON per
+case, a Groove op's programs from every post, the engine's moves from the
+op's first start point on, and per groove the finished region and a stock
+window (engine geometry, world (x radius, z)), the tool (with the reference
+corner the programs use), the plunge direction and the peck retract. Here,
+for every case and post:
 
 * linuxcnc_lathe: rs274 must accept the program; its canonical moves from
   the moment the tool reaches the start point must be the engine's moves;
@@ -18,50 +19,66 @@ and the peck retract. Here, for every case and post:
   point on are swept through the stock by the oracle: no gouge, the groove
   complete within the blade's reach, no rapid into stock.
 
-The artifacts directory is $FG_ARTIFACTS (a host path) or out/post-artifacts/
-in the checkout. tests/test_freecad.py must hand the FreeCAD runs a place to
-write them and bring them back (see the notes at the end of this module). When
-there are none this test skips, except under CI=true, where it fails.
+A FreeCAD that is not available skips its tests (CI=true: fails); a FreeCAD
+run that writes no programs fails them.
 """
 
-import glob
 import json
-import os
 import re
 
 import pytest
+import rs274
+from freecad_roots import FREECADCMD, LABELS, describe, exec_code, run
+from rs274 import RS274Error, canonical_matches, require_rs274, written_moves
 from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
-from conftest import IN_CI, ROOT
-from freecad_groove.engine import GroovingTool, Settings
 from freecad_groove import verify as sim
+from freecad_groove.engine import GroovingTool, Settings
 from freecad_groove.engine.moves import DWELL, FEED, RAPID, Move
 from freecad_groove.engine.translator import translate_program
-import rs274
-from rs274 import RS274Error, canonical_matches, require_rs274, written_moves
 
-ARTIFACTS = os.environ.get("FG_ARTIFACTS") or os.path.join(ROOT, "out", "post-artifacts")
-LABELS = ["1.1", "1.0"]
 POSTS = ["linuxcnc", "sinumerik", "ab9", "fanuc", "haas"]
 START_TOL = 1e-3  # how close a canonical move must end to the start point (3-decimal output)
 KINDS = {"G0": RAPID, "G1": FEED, "G4": DWELL}
+WRITER_CODE = exec_code("tests/freecad/write_post_artifacts.py")
+WRITE_TIMEOUT = 600  # seconds for one FreeCAD's run (about 20 s on a 2-core machine)
 
 
-def cases(label):
-    """The artifacts of FreeCAD ``label``; skips (fails in CI) when there are none."""
-    files = sorted(glob.glob(os.path.join(ARTIFACTS, label, "*.json")))
-    if not files:
-        message = ("no post artifacts of FreeCAD %s in %s: run the FreeCAD suites (tests/test_freecad.py) "
-                   "with an artifacts directory first" % (label, ARTIFACTS))
-        if IN_CI:
-            pytest.fail(message + " (CI: missing artifacts are a failure)", pytrace=False)
-        pytest.skip(message)
+def write_artifacts(label, share):
+    """Run write_post_artifacts.py in FreeCAD ``label``; the cases it wrote into ``share``."""
+    env = {"FREECAD_GROOVE_RESULT": "artifacts.json", "FREECAD_GROOVE_ARTIFACTS": "artifacts"}
+    proc, where = run(label, share, FREECADCMD, [WRITER_CODE], env, WRITE_TIMEOUT)
+    result_file = share / "artifacts.json"
+    assert result_file.exists(), "FreeCAD %s (%s) wrote no result:\n%s" % (label, where, describe(proc))
+    result = json.loads(result_file.read_text())
+    assert not result["error"] and proc.returncode == 0, "FreeCAD %s (%s) could not write the programs:\n%s\n%s" % (
+        label, where, result["error"], describe(proc))
     out = []
-    for name in files:
-        with open(name) as f:
+    for name in sorted(result["written"]):
+        with open(share / "artifacts" / name) as f:
             out.append(json.load(f))
+    assert out, "FreeCAD %s (%s) wrote no post programs" % (label, where)
     return out
+
+
+@pytest.fixture(scope="session")
+def posted(tmp_path_factory):
+    """cases(label): the programs of FreeCAD ``label``, written once per session
+    (an outcome that skipped or failed is repeated for every test that asks)."""
+    outcomes = {}
+
+    def cases(label):
+        if label not in outcomes:
+            try:
+                outcomes[label] = write_artifacts(label, tmp_path_factory.mktemp("post-artifacts-%s-" % label))
+            except (Exception, pytest.skip.Exception, pytest.fail.Exception) as exc:
+                outcomes[label] = exc
+        if isinstance(outcomes[label], BaseException):
+            raise outcomes[label]
+        return outcomes[label]
+
+    return cases
 
 
 def run_rs274(text, tools):
@@ -111,10 +128,10 @@ def judge(case, canon, index, label):
 
 @pytest.mark.parametrize("post", POSTS)
 @pytest.mark.parametrize("label", LABELS)
-def test_posted_grooves_run_in_rs274_and_cut_cleanly(label, post):
+def test_posted_grooves_run_in_rs274_and_cut_cleanly(posted, label, post):
     require_rs274()
     checked = 0
-    for case in cases(label):
+    for case in posted(label):
         name = "FreeCAD %s %s %s_lathe %s" % (case["freecad"], case["case"], post, case["programs"][post]["args"])
         program = case["programs"][post]
         if program["text"] is None:
@@ -137,11 +154,11 @@ def test_posted_grooves_run_in_rs274_and_cut_cleanly(label, post):
     assert checked, "no %s program of FreeCAD %s was checked" % (post, label)
 
 
-def test_every_case_has_native_calls_where_the_control_has_them():
+def test_every_case_has_native_calls_where_the_control_has_them(posted):
     """The cases cover native CYCLE93, G77/G76 and G75/G74 calls, not only expanded moves."""
     seen = {post: set() for post in POSTS}
     for label in LABELS:
-        for case in cases(label):
+        for case in posted(label):
             for post in POSTS:
                 text = case["programs"][post]["text"] or ""
                 seen[post] |= set(re.findall(r"^(CYCLE93|G7[4-7])\b", text, re.M))

@@ -16,16 +16,13 @@ every post in postprocessors/:
 * registration puts the posts in FreeCAD's post list and FreeCAD's own
   PostProcessorFactory runs them.
 
-With FG_ARTIFACTS (or FREECAD_GROOVE_ARTIFACTS, relative to
-FREECAD_GROOVE_SHARE) set, test_write_artifacts writes each case's programs
-and engine geometry as JSON into <that dir>/<FreeCAD version>/ for the host
-test tests/test_post_artifacts.py (LinuxCNC's rs274 and the shapely oracle
-exist only on the host).
+write_post_artifacts.py (run by tests/test_post_artifacts.py) posts more ops
+with these helpers for the checks by LinuxCNC's rs274 and the shapely oracle
+on the host.
 """
 
-import importlib.util
 import importlib
-import json
+import importlib.util
 import os
 import re
 import stat
@@ -35,6 +32,7 @@ import FreeCAD
 import Path
 import Path.Main.Job as PathJob
 import pytest
+import test_groove_op as tg
 
 from freecad_groove.engine import GroovingTool, Settings
 from freecad_groove.engine.cycles.ab_g77 import G76, G77
@@ -43,7 +41,6 @@ from freecad_groove.engine.cycles.fanuc_g75 import FanucG74, FanucG75, HaasG74, 
 from freecad_groove.engine.moves import DWELL, FEED, RAPID
 from freecad_groove.engine.translator import translate_program
 from freecad_groove.freecad import posts, registration
-import test_groove_op as tg
 
 # The Groove op tests' stepped shaft, Job and helpers (doc and shop are fixtures).
 doc, shop, groove, FEED_MM_MIN = tg.doc, tg.shop, tg.groove, tg.FEED_MM_MIN
@@ -830,122 +827,3 @@ def test_the_jobs_post_list_and_freecads_post_runner(shop):
         # FreeCAD's list: the fixture (G54), the tool controller, the op
         assert "G54" in text and text.replace("G54\n", "", 1) == export(name, [tc, op])
         assert processor.tooltip == post(name).TOOLTIP
-
-
-# ----------------------------------------------------------------------------- artifacts for the host
-
-
-ARTIFACT_CASES = {  # name -> (groove key, keywords, post arguments)
-    "cylinder_plain": ("cylinder", {}, ""),
-    "cylinder_blade_wide_set": ("cylinder", dict(width=3, position=2, groove_count=3, pitch=5), ""),
-    "cylinder_wide_set": ("cylinder", dict(width=4.5, position=1, groove_count=2, pitch=8, infeed=0.7), ""),
-    "bore_plain": ("bore", {}, ""),
-    "shoulder_plain": ("shoulder", {}, ""),
-    "left_end_plain": ("left_end", dict(width=5), ""),
-    "cone_flanks_allowances": ("cone_up", dict(flank_angle1=10, base_corner2=0.3, base_corner2_type="Radius",
-                                               base_allowance=0.1, flank_allowance=0.1), ""),
-    "cylinder_chamfer_dwell": ("cylinder", dict(edge_corner1=0.5, edge_corner1_type="Chamfer", dwell=0.3), ""),
-    "cylinder_reference_override": ("cylinder", dict(width=5), "--reference-corner plus"),
-    "bore_plus_op": ("bore", dict(reference_corner="plus"), ""),
-    "shoulder_reference_override": ("shoulder", dict(width=4), "--reference-corner plus --retract 0.3"),
-}
-
-
-def artifacts_dir():
-    base = os.environ.get("FG_ARTIFACTS") or os.environ.get("FREECAD_GROOVE_ARTIFACTS")
-    if not base:
-        return None
-    if not os.path.isabs(base):
-        base = os.path.join(os.environ.get("FREECAD_GROOVE_SHARE") or os.getcwd(), base)
-    major, minor = FreeCAD.Version()[:2]
-    return os.path.join(base, "%s.%s" % (major, minor))
-
-
-def artifact(op, case, args):
-    plans = op.Proxy.plan(op)
-    first = plans[0]
-    reference = None
-    m = re.search(r"--reference-corner (\w+)", args)
-    if m:
-        reference = m.group(1)
-    out_ref = reference or first.settings.tool.reference
-    tool = first.settings.tool
-    d = (tool.width if out_ref == "plus" else 0.0) - tool.reference_offset
-    longitudinal = first.cycle.kind()[0]
-    dx, dz = (0.0, d) if longitudinal else (d, 0.0)
-    retract = op.Retract.Value or 1.0
-    m = re.search(r"--retract ([\d.]+)", args)
-    if m:
-        retract = float(m.group(1))
-    feed = op.ToolController.HorizFeed.Value * 60.0
-    expected = [[RAPID, first.start.x + dx, first.start.z + dz, None, 0.0]]
-    x, z = first.start.x, first.start.z
-    for k, plan in enumerate(plans):
-        if k:
-            for lx, lz in plan.link:
-                x = x if lx is None else lx
-                z = z if lz is None else lz
-                expected.append([RAPID, x + dx, z + dz, None, 0.0])
-        for mv in plan.moves:
-            expected.append([mv.kind, mv.x + dx, mv.z + dz, feed if mv.kind == FEED else None, mv.p])
-            if mv.kind != DWELL:
-                x, z = mv.x, mv.z
-    programs = {}
-    for name in NAMES:
-        own = args if name in PECKING else re.sub(r"\s*--retract [\d.]+", "", args)  # only they have it
-        try:
-            programs[name] = {"args": own, "text": export(name, [op], own), "error": None}
-        except posts.PostError as e:
-            programs[name] = {"args": own, "text": None, "error": str(e)}
-    return {
-        "case": case,
-        "freecad": ".".join(FreeCAD.Version()[:3]),
-        "op": op.Label,
-        "tool": {"width": tool.width, "corner_radius": tool.corner_radius, "reference": out_ref},
-        "retract": retract,
-        "plunge": first.cycle.plunge_direction(),
-        "start": [first.start.x + dx, first.start.z + dz],
-        "expected": expected,
-        "grooves": [{
-            "call": p.cycle.emit(),
-            "region": [list(pt) for pt in p.cycle.geometry(p.settings).region_world()],
-            "stock": [list(pt) for pt in p.cycle.geometry(p.settings).stock_world()],
-        } for p in plans],
-        "programs": programs,
-    }
-
-
-def test_write_artifacts(doc):
-    """The programs of every ARTIFACT_CASES op for tests/test_post_artifacts.py
-    (rs274 and the simulation oracle run on the host)."""
-    folder = artifacts_dir()
-    if folder is None:
-        pytest.skip("FG_ARTIFACTS / FREECAD_GROOVE_ARTIFACTS not set: no artifacts for the host")
-    os.makedirs(folder, exist_ok=True)
-    for old in os.listdir(folder):
-        if old.endswith(".json"):
-            os.unlink(os.path.join(folder, old))
-    shaft = doc.addObject("Part::Feature", "Shaft")
-    shaft.Shape = tg.shaft_shape()
-    doc.recompute()
-    job = PathJob.Create("Job", [shaft])
-    tc = job.Tools.Group[0]
-    tc.HorizFeed = "%g mm/min" % FEED_MM_MIN
-    tc.SpindleSpeed = 800
-    doc.recompute()
-    shop_ = (doc, shaft, job, tc)
-    written = []
-    for case, (key, values, args) in sorted(ARTIFACT_CASES.items()):
-        op = groove(shop_, key, **values)
-        assert op.isValid(), (case, op.getStatusString())
-        data = artifact(op, case, args)
-        assert data["programs"]["linuxcnc"]["text"], case
-        # the expected moves are what the LinuxCNC program holds
-        events = read(data["programs"]["linuxcnc"]["text"], "linuxcnc")
-        assert any(e[0] == "G1" for e in events)
-        path = os.path.join(folder, case + ".json")
-        with open(path + ".tmp", "w") as f:
-            json.dump(data, f)
-        os.replace(path + ".tmp", path)
-        written.append(path)
-    assert len(written) == len(ARTIFACT_CASES)

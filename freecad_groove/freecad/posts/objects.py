@@ -1,0 +1,69 @@
+"""What a post recognises among the FreeCAD objects it is given: Jobs, tool
+controllers, Groove ops (also inside dressups), the ops' properties and labels.
+
+The objects are recognised by what they hold (duck typing), as FreeCAD's own
+posts do: a post runs on whatever list the Job or a script hands it.
+"""
+
+from typing import Any, Iterable, Iterator, Optional
+
+
+def op_chain(obj: Any) -> Iterator[Any]:
+    """``obj``, then the op it wraps, and so on (dressups hold their op in ``Base``)."""
+    seen = set()
+    while obj is not None and id(obj) not in seen:
+        seen.add(id(obj))
+        yield obj
+        base = getattr(obj, "Base", None)
+        obj = base if hasattr(base, "Path") else None
+
+
+def is_groove_op(obj: Any) -> bool:
+    """Whether ``obj`` is a Groove op (its proxy plans grooves)."""
+    proxy = getattr(obj, "Proxy", None)
+    return proxy is not None and hasattr(proxy, "plan") and hasattr(proxy, "cycles") and hasattr(obj, "GrooveCount")
+
+
+def groove_op_of(obj: Any) -> Optional[Any]:
+    """The Groove op ``obj`` is or wraps (dressups hold their op in ``Base``), else None."""
+    return next((link for link in op_chain(obj) if is_groove_op(link)), None)
+
+
+def op_property(obj: Any, name: str, default: Any = None) -> Any:
+    """A property of the op or of the op a dressup wraps (FreeCAD's opProperty)."""
+    for link in op_chain(obj):
+        if hasattr(link, name):
+            return getattr(link, name)
+    return default
+
+
+def is_tool_controller(obj: Any) -> bool:
+    return hasattr(obj, "ToolNumber") and hasattr(obj, "SpindleSpeed") and hasattr(obj, "HorizFeed")
+
+
+def is_job(obj: Any) -> bool:
+    return hasattr(obj, "Operations") and hasattr(getattr(obj, "Operations", None), "Group")
+
+
+def is_fixture_block(obj: Any) -> bool:
+    """FreeCAD's fixture blocks (G54 ...) in a Job's post list: they carry no label of their own."""
+    return type(obj).__name__ == "_TempObject"
+
+
+def label_of(obj: Any) -> str:
+    """The object's Label (its Name when it has none) for comments and messages."""
+    return str(getattr(obj, "Label", None) or getattr(obj, "Name", None) or "object")
+
+
+def job_of(objects: Iterable[Any]) -> Optional[Any]:
+    """The Job the objects belong to: the first Job among them, their parent's or their grandparent's."""
+    for obj in objects:
+        if is_job(obj):
+            return obj
+        for parent in getattr(obj, "InList", None) or []:
+            if is_job(parent):
+                return parent
+            for grand in getattr(parent, "InList", None) or []:
+                if is_job(grand):
+                    return grand
+    return None

@@ -1,0 +1,133 @@
+"""The posts' arguments: each post's argparse parser, its tooltip, and :class:`Options`, the parsed options completed.
+
+A post takes only the options its control has a use for (the control's data
+says which); a bad argument raises PostError instead of ending FreeCAD.
+"""
+
+import argparse
+import math
+import shlex
+from typing import List, Optional, Sequence, Tuple, Union
+
+from ...engine.cycles.pecking import DECIMALS as CYCLE_WORD_DECIMALS
+from ...engine.moves import REFERENCE_MINUS, REFERENCE_PLUS
+from .controls import NATIVE_CYCLE93, NATIVE_PECKING, Control, control_named
+from .errors import PostError
+
+MAX_PRECISION = 6
+MAX_PROGRAM_NUMBER = 9999
+
+
+class PostParser(argparse.ArgumentParser):
+    """An ArgumentParser that raises PostError where argparse would exit."""
+
+    def error(self, message: str) -> None:
+        raise PostError("%s: %s" % (self.prog, message))
+
+    def exit(self, status: int = 0, message: Optional[str] = None) -> None:
+        raise PostError("%s: %s" % (self.prog, (message or "exit %d" % status).strip()))
+
+
+def tooltip(name: str) -> str:
+    """The one-line description of post ``name`` FreeCAD shows."""
+    control = control_named(name)
+    return "%s post by freecad-groove: %s; other operations as X/Z moves (X as %s)." % (
+        control.title, control.grooves_summary(), control.x_words)
+
+
+def _add_groove_options(parser: PostParser, control: Control) -> None:
+    """--native-cycles/--expand-cycles, --retract and the X word options."""
+    cycles = parser.add_mutually_exclusive_group()
+    if control.native:
+        cycles.add_argument("--native-cycles", dest="cycles", action="store_const", const="native",
+                            help="write grooves as the control's own cycle calls where it has one (default)")
+    cycles.add_argument("--expand-cycles", dest="cycles", action="store_const", const="expand",
+                        help="write every groove as G0/G1 moves (the op's own path)" + control.expand_help_note)
+    if control.native == NATIVE_PECKING:
+        parser.add_argument("--retract", type=float, metavar="E",
+                            help="peck retract e of the %s cycles, mm (default: the op's Retract, 0 = 1 mm); %s"
+                            % (control.pecking_codes, control.retract_help()))
+    if control.has_x_mode:
+        parser.add_argument("--x-mode", choices=("diameter", "radius"), default="diameter",
+                            help="X words as diameters (default) or radii (%s)" % control.x_mode_codes)
+    if control.g07_radius_option:
+        parser.add_argument("--g07-radius", action="store_true",
+                            help="on this control G07 selects radius mode and G08 diameter mode "
+                            "(default: G07 diameter)")
+    if control.native == NATIVE_CYCLE93:
+        parser.add_argument("--diameter-input", action="store_true",
+                            help="write CYCLE93 AXFA, DEPG, FAL1 (longitudinal) and FAL2 (face) as diameters "
+                            "(default: radius values, as the engine reads them)")
+
+
+def _add_program_options(parser: PostParser, control: Control) -> None:
+    """The reference corner, the program frame, comments, precision and --help."""
+    parser.add_argument("--reference-corner", choices=(REFERENCE_MINUS, REFERENCE_PLUS),
+                        help="the blade corner the control's tool offset measures "
+                        "(default: each op's ReferenceCorner)")
+    if control.o_number_frame:
+        parser.add_argument("--program-number", type=int, default=1, metavar="N",
+                            help="O number of the program (default 1)")
+    parser.add_argument("--no-header", action="store_true", help="no program name / post comment at the top")
+    parser.add_argument("--no-comments", action="store_true", help="no comments at all")
+    cycle_words = "; cycle words keep at most %d" % CYCLE_WORD_DECIMALS if control.native == NATIVE_PECKING else ""
+    parser.add_argument("--precision", type=int, default=control.digits, metavar="N",
+                        help="decimals of coordinates (default %d%s)" % (control.digits, cycle_words))
+    parser.add_argument("--help", action="store_true", help="return this help instead of a program")
+
+
+def make_parser(name: str) -> PostParser:
+    """The argparse parser of post ``name`` (a key of CONTROLS)."""
+    control = control_named(name)
+    parser = PostParser(prog=control.post + "_post", add_help=False, description=tooltip(name))
+    _add_groove_options(parser, control)
+    _add_program_options(parser, control)
+    return parser
+
+
+class Options:
+    """The parsed options, completed with the control's defaults and checked.
+
+    ``diameter``: X words as diameters (always, for a control without
+    --x-mode); ``native``: grooves as the control's own cycles;
+    ``native_decimals``: decimals of the pecking cycles' words."""
+
+    def __init__(self, control: Control, namespace: argparse.Namespace) -> None:
+        self.cycles: str = namespace.cycles or ("native" if control.native else "expand")
+        self.native: bool = self.cycles == "native" and control.native is not None
+        self.retract: Optional[float] = getattr(namespace, "retract", None)
+        if self.retract is not None and not (math.isfinite(self.retract) and self.retract >= 0):
+            raise PostError("--retract %s: must be a number not less than 0" % self.retract)
+        self.diameter: bool = getattr(namespace, "x_mode", "diameter") == "diameter"
+        self.g07_is_diameter: bool = not getattr(namespace, "g07_radius", False)
+        self.diameter_input: bool = getattr(namespace, "diameter_input", False)
+        self.reference: Optional[str] = namespace.reference_corner
+        self.program_number: Optional[int] = getattr(namespace, "program_number", None)
+        if self.program_number is not None and not 0 <= self.program_number <= MAX_PROGRAM_NUMBER:
+            raise PostError("--program-number %d: must be 0 to %d" % (self.program_number, MAX_PROGRAM_NUMBER))
+        self.header: bool = not namespace.no_header
+        self.comments: bool = not namespace.no_comments
+        if not 0 <= namespace.precision <= MAX_PRECISION:
+            raise PostError("--precision %d: must be 0 to %d" % (namespace.precision, MAX_PRECISION))
+        self.precision: int = namespace.precision
+        self.native_decimals: int = min(self.precision, CYCLE_WORD_DECIMALS)
+        self.help: bool = namespace.help
+
+
+def split_arguments(post: str, argstring: Union[None, str, Sequence[str]]) -> List[str]:
+    """The post's argument string (or list) as a list of arguments."""
+    if argstring is None:
+        return []
+    if isinstance(argstring, (list, tuple)):
+        return list(argstring)
+    try:
+        return shlex.split(argstring)
+    except ValueError as e:
+        raise PostError("%s_post: cannot read the arguments %r: %s" % (post, argstring, e)) from None
+
+
+def parse_options(name: str, argstring: Union[None, str, Sequence[str]]) -> Tuple[Options, PostParser]:
+    """The options of post ``name`` from FreeCAD's argument string, and the parser (for --help)."""
+    control = control_named(name)
+    parser = make_parser(name)
+    return Options(control, parser.parse_args(split_arguments(control.post, argstring))), parser

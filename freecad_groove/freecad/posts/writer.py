@@ -1,0 +1,105 @@
+"""The posts' line writer: the engine's target writer with a control's codes, dwell, precision and X mode."""
+
+from typing import Iterable, List, Optional
+
+from ...engine import FEED, ProgramError
+from ...engine.moves import Move
+from ...engine.numbers import MAX_DWELL_SECONDS
+from ...engine.targets import TargetSpec, Writer
+from .controls import Control
+
+
+class LatheWriter(Writer):
+    """targets.Writer with a control's codes, dwell, precision and X mode.
+
+    ``move`` writes single-axis and partial moves (the op's link rapids, other
+    ops' Paths), ``arc`` arcs; ``write`` (the engine's move lists) is the
+    target writer's own."""
+
+    def __init__(self, control: Control, precision: int, diameter: bool) -> None:
+        self.control = control
+        self.diameter = diameter
+        super().__init__("linuxcnc", True, False)  # a target to start from: the control's own spec replaces it
+        self.spec = TargetSpec(control.name, dict(control.codes), precision, precision, {True: "G21", False: "G20"},
+                               {False: "G94", True: "G95"}, "M2", False)
+        self.set_units(True)
+
+    def x_word(self, radius: float) -> str:
+        return super().x_word(radius if self.diameter else radius / 2.0)
+
+    def write(self, moves: Iterable[Move], prefix: str = "") -> List[str]:
+        if not self.diameter:  # the target writer doubles X: hand it half (exact in binary)
+            moves = [(k, x / 2.0, z, f, p) for k, x, z, f, p in moves]
+        return super().write(moves, prefix)
+
+    def dwell(self, seconds: float) -> str:
+        if not 0 <= seconds <= MAX_DWELL_SECONDS:
+            raise ProgramError("dwell of %r s cannot be written (0 to %g s)" % (seconds, MAX_DWELL_SECONDS))
+        return self.control.dwell(seconds)
+
+    def forget(self, position: bool = True, motion: bool = True, feed: bool = True) -> None:
+        """The output no longer knows the position / the motion mode / the feed in force."""
+        if position:
+            self.x_text = self.z_text = None
+        if motion:
+            self.motion = None
+        if feed:
+            self.f_text = None
+
+    def _axis_words(self, x: Optional[float], z: Optional[float], force: bool) -> List[str]:
+        """The X and Z words of a move: the ones whose text changes (all given ones with ``force``)."""
+        words = []
+        if x is not None:
+            text = self.x_word(x)
+            if force or text != self.x_text:
+                words.append("X" + text)
+                self.x_text = text
+        if z is not None:
+            text = self.z_word(z)
+            if force or text != self.z_text:
+                words.append("Z" + text)
+                self.z_text = text
+        return words
+
+    def _feed_word(self, f: Optional[float], what: str) -> Optional[str]:
+        """The F word of a cutting move (None: the feed in force stays); ProgramError
+        when there is no feed at all. ``what``: the move, for the message."""
+        if f is not None:
+            text = self.f_word(f)
+            if text != self.f_text:
+                self.f_text = text
+                return "F" + text
+        elif self.f_text is None:
+            raise ProgramError("%s with no feed rate (F) in force" % what)
+        return None
+
+    def move(self, kind: str, x: Optional[float] = None, z: Optional[float] = None, f: Optional[float] = None,
+             force: bool = False) -> List[str]:
+        """Lines for one RAPID/FEED move to the given axes (None: not written)."""
+        words = self._axis_words(x, z, force)
+        fword = self._feed_word(f, "feed move") if kind == FEED else None
+        if not words:
+            return [fword] if fword else []
+        if kind != self.motion or force:
+            words.insert(0, self.code(kind))
+            self.motion = kind
+        if fword:
+            words.append(fword)
+        return [" ".join(words)]
+
+    def arc(self, kind: str, x: float, z: float, i: float, k: float, f: Optional[float],
+            radius: Optional[float] = None) -> List[str]:
+        """An arc G2/G3 to radius x, z with incremental radius centre offsets
+        i (X), k (Z); ``radius`` (signed, Siemens CR=) instead of I/K."""
+        x_text, z_text = self.x_word(x), self.z_word(z)
+        words = [self.code(kind), "X" + x_text, "Z" + z_text]
+        if radius is None:
+            words += ["I" + self.length_word(i), "K" + self.length_word(k)]
+        else:
+            words.append("CR=" + self.length_word(radius))
+        fword = self._feed_word(f, "arc")
+        if fword:
+            words.append(fword)
+        self.motion = kind
+        self.x_text, self.z_text = x_text, z_text
+        return [" ".join(words)]
