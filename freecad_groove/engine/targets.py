@@ -79,7 +79,8 @@ class TargetSpec:
     feed_modes: Dict[bool, str]  # feed per revolution -> code
     end: str
     dwell_ms: bool  # dwell P in whole milliseconds (else seconds)
-    percent_frame: bool = False  # "%" lines, O number, G18 implied, units alone in their block
+    fanuc_style: bool = False  # "%" lines, O number, G18 implied, units and G50 alone in their
+    # block, two-digit M codes, whole S words, N up to 99999
 
 
 SPECS = {
@@ -102,7 +103,7 @@ SPECS = {
         {False: "G98", True: "G99"},
         "M30",
         True,
-        percent_frame=True,
+        fanuc_style=True,
     ),
 }
 
@@ -244,7 +245,7 @@ class Writer:
         out = []
         s = self.spec
         feed_mode = [] if self.feed_per_rev is None else [s.feed_modes[bool(self.feed_per_rev)]]
-        if s.percent_frame:
+        if s.fanuc_style:
             out.append("%")
             if program_number is not None:
                 number = "O%04d" % int(program_number)
@@ -261,7 +262,7 @@ class Writer:
 
     def footer(self) -> List[str]:
         """The lines that end a whole program."""
-        return [self.spec.end, "%"] if self.spec.percent_frame else [self.spec.end]
+        return [self.spec.end, "%"] if self.spec.fanuc_style else [self.spec.end]
 
     def _feed_text(self, kind: str, f: Optional[float], written: Optional[str]) -> Optional[str]:
         """The F text a move writes (None: none), given the F text in force."""
@@ -354,11 +355,11 @@ def write_program(
             raise ProgramError("spindle speed %r cannot be written" % (spindle,))
         if spindle == int(spindle):
             text = "%d" % spindle
-        elif target == "fanuc":
+        elif writer.spec.fanuc_style:
             raise ProgramError("spindle speed %r: a Fanuc S word is a whole number" % (spindle,))
         else:
             text = format_number(spindle, 4)
-        lines.append(("G97 S%s M03" if writer.spec.percent_frame else "G97 S%s M3") % text)
+        lines.append(("G97 S%s M03" if writer.spec.fanuc_style else "G97 S%s M3") % text)
     lines.extend(writer.write([Move(RAPID, state.x, state.z)]))
     lines.extend(writer.write(moves))
     lines.extend(writer.footer())

@@ -38,7 +38,7 @@ class TranslatorBase:
     state: ModalState
     writer: Writer
     body: List[str]  # the translated blocks
-    fanuc_output: bool  # the target is "fanuc"
+    fanuc_output: bool  # the target writes Fanuc-style programs (TargetSpec.fanuc_style)
     _line: int  # the line being read
     _prefix: str  # "/" when the line is a block-delete line
     _defined: Set[str]  # the ModalState items the line sets for sure

@@ -127,11 +127,10 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
     def __init__(self, dialect: str, settings: Settings = DEFAULT_SETTINGS, target: str = "linuxcnc",
                  source_name: str = "PROGRAM", start: Optional[MachineState] = None) -> None:
         self.control = input_control(dialect)  # raises on an unknown dialect
-        target_spec(target)  # raises on an unknown target
+        self.fanuc_output = target_spec(target).fanuc_style  # target_spec raises on an unknown target
         self.dialect = dialect
         self.settings = settings
         self.target = target
-        self.fanuc_output = target == "fanuc"
         self.source_name = source_name
         self.codes = self.control.code_table()
         state = ModalState()
