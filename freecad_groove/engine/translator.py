@@ -116,6 +116,8 @@ from .translate_motion import MotionTranslation
 
 __all__ = ["Translator", "translate_program"]
 
+MAX_FANUC_BLOCK_NUMBER = 99999  # N of at most 5 digits
+
 
 class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
     """Reads a program block by block and writes the translation.
@@ -155,7 +157,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         self._line = number
         self.last_line = number
         block = parse_block(text, self.dialect, number)
-        if self.fanuc_output and block.number is not None and block.number > 99999:
+        if self.fanuc_output and block.number is not None and block.number > MAX_FANUC_BLOCK_NUMBER:
             self._fail("N%d: a Fanuc block number has at most 5 digits" % block.number)
         self._prefix = "/" if block.delete else ""
         before = {name: getattr(self.state, name) for name in TRACKED} if block.delete else {}

@@ -30,6 +30,8 @@ from dataclasses import dataclass
 
 import Part
 
+from ..engine.numbers import format_decimal
+
 AXIS_TOLERANCE = 1e-7  # |sin| of the angle between a surface axis and Z
 ON_AXIS_TOLERANCE = 1e-6  # mm: how far an axis may pass from the origin's Z axis
 LONGITUDINAL_LIMIT = 45.0  # degrees off Z up to which a cone takes longitudinal grooves
@@ -38,8 +40,7 @@ FACE = "face"
 
 
 def _fmt(value):
-    text = ("%.3f" % value).rstrip("0").rstrip(".")
-    return "0" if text in ("-0", "") else text
+    return format_decimal(value, 3, point=False)
 
 
 @dataclass(frozen=True)
