@@ -640,11 +640,11 @@ def test_rs274_moves_equal_the_cycle_moves(dialect, before, call, after):
 
 _NUM = st.decimals(min_value=-100, max_value=100, places=3).map(lambda d: format(d, "f"))
 _POS = st.decimals(min_value="0.01", max_value=5, places=2).map(lambda d: format(d, "f"))
-_MODES = {
-    "sinumerik": ["DIAMOF", "DIAMON", "DIAM90", "G700", "G710", "G94 F100", "G95 F0.1", "G91", "G90"],
-    "ab9": ["G07", "G08", "G20", "G21", "G94 F100.", "G95 F0.1", "G91", "G90"],
-    "fanuc": ["G20", "G21", "G98 F100.", "G99 F0.1"],
-    "haas": ["G20", "G21", "G98 F100.", "G99 F0.1"],
+_MODES = {  # feed modes with and without F (repeated without F: the feed carries over)
+    "sinumerik": ["DIAMOF", "DIAMON", "DIAM90", "G700", "G710", "G94 F100", "G95 F0.1", "G94", "G95", "G91", "G90"],
+    "ab9": ["G07", "G08", "G20", "G21", "G94 F100.", "G95 F0.1", "G94", "G95", "G91", "G90"],
+    "fanuc": ["G20", "G21", "G98 F100.", "G99 F0.1", "G98", "G99"],
+    "haas": ["G20", "G21", "G98 F100.", "G99 F0.1", "G98", "G99"],
 }
 
 

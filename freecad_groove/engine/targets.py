@@ -21,7 +21,8 @@ Choices (the manuals leave them open):
 
 * Modal output: G0/G1 is written only when the motion changes; X and Z only
   when their *written text* changes (so no rounding drift and no missing move);
-  F only when the written feed text changes. A move that writes no axis word is
+  F only when the written feed text changes, and after a feed-mode code (which
+  sets LinuxCNC's F to 0). A move that writes no axis word is
   dropped (it would not move the tool); a feed change it carried is kept as a
   lone ``F`` block.
 * Numbers: X, Z, arc words and dwell seconds with 4 decimals in mm and 5 in inch
@@ -227,6 +228,14 @@ class Writer:
     def feed_mode_code(self, feed_per_rev: bool) -> str:
         """The code of feed per minute or per revolution."""
         return self.spec.feed_modes[bool(feed_per_rev)]
+
+    def set_feed_mode(self, feed_per_rev: bool) -> str:
+        """The feed-mode code a block writes; the F in force is forgotten, since
+        LinuxCNC sets F to 0 on every G93/G94/G95, even the active one (a block
+        that keeps feeding writes F again)."""
+        self.feed_per_rev = bool(feed_per_rev)
+        self.f_text = None
+        return self.feed_mode_code(feed_per_rev)
 
     def dwell(self, seconds: float) -> str:
         """The dwell block for ``seconds``."""

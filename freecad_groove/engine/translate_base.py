@@ -10,7 +10,7 @@ The handlers themselves are mixins on :class:`TranslatorBase`: motion
 from typing import Dict, List, NamedTuple, NoReturn, Optional, Set
 
 from .errors import ProgramError
-from .input_controls import DIAMETER, DISTANCE, FEED_MODE, UNITS, InputControl, Units
+from .input_controls import CYCLE, DIAMETER, DISTANCE, FEED_MODE, UNITS, InputControl, Units
 from .modal import ModalState
 from .numbers import MAX_WORD, MM_PER_INCH
 from .reader import Block, Word
@@ -134,7 +134,9 @@ class TranslatorBase:
         if UNITS in groups:
             self._units(groups[UNITS].value, output, early)
         if FEED_MODE in groups:
-            self._feed_mode(groups[FEED_MODE].value, output)
+            # a plain block's F is written by the block; a cycle block's F is the cycle's
+            own_feed = block.get("F") is not None and block.call is None and CYCLE not in groups
+            self._feed_mode(groups[FEED_MODE].value, output, own_feed)
         if DISTANCE in groups:
             self.state.incremental = groups[DISTANCE].value
             self._defined.add("incremental")
@@ -162,9 +164,17 @@ class TranslatorBase:
         self.writer.set_units(units.metric)
         (early if self.fanuc_output else output).append(self.writer.units_code(units.metric))
 
-    def _feed_mode(self, per_rev: bool, output: List[str]) -> None:
-        if per_rev != self.state.feed_per_rev:
-            self.state.feed = None
-        self.state.feed_per_rev = per_rev
+    def _feed_mode(self, per_rev: bool, output: List[str], own_feed: bool) -> None:
+        """G94/G95 (G98/G99). A change forgets the feed, as the source controls do.
+        The code repeated keeps it in the source, but LinuxCNC sets F to 0 on every
+        feed-mode code: the block writes the feed in force again, unless it writes
+        its own F (``own_feed``) or the feed depends on a block-delete line."""
+        state = self.state
+        if per_rev != state.feed_per_rev:
+            state.feed = None
+        state.feed_per_rev = per_rev
         self._defined.add("feed_per_rev")
-        output.append(self.writer.feed_mode_code(per_rev))
+        output.append(self.writer.set_feed_mode(per_rev))
+        if own_feed or state.feed is None or "feed" in state.ambiguous - self._defined:
+            return
+        output.append("F" + self.writer.f_word(state.feed))

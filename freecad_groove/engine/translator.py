@@ -37,9 +37,12 @@ Choices where the manuals are silent (each has a test)
   Fanuc/Haas G75/G74 (group 00, non-modal) it is the one before the cycle.
 * After a cycle the position is its last move's and the feed the last F it
   wrote (unchanged when it wrote none).
-* A units change converts the known position and forgets the feed (LinuxCNC
-  resets F to 0 on a feed-mode change too, so a feed-mode change also forgets
-  it unless the block has F).
+* A units change converts the known position and forgets the feed. A change
+  of the feed mode forgets it too (the source controls do, and so does
+  LinuxCNC). The feed-mode code repeated while it is active keeps the feed in
+  the source controls, but LinuxCNC sets F to 0 on every G93/G94/G95: such a
+  block is written with the feed again (``G95`` -> ``G95 F0.2``; Fanuc output
+  ``G99 F0.2``, where F is kept anyway and writing it is harmless).
 * Fanuc, Haas, Allen-Bradley: a non-zero length or feed word without a decimal
   point (``X80``) is refused: those controls read it in least input increments
   or per a zero-suppression parameter (X80 may be 0.080 mm). Write ``X80.``.
