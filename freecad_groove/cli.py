@@ -1,7 +1,7 @@
 """Command line: expand the grooving cycles of a lathe program, or write one cycle call.
 
-    python3 -m freecad_groove expand PROGRAM --dialect sinumerik [-o OUT] [--to linuxcnc]
-    python3 -m freecad_groove emit cycle93 --axfa 35 --axsa 60 ...
+    python3 -m freecad_groove expand PROGRAM --dialect sinumerik [--tool-table FILE] [-o OUT] [--to linuxcnc]
+    python3 -m freecad_groove emit cycle93 --tool-width 3 --axfa 35 --axsa 60 ...
 
 Thin layer: argument parsing and error reporting; the work is done by
 freecad_groove.engine (translator.translate_program, targets.write_program and
@@ -56,8 +56,12 @@ drive one of them, the one whose tool offset you measured: --reference-corner
 minus = the corner toward -Z (the blade extends from it toward +Z; for face
 grooves, the corner toward -X), plus = the other one.
 
+Blade: CYCLE93 places its plunges with the blade, so it is refused without
+one: --tool-width (every tool) or --tool-table FILE (the blade of each T;
+--tool-width is then the blade of the tools the table does not list).
+
 Examples:
-  python3 -m freecad_groove expand examples/seed_cycle93.mpf --dialect sinumerik
+  python3 -m freecad_groove expand examples/seed_cycle93.mpf --dialect sinumerik --tool-table examples/tools.tbl
   python3 -m freecad_groove expand part.nc --dialect fanuc --to fanuc -o part_expanded.nc
   python3 -m freecad_groove emit g77 -X 40. -Z -30. -I 2. -K 5. -D 0 -F 0.08
 """
@@ -127,21 +131,23 @@ def _add_settings_options(parser):
         "--tool-width",
         type=_positive,
         metavar="W",
-        help="width of the grooving blade, in the program's units (default 3: set it for inch programs). "
-        "CYCLE93 places its plunges with it and refuses a groove narrower than the blade.",
+        help="width of the grooving blade, in the program's units when the cycle runs. No default: CYCLE93 "
+        "places its plunges with it, so it is refused without the blade (this option or expand's --tool-table; "
+        "with a table, this blade is the one of tools the table does not list and of cycles before any T).",
     )
     g.add_argument(
         "--tool-radius",
         type=_not_negative,
         metavar="R",
-        help="corner radius of both front corners of the blade (default 0.2); must be less than half the width.",
+        help="corner radius of both front corners of the --tool-width blade (default 0.2); must be less than "
+        "half the width.",
     )
     g.add_argument(
         "--reference-corner",
         choices=("minus", "plus"),
-        help="CYCLE93: which front corner the moves drive: minus = the -Z corner (-X for face grooves, the "
-        "default), plus = the other. Must match the corner your tool offset was measured on. (The pecking "
-        "cycles G77/G76/G75/G74 drive the programmed point, as the control does.)",
+        help="CYCLE93: which front corner of the --tool-width blade the moves drive: minus = the -Z corner (-X "
+        "for face grooves, the default), plus = the other. Must match the corner your tool offset was measured "
+        "on. (The pecking cycles G77/G76/G75/G74 drive the programmed point, as the control does.)",
     )
     g.add_argument(
         "--retract",
@@ -176,6 +182,18 @@ def _add_settings_options(parser):
         metavar="DEG",
         help="CYCLE93: steepest contour (degrees from the groove's own axis) the paraxial roughing accepts "
         "(default 45).",
+    )
+
+
+def _add_tool_table_option(parser):
+    parser.add_argument(
+        "--tool-table",
+        metavar="FILE",
+        help="the blade of each tool number, one tool a line: T width corner-radius reference (minus/plus), "
+        "e.g. '5 3.0 0.2 minus'; '#' starts a comment; lengths in the program's units when the cycle runs; "
+        "- reads standard input. "
+        "A CYCLE93 cuts with the blade of the tool in force (Siemens T5 D1, Fanuc-style T0512: tool 5); a tool "
+        "the table does not list, or a cycle before any T, is refused unless --tool-width gives a default blade.",
     )
 
 
@@ -324,12 +342,15 @@ def _native_text(args: argparse.Namespace, entry: CycleEntry) -> str:
 def _emit(args: argparse.Namespace) -> str:
     from .engine import targets
     from .engine.errors import CycleError, ProgramError
+    from .engine.tool_table import BLADE_UNKNOWN
 
     entry = registry.entry(args.cycle_name)
     settings = _settings(args)
     text = _native_text(args, entry)
     try:
         model = entry.cycle_class.parse(text)
+        if entry.needs_blade and settings.tool is None:
+            raise ProgramError("%s: %s: give --tool-width" % (entry.name, BLADE_UNKNOWN))
         model.validate(settings)
         if not args.expand:
             return model.emit() + "\n"
@@ -365,7 +386,7 @@ def _one_line(text):
     return " ".join(str(text).split())
 
 
-def _read_program(path):
+def _read_program(path, what="the program"):
     name = "<stdin>" if path == "-" else path
     try:
         if path == "-":
@@ -374,17 +395,38 @@ def _read_program(path):
             with open(path, "rb") as f:
                 data = f.read()
     except OSError as exc:
-        raise _Failure(name, 0, "cannot read the program: %s" % (exc.strerror or exc)) from None
+        raise _Failure(name, 0, "cannot read %s: %s" % (what, exc.strerror or exc)) from None
     try:
         return name, data.decode("utf-8")
     except UnicodeDecodeError:
         return name, data.decode("latin-1")
 
 
+def _tool_table(args):
+    """The --tool-table read (None without one); bad lines as TABLE:LINE: message."""
+    from .engine.errors import ProgramError
+    from .engine.tool_table import read_tool_table
+
+    path = args.tool_table
+    if path is None:
+        return None
+    if args.tool_width is None and (args.tool_radius is not None or args.reference_corner is not None):
+        raise _Failure(path, 0, "--tool-radius and --reference-corner shape the --tool-width blade, which is not "
+                       "given: the table gives each tool's own; give --tool-width too for the tools it does not list")
+    if path == "-" and args.program == "-":
+        raise _Failure("<stdin>", 0, "the program and the tool table cannot both be read from standard input")
+    name, text = _read_program(path, "the tool table")
+    try:
+        return read_tool_table(text, name)
+    except ProgramError as exc:
+        raise _Failure(name, exc.line if exc.line is not None else 0, str(exc)) from None
+
+
 def _expand(args):
     from .engine.errors import ProgramError
     from .engine.translator import translate_program
 
+    tools = _tool_table(args)
     name, text = _read_program(args.program)
     settings = _settings(args)
     try:
@@ -395,6 +437,7 @@ def _expand(args):
             target=args.to,
             source_name=os.path.basename(name) if name != "<stdin>" else "stdin",
             start=_start_state(args),
+            tools=tools,
         )
     except ProgramError as exc:
         raise _Failure(name, exc.line if exc.line is not None else 0, str(exc)) from None
@@ -456,6 +499,7 @@ def build_parser():
     )
     _add_start_options(ex, expand=True)
     _add_settings_options(ex)
+    _add_tool_table_option(ex)
     _add_emit_parsers(sub)
     return parser
 

@@ -15,9 +15,13 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from freecad_groove import cli
+from freecad_groove.engine import GroovingTool, Settings
+from freecad_groove.engine.tool_table import read_tool_table
 from freecad_groove.engine.translator import translate_program
 
 SEED = os.path.join(ROOT, "examples", "seed_cycle93.mpf")
+TOOLS = os.path.join(ROOT, "examples", "tools.tbl")  # the examples' blades (T5: the seed's 3 mm blade)
+TABLE = ["--tool-table", TOOLS]
 ERROR_LINE = re.compile(r"^(?P<name>[^\n]*):(?P<line>\d+): (?P<message>[^\n]+)\n\Z")
 
 
@@ -62,6 +66,7 @@ def assert_one_error_line(proc, name, line, fragment=None):
     return m.group("message")
 
 
+BLADE = Settings(tool=GroovingTool(3.0, 0.2))  # --tool-width 3 (radius 0.2, reference minus)
 BAD_CYCLE = open(SEED).read().replace("30, 25, 12", "1, 25, 12")  # WIDG 1 < tool width 3
 
 
@@ -71,36 +76,37 @@ BAD_CYCLE = open(SEED).read().replace("30, 25, 12", "1, 25, 12")  # WIDG 1 < too
 @pytest.mark.parametrize("name", sorted(EXAMPLES))
 @pytest.mark.parametrize("target", ["linuxcnc", "fanuc"])
 def test_expand_examples_to_stdout(name, target):
-    proc = run("expand", "examples/" + name, "--dialect", EXAMPLES[name], "--to", target)
+    proc = run("expand", "examples/" + name, "--dialect", EXAMPLES[name], "--to", target, *TABLE)
     assert proc.returncode == 0, proc.stderr
     assert proc.stderr == b""
     text = open(os.path.join(ROOT, "examples", name)).read()
-    assert proc.stdout.decode() == translate_program(text, EXAMPLES[name], target=target, source_name=name)
+    assert proc.stdout.decode() == translate_program(text, EXAMPLES[name], target=target, source_name=name,
+                                                     tools=read_tool_table(open(TOOLS).read()))
 
 
 def test_expand_default_target_is_linuxcnc():
-    proc = run("expand", "examples/seed_cycle93.mpf", "--dialect", "sinumerik")
+    proc = run("expand", "examples/seed_cycle93.mpf", "--dialect", "sinumerik", *TABLE)
     assert proc.returncode == 0
     assert proc.stdout.decode().startswith("G18 G7 G21 G90")
 
 
 def test_expand_to_file(tmp_path):
     out = tmp_path / "seed.ngc"
-    proc = run("expand", SEED, "--dialect", "sinumerik", "-o", str(out))
+    proc = run("expand", SEED, "--dialect", "sinumerik", "-o", str(out), "--tool-width", "3")
     assert proc.returncode == 0 and proc.stdout == b"" and proc.stderr == b""
-    assert out.read_text() == translate_program(open(SEED).read(), "sinumerik", source_name="seed_cycle93.mpf")
+    assert out.read_text() == translate_program(open(SEED).read(), "sinumerik", BLADE, source_name="seed_cycle93.mpf")
     assert sorted(os.listdir(tmp_path)) == ["seed.ngc"]  # no temporary file left
     # replaced when it exists, keeping its permissions
     out.write_text("old\n")
     os.chmod(out, 0o640)
-    assert run("expand", SEED, "--dialect", "sinumerik", "-o", str(out)).returncode == 0
+    assert run("expand", SEED, "--dialect", "sinumerik", "-o", str(out), *TABLE).returncode == 0
     assert out.read_text() != "old\n" and (os.stat(out).st_mode & 0o777) == 0o640
 
 
 def test_expand_from_stdin():
-    proc = run("expand", "-", "--dialect", "sinumerik", stdin=open(SEED, "rb").read())
+    proc = run("expand", "-", "--dialect", "sinumerik", *TABLE, stdin=open(SEED, "rb").read())
     assert proc.returncode == 0
-    assert proc.stdout.decode() == translate_program(open(SEED).read(), "sinumerik", source_name="stdin")
+    assert proc.stdout.decode() == translate_program(open(SEED).read(), "sinumerik", BLADE, source_name="stdin")
 
 
 def test_invalid_cycle(tmp_path):
@@ -108,13 +114,13 @@ def test_invalid_cycle(tmp_path):
     program.write_text(BAD_CYCLE)
     out = tmp_path / "out.ngc"
     out.write_text("old program\n")
-    proc = run("expand", str(program), "--dialect", "sinumerik", "-o", str(out))
+    proc = run("expand", str(program), "--dialect", "sinumerik", "-o", str(out), *TABLE)
     message = assert_one_error_line(proc, str(program), 4, "CYCLE93 WIDG=1")
     assert "61602" in message
     assert out.read_text() == "old program\n"  # untouched
     assert sorted(os.listdir(tmp_path)) == ["bad.mpf", "out.ngc"]
     # without -o: nothing on stdout either
-    proc = run("expand", str(program), "--dialect", "sinumerik")
+    proc = run("expand", str(program), "--dialect", "sinumerik", *TABLE)
     assert_one_error_line(proc, str(program), 4, "CYCLE93")
 
 
@@ -129,7 +135,7 @@ def test_unreadable_line(tmp_path):
 
 
 def test_invalid_cycle_from_stdin():
-    proc = run("expand", "-", "--dialect", "sinumerik", stdin=BAD_CYCLE.encode())
+    proc = run("expand", "-", "--dialect", "sinumerik", *TABLE, stdin=BAD_CYCLE.encode())
     assert_one_error_line(proc, "<stdin>", 4, "CYCLE93")
 
 
@@ -143,7 +149,7 @@ def test_missing_program(tmp_path):
 
 def test_unwritable_output(tmp_path):
     out = str(tmp_path / "no" / "such" / "dir.ngc")
-    proc = run("expand", SEED, "--dialect", "sinumerik", "-o", out)
+    proc = run("expand", SEED, "--dialect", "sinumerik", "-o", out, *TABLE)
     assert_one_error_line(proc, out, 0, "cannot write the output")
 
 
@@ -196,7 +202,7 @@ def test_every_option_with_every_dialect(name):
 
 
 def test_options_change_the_result():
-    seed = ["expand", SEED, "--dialect", "sinumerik"]
+    seed = ["expand", SEED, "--dialect", "sinumerik", "--tool-width", "3"]  # the width is the last one given
     base = run(*seed).stdout
     assert run(*seed, "--reference-corner", "plus").stdout != base
     assert run(*seed, "--tool-width", "4").stdout != base
@@ -231,7 +237,7 @@ def test_bad_options_are_argparse_errors(args):
     "args, words",
     [
         (["--help"], ["expand", "emit", "diameter", "radius", "Reference corner"]),
-        (["expand", "--help"], ["--dialect", "--tool-width", "--reference-corner", "--diameter-input",
+        (["expand", "--help"], ["--dialect", "--tool-width", "--tool-table", "--reference-corner", "--diameter-input",
                                 "--g07-radius", "--retract", "PROGRAM:LINE", "DIAMETERS"]),
         (["emit", "--help"], ["cycle93", "ab-g77", "fanuc-g75", "haas-g75"]),
         (["emit", "cycle93", "--help"], ["--axfa", "--typ", "radius value", "--expand"]),
@@ -259,14 +265,15 @@ def test_emit_native_calls():
     assert proc.stdout == b"G75 X40. I2.\n"
     proc = run("emit", "cycle93", "--axfa", "35", "--axsa", "60", "--widg", "30", "--depg", "25", "--angc", "12",
                "--ang1", "15", "--ang2", "16", "--rco1", "0", "--rco2", "0", "--rci1", "-2", "--rci2", "-2",
-               "--fal1", "1", "--fal2", "1", "--idep", "10", "--dwt", "1", "--typ", "5", "--vrt", "0")
+               "--fal1", "1", "--fal2", "1", "--idep", "10", "--dwt", "1", "--typ", "5", "--vrt", "0",
+               "--tool-width", "3")
     assert proc.returncode == 0
     assert proc.stdout.decode().startswith("CYCLE93(35, 60, 30, 25, 12, 15, 16")
 
 
 def test_emit_refuses_an_invalid_call():
     proc = run("emit", "cycle93", "--axfa", "35", "--axsa", "60", "--widg", "1", "--depg", "25", "--idep", "10",
-               "--typ", "5")
+               "--typ", "5", "--tool-width", "3")
     assert_one_error_line(proc, "emit cycle93", 1, "WIDG=1")
     proc = run("emit", "g77", "-X", "40", "-I", "2")  # D is required
     assert_one_error_line(proc, "emit ab-g77", 1, "D")

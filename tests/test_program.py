@@ -12,28 +12,34 @@ from hypothesis import strategies as st
 
 from freecad_groove.engine.errors import ProgramError
 from freecad_groove.engine.input_controls import DIALECTS
-from freecad_groove.engine.moves import RAPID, MachineState
+from freecad_groove.engine.moves import RAPID, GroovingTool, MachineState
 from freecad_groove.engine.reader import parse_block
-from freecad_groove.engine.settings import DEFAULT_SETTINGS, Settings
+from freecad_groove.engine.settings import Settings
 from freecad_groove.engine.translator import Translator, translate_program
 
 LINUXCNC_HEAD = ["G18 G7 G21 G90 G91.1 G40", "(PROGRAM: %s program, cycles expanded for linuxcnc by freecad-groove)"]
+# The seed's blade (examples/tools.tbl, T5). CYCLE93 is refused without a blade, so the helpers below
+# translate with this one unless a test passes its own settings (tests/test_tool_table.py: the blade rules).
+BLADE = Settings(tool=GroovingTool(3.0, 0.2))
 
 
 def body(text, dialect, **kw):
     """The translated lines after the LinuxCNC header and title."""
+    kw.setdefault("settings", BLADE)
     lines = translate_program(text, dialect, **kw).splitlines()
     assert lines[:2] == [LINUXCNC_HEAD[0], LINUXCNC_HEAD[1] % dialect]
     return lines[2:]
 
 
 def error(text, dialect, **kw):
+    kw.setdefault("settings", BLADE)
     with pytest.raises(ProgramError) as info:
         translate_program(text, dialect, **kw)
     return info.value
 
 
 def reader(dialect, lines, **kw):
+    kw.setdefault("settings", BLADE)
     t = Translator(dialect, **kw)
     for number, line in enumerate(lines, 1):
         t.line(line, number)
@@ -534,7 +540,7 @@ def test_unknown_dialect_or_target():
 
 def _check_garbage(text, dialect):
     try:
-        out = translate_program(text, dialect)
+        out = translate_program(text, dialect, BLADE)
     except ProgramError as e:
         assert not str(e).startswith("internal error"), str(e)
         assert isinstance(e.line, int) and 1 <= e.line <= text.count("\n") + text.count("\r") + 1
@@ -592,7 +598,7 @@ def run_rs274_with_tools(text):
 @pytest.mark.parametrize("name", sorted(EXAMPLES))
 def test_rs274_accepts_every_example(name):
     text = open(os.path.join(ROOT, "examples", name)).read()
-    out = translate_program(text, EXAMPLES[name], source_name=name)
+    out = translate_program(text, EXAMPLES[name], BLADE, source_name=name)
     canon = run_rs274_with_tools(out)
     assert len(canon) > 10
     last = canon[-1]
@@ -620,7 +626,7 @@ def test_rs274_moves_equal_the_cycle_moves(dialect, before, call, after):
 
     from freecad_groove.engine.registry import cycle_for
 
-    t = Translator(dialect)
+    t = Translator(dialect, BLADE)
     lines = (before + call + "\n" + after).split("\n")
     for number, line in enumerate(lines, 1):
         if line.strip() == call:
@@ -629,7 +635,7 @@ def test_rs274_moves_equal_the_cycle_moves(dialect, before, call, after):
     out = t.result()
     name = "CYCLE93" if dialect == "sinumerik" else call.split()[0]
     model = cycle_for(dialect, name).parse(call)
-    moves = model.expand(state, DEFAULT_SETTINGS)
+    moves = model.expand(state, BLADE)
     canon = run_rs274_with_tools(out)
     first = [i for i, c in enumerate(canon) if c[0] == "G0"][0]  # the approach to the start point
     problems = canonical_matches(written_moves(moves, state.metric), canon, start=first + 1, trailing=True)
@@ -706,7 +712,7 @@ def lathe_program(draw, dialect):
 def test_rs274_accepts_whatever_is_translated(case):
     dialect, text = case
     try:
-        out = translate_program(text, dialect)
+        out = translate_program(text, dialect, BLADE)
     except ProgramError as e:
         assert not str(e).startswith("internal error"), str(e)
         return

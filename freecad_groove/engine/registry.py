@@ -15,6 +15,12 @@ class attributes, and is registered with the ``@register`` decorator:
     COUNTED    words that are integers in least input increments (Fanuc P, Q)
     RETRACT_BLOCK  optional: the letter of a separate first block ``NAME R(e)``
                that only sets the peck retract for the next cycle (Fanuc "R")
+    NEEDS_BLADE    optional, default False: True when the cycle's moves depend
+               on the blade (its width, corner radius, reference corner), as
+               CYCLE93's do; such a cycle is expanded only with a known blade
+               (``Settings.tool`` or a tool table's entry), never a guessed
+               one. Cycles that drive the programmed point (G77, G75...) leave
+               it False.
 
 and the methods ``parse(text)``, ``emit()``, ``validate(settings)`` and
 ``expand(state, settings)``. The program reader, the command line (``expand``,
@@ -53,6 +59,7 @@ class CycleEntry:
     cycle_class: type
     aliases: Tuple[str, ...] = ()
     retract_block: str = ""  # the letter of a separate "NAME R(e)" first block; "" when none
+    needs_blade: bool = False  # its moves depend on the blade: never expanded with an unknown one
 
 
 _BY_KEY: Dict[str, CycleEntry] = {}
@@ -72,6 +79,7 @@ def register(cls: Type) -> Type:
         cycle_class=cls,
         aliases=tuple(getattr(cls, "ALIASES", ())),
         retract_block=getattr(cls, "RETRACT_BLOCK", ""),
+        needs_blade=bool(getattr(cls, "NEEDS_BLADE", False)),
     )
     if entry.form not in FORMS:
         raise ValueError("%s: FORM must be one of %s" % (cls.__name__, ", ".join(FORMS)))

@@ -4,17 +4,24 @@ The README lists each of these with its default and the manual text that
 leaves it open; change them here, on the command line or in a post's options.
 """
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from typing import Optional
 
 from .moves import GroovingTool
 
+# The corner radius of a blade given by its width alone (--tool-width without --tool-radius).
+DEFAULT_CORNER_RADIUS = 0.2
+
 
 @dataclass(frozen=True)
 class Settings:
-    # The tool the cycle runs with (width and corner radius: CYCLE93 and the
-    # pecking cycles read the width to place grooves and check WIDG).
-    tool: GroovingTool = field(default_factory=lambda: GroovingTool(3.0, 0.2))
+    # The blade the cycles that need one (NEEDS_BLADE: CYCLE93, which places
+    # its plunges with the width and checks WIDG against it) cut with. None:
+    # unknown, and such a cycle is refused; there is no default width. The
+    # translator takes a tool's own blade from a tool table first
+    # (tool_table.blade_for); this one is then the blade of the tools the
+    # table does not list.
+    tool: Optional[GroovingTool] = None
 
     # Peck retract "e" of Allen-Bradley G77/G76 (AMP parameter) and of Haas
     # G75/G74 (setting 22 style), per side. None: 0.5 mm or 0.02 in.
@@ -46,8 +53,17 @@ class Settings:
     def with_tool(
         self, width: Optional[float] = None, corner_radius: Optional[float] = None, reference: Optional[str] = None
     ) -> "Settings":
-        """These settings with the tool's given fields replaced."""
+        """These settings with the tool's given fields replaced (None: kept).
+
+        Without a tool, ``width`` makes one (corner radius DEFAULT_CORNER_RADIUS
+        and the minus reference corner unless given); with neither, the tool
+        stays unknown: a radius or a reference corner alone is no blade.
+        """
         tool = self.tool
+        if tool is None:
+            if width is None:
+                return self
+            tool = GroovingTool(width, DEFAULT_CORNER_RADIUS)
         tool = replace(
             tool,
             width=tool.width if width is None else width,

@@ -16,6 +16,7 @@ from .numbers import MAX_WORD, MM_PER_INCH
 from .reader import Block, Word
 from .settings import Settings
 from .targets import MAX_LINE, Writer, comment
+from .tool_table import ToolTable
 
 __all__ = ["ActiveCode", "TranslatorBase"]
 
@@ -35,6 +36,7 @@ class TranslatorBase:
 
     control: InputControl
     settings: Settings
+    tools: Optional[ToolTable]  # the blade of each tool number, or None
     state: ModalState
     writer: Writer
     body: List[str]  # the translated blocks

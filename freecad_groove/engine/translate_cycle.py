@@ -1,6 +1,7 @@
 """Cycle blocks of the translator: a registered cycle's call read, checked
 against the modal state, expanded and written in place."""
 
+from dataclasses import replace
 from typing import List, NamedTuple, Sequence
 
 from .errors import CycleError, ProgramError
@@ -8,6 +9,8 @@ from .input_controls import CYCLE, MODE_GROUPS
 from .moves import Move
 from .reader import Block, Word
 from .registry import CycleEntry
+from .settings import Settings
+from .tool_table import blade_for
 from .translate_base import Groups, TranslatorBase
 
 __all__ = ["CycleCall", "CycleTranslation"]
@@ -43,12 +46,13 @@ class CycleTranslation(TranslatorBase):
             call = self._with_retract_block(entry, call)
         try:  # the call itself first: its own errors are the most useful
             model = entry.cycle_class.parse(call.text)
-            model.validate(self.settings)
+            settings = self._cycle_settings(entry)
+            model.validate(settings)
         except CycleError as exc:
             self._fail(exc.message)
         self._check_cycle_start(call.name)
         try:
-            moves = model.expand(self.state.machine_state(), self.settings)
+            moves = model.expand(self.state.machine_state(), settings)
         except CycleError as exc:
             self._fail(exc.message)
         label = " / ".join(call.text.split("\n")).replace("(", " ").replace(")", "")
@@ -110,6 +114,19 @@ class CycleTranslation(TranslatorBase):
         self._not_ambiguous("retract_e", why="%s %s(e)" % (entry.name, entry.retract_block))
         text = "%s %s%s\n%s" % (entry.name, retract.letter, retract.text, call.text)
         return call._replace(text=text)
+
+    def _cycle_settings(self, entry: CycleEntry) -> Settings:
+        """The settings the cycle runs with: one that NEEDS_BLADE gets the blade of
+        the tool in force (tool_table.blade_for), or is refused."""
+        if not entry.needs_blade:
+            return self.settings
+        if self.tools is not None:
+            self._not_ambiguous("tool", why="the blade of %s" % entry.name)
+        try:
+            blade = blade_for(self.state.tool, self.tools, self.settings.tool)
+        except ProgramError as exc:
+            self._fail("%s: %s" % (entry.name, exc))
+        return replace(self.settings, tool=blade)
 
     # -- state before and after ------------------------------------------------------------
 

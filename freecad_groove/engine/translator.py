@@ -1,7 +1,8 @@
 """Read lathe programs (Siemens, Allen-Bradley 9/Series, Fanuc, Haas), track their
 modal state, and translate them with every grooving cycle expanded.
 
-    translate_program(text, dialect, settings, target="linuxcnc", source_name="PROGRAM") -> str
+    translate_program(text, dialect, settings, target="linuxcnc", source_name="PROGRAM", start=None,
+                      tools=None) -> str
 
 ``dialect`` is the input: "sinumerik" (CYCLE93), "ab9" (G77/G76), "fanuc"
 (two-block G75/G74), "haas" (one-block G75/G74). ``target`` is "linuxcnc" or
@@ -62,6 +63,13 @@ Choices where the manuals are silent (each has a test)
   ``T5 M6 G43 H12`` (``G43`` when the offset is the tool number, ``G49`` for
   offset 00); T with fewer than three digits is refused. Fanuc output writes
   ``T0512``.
+* The blade of a cycle that needs one (NEEDS_BLADE: CYCLE93): the tool
+  table's entry (``tools``) for the tool in force (the last T: 5 for Siemens
+  ``T5 D1`` and Fanuc-style ``T0512``); else ``settings.tool`` (the blade of
+  every tool the table does not list, of cycles before any T, and of every
+  tool without a table); else the cycle is refused. With a table, a T from a
+  block-delete '/' line is ambiguous and refused there. The blade's lengths
+  are in the program's units when the cycle runs.
 * LinuxCNC's M6 stops the spindle (a lathe turret's T does not): when the
   spindle was running, the translated tool change starts it again (M3/M4).
 * A feed move or cycle in feed per revolution needs a spindle speed (S) and a
@@ -112,6 +120,7 @@ from .moves import MachineState
 from .reader import Block, parse_block
 from .settings import DEFAULT_SETTINGS, Settings
 from .targets import MAX_LINE, Writer, comment, target_spec
+from .tool_table import ToolTable
 from .translate_base import ActiveCode, Groups
 from .translate_cycle import CycleTranslation
 from .translate_machine import MachineTranslation
@@ -130,11 +139,13 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
     """
 
     def __init__(self, dialect: str, settings: Settings = DEFAULT_SETTINGS, target: str = "linuxcnc",
-                 source_name: str = "PROGRAM", start: Optional[MachineState] = None) -> None:
+                 source_name: str = "PROGRAM", start: Optional[MachineState] = None,
+                 tools: Optional[ToolTable] = None) -> None:
         self.control = input_control(dialect)  # raises on an unknown dialect
         self.fanuc_output = target_spec(target).fanuc_style  # target_spec raises on an unknown target
         self.dialect = dialect
         self.settings = settings
+        self.tools = tools
         self.target = target
         self.source_name = source_name
         self.codes = self.control.code_table()
@@ -310,15 +321,19 @@ def translate_program(
     target: str = "linuxcnc",
     source_name: str = "PROGRAM",
     start: Optional[MachineState] = None,
+    tools: Optional[ToolTable] = None,
 ) -> str:
     """Translate a ``dialect`` program for ``target`` with every cycle call expanded.
 
     ``start`` (moves.MachineState, optional) gives the modes at the start
     (diameter_mode, incremental, metric, feed_per_rev); the position is never
-    taken from it. Raises ProgramError (``.line`` set) on the first line that
+    taken from it. ``tools`` (tool_table.ToolTable, optional) gives the blade
+    of each tool number; a cycle that needs a blade (CYCLE93) cuts with the
+    table's entry for the tool in force, else with ``settings.tool``, else it
+    is refused. Raises ProgramError (``.line`` set) on the first line that
     cannot be translated.
     """
-    translator = Translator(dialect, settings, target=target, source_name=source_name, start=start)
+    translator = Translator(dialect, settings, target=target, source_name=source_name, start=start, tools=tools)
     for number, line in enumerate(_LINES.split(text), 1):
         translator.line(line, number)
     return translator.result()

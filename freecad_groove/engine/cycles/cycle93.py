@@ -84,6 +84,7 @@ class Cycle93:
     CONTROLS: ClassVar[tuple] = ("sinumerik",)
     TITLE: ClassVar[str] = "Siemens CYCLE93 groove"
     FORM: ClassVar[str] = CALL
+    NEEDS_BLADE: ClassVar[bool] = True  # the plunges are placed with the blade's width
     WORD_HELP: ClassVar[tuple] = (
         ("AXFA", "start point in the transverse axis X (radius value unless --diameter-input)"),
         ("AXSA", "start point in the longitudinal axis Z (absolute)"),

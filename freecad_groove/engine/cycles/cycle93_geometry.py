@@ -142,6 +142,8 @@ class GrooveGeometry:
         self.call = call
         self.settings = settings
         self.metric = metric
+        if settings.tool is None:
+            raise cycle93_error("tool width", None, "the blade is unknown: give it as Settings.tool")
         if not settings.tool.width > 0:
             raise cycle93_error(
                 "tool width",

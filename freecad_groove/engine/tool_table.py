@@ -1,0 +1,116 @@
+"""Grooving blades by tool number: the tool table a program's cycles take their blade from.
+
+    table = read_tool_table(text, "tools.tbl")       # ToolTable: {5: GroovingTool(3.0, 0.2, "minus"), ...}
+    blade = blade_for(5, table, default=None)        # the blade tool 5 cuts with
+
+The text format, one tool a line::
+
+    # T  width  corner-radius  reference
+    5    3.0    0.2            minus
+    7    2.5    0.1            plus
+
+* four fields separated by spaces or tabs: the tool number T (a whole number,
+  0 or more, once in the table), the blade width (greater than 0), the corner
+  radius of both front corners (0 or more, less than half the width) and the
+  reference corner the tool's offset was measured on (``minus`` or ``plus``,
+  see moves.GroovingTool);
+* ``#`` starts a comment, to the end of the line; blank lines are skipped;
+* lengths are in the program's units at the time the cycle runs (a table for
+  an inch program holds inches), like ``--tool-width``.
+
+Every line that breaks a rule raises ProgramError with its 1-based line
+number in ``.line`` and a message naming the field, the value and the rule.
+
+Which blade a cycle gets (``blade_for``; the translator asks for the cycles
+whose class declares ``NEEDS_BLADE``): the table's entry for the tool in force;
+else the default blade (``Settings.tool``, the command line's ``--tool-width``)
+when there is one; else nothing, and the cycle is refused: a blade guessed is
+a groove cut with the wrong width.
+"""
+
+import math
+import re
+from typing import Dict, Iterable, Optional, Tuple
+
+from .errors import ProgramError
+from .moves import REFERENCE_MINUS, REFERENCE_PLUS, GroovingTool
+from .numbers import MAX_WORD, format_value
+
+__all__ = ["BLADE_UNKNOWN", "ToolTable", "blade_for", "read_tool_table"]
+
+BLADE_UNKNOWN = "the blade width is unknown"
+FIELDS = ("T", "width", "corner radius", "reference")
+_WHOLE = re.compile(r"[0-9]+\Z")
+
+
+class ToolTable(Dict[int, GroovingTool]):
+    """Tool number -> blade, with the name of the table it was read from
+    (``source``, named in the translator's messages)."""
+
+    def __init__(self, tools: Iterable[Tuple[int, GroovingTool]] = (), source: str = "the tool table") -> None:
+        super().__init__(tools)
+        self.source = source
+
+
+def _number(field: str, text: str, line: int) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not -MAX_WORD < value < MAX_WORD:  # also refuses NaN and infinities
+        raise ProgramError("%s=%s: must be a number" % (field, text), line)
+    return value
+
+
+def _tool_line(fields: list, line: int) -> Tuple[int, GroovingTool]:
+    """One table line's tool number and blade (the rules in the module notes)."""
+    if len(fields) != len(FIELDS):
+        raise ProgramError("%d fields: a tool line has %d: %s" % (len(fields), len(FIELDS), ", ".join(FIELDS)), line)
+    number_text, width_text, radius_text, reference = fields
+    if not _WHOLE.match(number_text):
+        raise ProgramError("T=%s: must be a whole number, 0 or more" % number_text, line)
+    width = _number("width", width_text, line)
+    if not width > 0:
+        raise ProgramError("width=%s: must be greater than 0" % width_text, line)
+    radius = _number("corner radius", radius_text, line)
+    if not 0 <= radius < width / 2:
+        raise ProgramError("corner radius=%s: must be 0 or more and less than half the width %s"
+                           % (radius_text, format_value(width)), line)
+    if reference not in (REFERENCE_MINUS, REFERENCE_PLUS):
+        raise ProgramError("reference=%s: must be %s or %s" % (reference, REFERENCE_MINUS, REFERENCE_PLUS), line)
+    return int(number_text), GroovingTool(width, radius, reference)
+
+
+def read_tool_table(text: str, source_name: str = "the tool table") -> ToolTable:
+    """The tools of a tool table text (format in the module notes); ProgramError
+    with ``.line`` on the first line that breaks a rule. ``source_name`` names
+    the table in later messages (``ToolTable.source``)."""
+    table = ToolTable(source=source_name)
+    lines: Dict[int, int] = {}  # tool number -> the line that gave it
+    for line, raw in enumerate(text.splitlines(), 1):
+        fields = raw.split("#", 1)[0].split()
+        if not fields:
+            continue
+        number, tool = _tool_line(fields, line)
+        if number in table:
+            raise ProgramError("T=%d: must be unique; line %d gives it already" % (number, lines[number]), line)
+        table[number] = tool
+        lines[number] = line
+    return table
+
+
+def blade_for(tool: Optional[int], table: Optional[ToolTable], default: Optional[GroovingTool]) -> GroovingTool:
+    """The blade a cycle that needs one cuts with, tool ``tool`` in force (None:
+    no T yet): the ``table``'s entry, else ``default``. ProgramError (without a
+    line) saying what to give when neither has it."""
+    if table is not None and tool is not None and tool in table:
+        return table[tool]
+    if default is not None:
+        return default
+    if table is None:
+        raise ProgramError(BLADE_UNKNOWN + ": give --tool-width or a tool table")
+    if tool is None:
+        raise ProgramError("%s: no tool (T) is selected before it, so the tool table %s cannot give the blade; "
+                           "program T first or give --tool-width for it" % (BLADE_UNKNOWN, table.source))
+    raise ProgramError("%s: T%d is not in the tool table %s; add it there, or give --tool-width for the tools "
+                       "the table does not list" % (BLADE_UNKNOWN, tool, table.source))
