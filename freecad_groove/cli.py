@@ -10,15 +10,21 @@ the cycle classes).
 Errors: an invalid cycle or a line the reader cannot translate prints exactly
 one line ``PROGRAM:LINE: message`` on stderr, writes nothing to stdout or OUT
 (an existing OUT is left untouched) and exits with status 2. A file that cannot
-be read or written is reported the same way with LINE 0. Bad option values are
-reported by argparse (usage and message on stderr, status 2).
+be read or written is reported the same way with LINE 0 (OUT: what
+engine/output.py refuses, a full or closed stdout as ``<stdout>:0:``). Bad
+option values are reported by argparse (usage and message on stderr, status 2).
+A broken pipe on stdout ends quietly with status 1. SIGINT, SIGTERM and SIGHUP
+print ``PROGRAM:0: interrupted`` and exit with 128 + the signal's number, the
+temporary file of OUT removed.
 """
 
 import argparse
 import math
 import os
 import re
+import signal
 import sys
+import threading
 from dataclasses import replace
 from typing import Callable
 
@@ -446,13 +452,80 @@ def _expand(args):
 def _write_output(text, out):
     """Write ``text`` to ``out`` atomically ("-" or None: stdout)."""
     if out in (None, "-"):
-        sys.stdout.write(text)
-        sys.stdout.flush()
+        _write_stdout(text)
         return
     try:
         write_atomically(out, text, encoding="ascii", errors="replace")
     except OSError as exc:
         raise _Failure(out, 0, "cannot write the output: %s" % (exc.strerror or exc)) from None
+
+
+def _write_stdout(text):
+    """Write ``text`` to standard output; a closed or failing stdout (not a
+    broken pipe, which main ends quietly) is a _Failure naming <stdout>."""
+    stream = sys.stdout
+    if stream is None:  # started with stdout closed (>&-)
+        raise _Failure("<stdout>", 0, "cannot write the output: standard output is closed")
+    try:
+        stream.write(text)
+        stream.flush()
+    except BrokenPipeError:
+        raise
+    except (OSError, ValueError) as exc:  # ValueError: a closed file object
+        _quiet_stdout()
+        raise _Failure("<stdout>", 0, "cannot write the output: %s" % (getattr(exc, "strerror", None) or exc)) from None
+
+
+def _quiet_stdout():
+    """Point sys.stdout at the null device, so that nothing is written (or
+    fails again) when Python flushes it on exit."""
+    try:
+        sys.stdout = open(os.devnull, "w")
+    except OSError:
+        pass
+
+
+# ---------------------------------------------------------------- signals
+
+
+class _Interrupted(BaseException):
+    """SIGINT, SIGTERM or SIGHUP arrived (a BaseException, so no ``except
+    Exception`` takes it for an error; write_atomically removes its temporary
+    file on the way out)."""
+
+    def __init__(self, signum):
+        super().__init__(signum)
+        self.signum = signum
+
+
+_SIGNALS = tuple(getattr(signal, name) for name in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, name))
+
+
+def _on_signal(signum, frame):
+    for sig in _SIGNALS:  # the first signal ends the run: the cleanup is not interrupted by another
+        if signal.getsignal(sig) is _on_signal:
+            signal.signal(sig, signal.SIG_IGN)
+    raise _Interrupted(signum)
+
+
+def _catch_signals():
+    """Make SIGINT, SIGTERM and SIGHUP raise _Interrupted; a signal ignored
+    when we start (nohup, a background job) stays ignored. Returns the
+    handlers to restore."""
+    if threading.current_thread() is not threading.main_thread():
+        return {}
+    previous = {}
+    for sig in _SIGNALS:
+        handler = signal.getsignal(sig)
+        if handler is not signal.SIG_IGN:
+            previous[sig] = handler
+            signal.signal(sig, _on_signal)
+    return previous
+
+
+def _restore_signals(previous):
+    for sig, handler in previous.items():
+        signal.signal(sig, signal.SIG_DFL if handler is None else handler)
 
 
 # ---------------------------------------------------------------- parser and main
@@ -514,8 +587,31 @@ def _negative_words(argv):
 
 
 def main(argv=None):
-    parser = build_parser()
-    args = parser.parse_args(_negative_words(sys.argv[1:] if argv is None else list(argv)))
+    """Run the command line; returns the exit status: 0, 1 for a broken pipe,
+    2 for an error (one line PROGRAM:LINE: message on stderr), 128 + the
+    signal's number for SIGINT (130), SIGTERM (143) and SIGHUP (129)."""
+    previous = _catch_signals()
+    name = "freecad_groove"
+    try:
+        parser = build_parser()
+        args = parser.parse_args(_negative_words(sys.argv[1:] if argv is None else list(argv)))
+        name = _run_name(args)
+        return _run(args, name)
+    except _Interrupted as exc:
+        _report(name, 0, "interrupted")
+        return 128 + exc.signum
+    finally:
+        _restore_signals(previous)
+
+
+def _run_name(args):
+    """The name an error of this run starts with."""
+    if args.command == "expand":
+        return "<stdin>" if args.program == "-" else args.program
+    return "emit %s" % args.cycle_name
+
+
+def _run(args, name):
     try:
         if args.command == "expand":
             text = _expand(args)
@@ -527,14 +623,10 @@ def main(argv=None):
     except _Failure as exc:
         _report(exc.name, exc.line, exc.message)
     except BrokenPipeError:
-        try:
-            sys.stdout = open(os.devnull, "w")
-        except OSError:
-            pass
+        _quiet_stdout()
         return 1
     except Exception as exc:  # never a traceback: one line, status 2
-        name = getattr(args, "program", None) or "freecad_groove"
-        _report("<stdin>" if name == "-" else name, 0, "internal error (%s: %s)" % (type(exc).__name__, exc))
+        _report(name, 0, "internal error (%s: %s)" % (type(exc).__name__, exc))
     return EXIT_ERROR
 
 

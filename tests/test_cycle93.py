@@ -78,6 +78,12 @@ def test_unreadable_calls_name_the_parameter(text, param):
     assert str(e.value).startswith("CYCLE93 " + param)
 
 
+def test_a_parameter_with_too_many_digits_is_named_and_shortened():
+    with pytest.raises(CycleError) as e:
+        Cycle93.parse("CYCLE93(35, %s)" % ("1" * 4301))
+    assert str(e.value) == "CYCLE93 AXSA=1111111111...: the number has more than 4300 digits"
+
+
 # -- validation: every rule, its message and its alarm ------------------------------
 
 

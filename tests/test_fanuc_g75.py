@@ -334,6 +334,13 @@ def test_parse_errors_name_the_word(cls, text, fragments):
     raises(lambda: cls.parse(text), *fragments)
 
 
+@pytest.mark.parametrize("cls, text, word", [(FanucG75, "G75 X40. Z-30. P{}", "G75 P"),
+                                             (FanucG74, "G74 X40. Z-30. Q{}", "G74 Q"), (HaasG75, "G75 X{}.", "G75 X")])
+def test_a_word_with_too_many_digits_is_named_and_shortened(cls, text, word):
+    # P and Q are integers: Python's int() refuses more than 4300 digits
+    raises(lambda: cls.parse(text.format("1" * 4301)), word + "=1111111111...: the number has more than 4300 digits")
+
+
 value = st.integers(-999999999, 999999999).map(lambda n: n / 10000)
 positive = st.integers(1, 999999999).map(lambda n: n / 10000)
 not_negative = st.integers(0, 999999999).map(lambda n: n / 10000)

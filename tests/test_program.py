@@ -100,6 +100,31 @@ def test_tokenizer_errors(text, dialect, message):
     assert info.value.line == 3 and message in str(info.value)
 
 
+TOO_LONG = "1" * 4301  # one digit more than a number may have (Python's int() limit)
+
+
+@pytest.mark.parametrize(
+    "text, dialect, shown",
+    [
+        ("N" + TOO_LONG + " G0", "fanuc", "N1111111111..."),
+        ("G" + TOO_LONG, "haas", "G1111111111..."),
+        ("G0 X-" + TOO_LONG + ".5", "ab9", "X-111111111..."),
+        ("M" + TOO_LONG, "sinumerik", "M1111111111..."),
+        ("G2 X1 Z1 CR=" + TOO_LONG, "sinumerik", "CR=1111111111..."),
+        ("G1 X=0." + "0" * 4300 + "1", "sinumerik", "X0.00000000..."),  # digits after the point count too
+    ],
+    ids=["N", "G", "X", "M", "CR", "decimals"],
+)
+def test_a_number_with_too_many_digits_is_named_with_its_line(text, dialect, shown):
+    with pytest.raises(ProgramError) as info:
+        parse_block(text, dialect, 7)
+    assert info.value.line == 7 and str(info.value) == shown + ": the number has more than 4300 digits"
+
+
+def test_a_number_of_4300_digits_is_read():
+    assert parse_block("N" + "1" * 4300 + " G0 X0." + "0" * 4298 + "1", "sinumerik").number == int("1" * 4300)
+
+
 # ---------------------------------------------------------------- modal tracking
 
 
@@ -305,7 +330,10 @@ def test_dwell(text, dialect, dwell):
         ("G4 S10", "sinumerik", "spindle revolutions"),
         ("G04 P1.", "ab9", "not documented"),
         ("G4 F1 X2", "sinumerik", "exactly one time word"),
+        ("G04 P" + "9" * 400, "fanuc", "the dwell must be 0 to 99999 s"),  # not an overflow converting to seconds
+        ("G04 P" + "9" * 400, "haas", "the dwell must be 0 to 99999 s"),
     ],
+    ids=["fanuc-P1.5", "sinumerik-S", "ab9", "two-words", "fanuc-400-digits", "haas-400-digits"],
 )
 def test_dwell_errors(text, dialect, message):
     assert message in str(error(text, dialect))

@@ -21,6 +21,31 @@ MAX_DWELL_SECONDS = 99999.0
 ARC_IJK_TOLERANCE = 0.01
 ARC_R_TOLERANCE = 0.001
 
+# Most digits a number in a program may have: Python's own limit for
+# converting a string of digits to an integer (sys.int_info.default_max_str_digits);
+# a longer number is refused by name before any conversion.
+MAX_DIGITS = 4300
+
+
+def too_many_digits(number: str) -> bool:
+    """Whether the number as written has more than MAX_DIGITS digits."""
+    return len(number) > MAX_DIGITS and sum(char.isdigit() for char in number) > MAX_DIGITS
+
+
+def shortened(number: str) -> str:
+    """The first digits of a number too long to quote whole: ``1234567890...``."""
+    return number[:10] + "..."
+
+
+DIGITS_RULE = "the number has more than %d digits" % MAX_DIGITS
+
+
+def digits_message(name: str, number: str) -> str:
+    """The message for a word whose number has too many digits, ``name`` its
+    letter as written (``N``, ``CR=``): ``N1234567890...: the number has more
+    than 4300 digits``."""
+    return "%s%s: %s" % (name, shortened(number), DIGITS_RULE)
+
 
 def format_decimal(value: float, digits: int, point: bool = True) -> str:
     """``value`` rounded to ``digits`` decimals, trailing zeros dropped, never ``-0``.

@@ -1,32 +1,183 @@
-"""Writing a finished program to a file so that it is never half written."""
+"""Writing a finished program to a file so that it is never half written and
+nothing else is ever destroyed (the command line's ``-o`` and the posts).
 
+:func:`write_atomically` writes to the file the user meant:
+
+* a symbolic link is followed to its final target: the target gets the new
+  text, the link stays a link (a dangling link gets its target created);
+* only a regular file or a new path is written: a directory, a named pipe, a
+  device or a socket is refused;
+* a file the user may not write is refused: whatever ``os.access`` says, and
+  as root, whom the permission bits do not stop, a file without its owner's
+  write bit (``chmod u-w``, mode 0444) too, so a write-protected file stays
+  protected from the command line as from an editor;
+* the folder must exist and be writable by the same rules (the new text goes
+  through a temporary file there);
+* the new text goes to a temporary file ``.NAME.XXXXXXXXXX.tmp`` next to the
+  target, is flushed to disk, gets the target's mode (and owner and group
+  where the user may set them: root always) and is renamed over the target:
+  the file is either the old one or the whole new one, never a mix. A file
+  with other hard links is replaced at this name only.
+
+A refused path raises :class:`OutputRefused`, an ``OSError`` whose
+``strerror`` says why in one line; other ``OSError`` propagate. The temporary
+file is removed on any error or exception, a ``KeyboardInterrupt`` or a signal
+handler's exception included: its name is chosen before the file is made
+(``O_EXCL``), so an exception raised the instant after still finds it. Only a
+kill -9 or a crash during the final write can leave a ``.NAME.*.tmp`` behind.
+"""
+
+import errno
 import os
-import tempfile
+import secrets
+import stat
+from typing import Optional, Tuple
+
+__all__ = ["OutputRefused", "write_atomically"]
+
+_NOT_REGULAR = (
+    (stat.S_ISDIR, "a directory"),
+    (stat.S_ISFIFO, "a named pipe (FIFO)"),
+    (stat.S_ISCHR, "a character device"),
+    (stat.S_ISBLK, "a block device"),
+    (stat.S_ISSOCK, "a socket"),
+)
+
+
+class OutputRefused(OSError):
+    """A path :func:`write_atomically` does not write; ``strerror`` says why."""
+
+    def __init__(self, code: int, reason: str, filename: str) -> None:
+        super().__init__(code, reason, filename)
+
+
+def _is_root() -> bool:
+    return hasattr(os, "geteuid") and os.geteuid() == 0
+
+
+def _may_write(path: str, st: os.stat_result, access: int) -> bool:
+    """Whether the user may write ``path``: ``os.access`` (which also says no
+    on a read-only file system) and, for root, the owner's write bit."""
+    return os.access(path, access) and not (_is_root() and not st.st_mode & stat.S_IWUSR)
+
+
+def _refusal(path: str, st: os.stat_result, what: str) -> str:
+    """Why the user may not write ``path`` (``what``: how the message names it)."""
+    if hasattr(os, "statvfs") and os.statvfs(path).f_flag & os.ST_RDONLY:
+        return "%s is on a read-only file system" % what
+    if not st.st_mode & stat.S_IWUSR:
+        return "%s is write-protected (mode %04o)" % (what, stat.S_IMODE(st.st_mode))
+    return "no permission to write %s (mode %04o)" % (what, stat.S_IMODE(st.st_mode))
+
+
+def _check_folder(filename: str, folder: str) -> None:
+    try:
+        st = os.stat(folder)
+    except (FileNotFoundError, NotADirectoryError):
+        raise OutputRefused(errno.ENOENT, "the folder %s does not exist" % folder, filename) from None
+    if not stat.S_ISDIR(st.st_mode):
+        raise OutputRefused(errno.ENOTDIR, "%s is not a folder" % folder, filename)
+    if not _may_write(folder, st, os.W_OK | os.X_OK):
+        raise OutputRefused(errno.EACCES, _refusal(folder, st, "the folder " + folder), filename)
+
+
+def _resolve(filename: str) -> Tuple[str, Optional[os.stat_result]]:
+    """The final target of ``filename`` and its stat (None for a new path),
+    refusing what write_atomically does not write."""
+    if filename.endswith(("/", os.sep)):
+        raise OutputRefused(errno.EISDIR, "the name ends with '/': a folder, not a file", filename)
+    target = os.path.realpath(filename)
+    what = "it" if target == os.path.abspath(filename) else "its link target " + target
+    try:
+        st = os.stat(target)
+    except (FileNotFoundError, NotADirectoryError):  # a new path; _check_folder says what is wrong with its folder
+        st = None
+    if st is not None:
+        for test, kind in _NOT_REGULAR:
+            if test(st.st_mode):
+                raise OutputRefused(errno.EINVAL, "%s is %s, not a regular file" % (what, kind), filename)
+        if not _may_write(target, st, os.W_OK):
+            raise OutputRefused(errno.EACCES, _refusal(target, st, what), filename)
+    _check_folder(filename, os.path.dirname(target))
+    return target, st
+
+
+def _temp_name(target: str) -> str:
+    """A fresh name ``.NAME.XXXXXXXXXX.tmp`` next to ``target``."""
+    folder, name = os.path.split(target)
+    return os.path.join(folder, ".%s.%s.tmp" % (name, secrets.token_hex(5)))
+
+
+def _create(path: str) -> int:
+    """Make the file ``path``, which must not exist (FileExistsError)."""
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0)
+    return os.open(path, flags, 0o600)
+
+
+def _fill(fd: int, tmp: str, data: bytes, old: Optional[os.stat_result]) -> None:
+    """Write ``data`` to the temporary file and give it the old file's owner and mode."""
+    with os.fdopen(fd, "wb") as f:
+        f.write(data)
+        f.flush()
+        os.fsync(f.fileno())
+    if old is None:
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
+        return
+    if hasattr(os, "chown"):
+        try:
+            os.chown(tmp, old.st_uid, old.st_gid)
+        except OSError:
+            try:
+                os.chown(tmp, -1, old.st_gid)  # the group alone, where the user belongs to it
+            except OSError:
+                pass
+    os.chmod(tmp, stat.S_IMODE(old.st_mode))  # after chown, which clears set-id bits
+
+
+def _remove(path: str) -> None:
+    try:
+        os.unlink(path)
+    except OSError:
+        pass
+
+
+def _sync_folder(folder: str) -> None:
+    """Flush the rename to disk where the system allows it (POSIX)."""
+    try:
+        fd = os.open(folder, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
 
 
 def write_atomically(filename: str, text: str, encoding: str = "utf-8", errors: str = "strict") -> None:
-    """Write ``text`` to ``filename`` through a temporary file in the same
-    folder renamed over it: the file is either the old one (keeping its
-    permissions) or the whole new one. OSError propagates; the temporary file
-    never stays behind."""
-    folder = os.path.dirname(os.path.abspath(filename))
+    """Write ``text`` to the file ``filename`` means (see the module): the old
+    file or the whole new one, nothing else touched, no temporary file left.
+    Raises OutputRefused for a path it does not write, OSError on a failure."""
+    target, old = _resolve(filename)
+    data = text.encode(encoding, errors)
+    tmp = None
     try:
-        mode = os.stat(filename).st_mode & 0o7777
-    except FileNotFoundError:
-        umask = os.umask(0)
-        os.umask(umask)
-        mode = 0o666 & ~umask
-    fd, tmp = tempfile.mkstemp(prefix="." + os.path.basename(filename) + ".", suffix=".tmp", dir=folder)
-    try:
-        with os.fdopen(fd, "w", encoding=encoding, errors=errors, newline="\n") as f:
-            f.write(text)
-            f.flush()
-            os.fsync(f.fileno())
-        os.chmod(tmp, mode)
-        os.replace(tmp, filename)
+        for _attempt in range(100):
+            tmp = _temp_name(target)  # known before the file exists: any exception from here on removes it
+            try:
+                fd = _create(tmp)
+                break
+            except FileExistsError:
+                tmp = None  # another file's name: not ours to remove
+        else:
+            raise FileExistsError(errno.EEXIST, "no free name for the temporary file", target)
+        _fill(fd, tmp, data, old)
+        os.replace(tmp, target)
     except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
+        if tmp is not None:
+            _remove(tmp)
         raise
+    _sync_folder(os.path.dirname(target))

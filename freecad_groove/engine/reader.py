@@ -14,6 +14,7 @@ from typing import List, NamedTuple, NoReturn, Optional, Set
 
 from .errors import ProgramError
 from .input_controls import InputControl, input_control
+from .numbers import digits_message, too_many_digits
 
 __all__ = ["Block", "Word", "parse_block"]
 
@@ -140,11 +141,14 @@ class _BlockReader:
         self.first_word = False
         return True
 
-    def read_number(self, message: str) -> str:
+    def read_number(self, name: str, message: str) -> str:
+        """The number at ``pos`` of the word ``name`` (as written: ``X``, ``CR=``)."""
         number = _NUMBER.match(self.text, self.pos)
         if not number:
             self.fail(message)
         self.pos = number.end()
+        if too_many_digits(number.group()):
+            self.fail(digits_message(name, number.group()))
         return number.group()
 
     def read_letter_word(self, letter: str, after: int) -> None:
@@ -152,7 +156,7 @@ class _BlockReader:
         self.pos = self.skip_space(after)
         if self.control.long_names and self.char(self.pos) == "=":
             self.pos = self.skip_space(self.pos + 1)
-        number = self.read_number("%s %s" % (letter, _NOT_EVALUATED))
+        number = self.read_number(letter, "%s %s" % (letter, _NOT_EVALUATED))
         if letter != "N":
             self.block.words.append(Word(letter, number, float(number)))
             return
@@ -179,7 +183,7 @@ class _BlockReader:
             if self.char(after) != "=":
                 self.fail("%s must be followed by '=' and a number" % name)
             self.pos = self.skip_space(after + 1)
-            number = self.read_number("%s= %s" % (name, _NOT_EVALUATED))
+            number = self.read_number(name + "=", "%s= %s" % (name, _NOT_EVALUATED))
             self.block.words.append(Word(name, number, float(number)))
         else:
             self.fail("%s is not supported" % name)

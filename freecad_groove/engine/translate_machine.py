@@ -269,7 +269,13 @@ class MachineTranslation(TranslatorBase):
         readers = {
             DWELL_SECONDS: lambda: word.value,
             DWELL_LENGTH_SECONDS: lambda: self._length(word),
-            DWELL_MILLISECONDS: lambda: self._integer(word) / 1000.0,
-            DWELL_POINT_SECONDS: lambda: word.value if "." in word.text else self._integer(word) / 1000.0,
+            DWELL_MILLISECONDS: lambda: self._milliseconds(word),
+            DWELL_POINT_SECONDS: lambda: word.value if "." in word.text else self._milliseconds(word),
         }
         return readers[reading]()
+
+    def _milliseconds(self, word: Word) -> float:
+        """A whole number of milliseconds, in seconds (from the float value: a
+        huge count is out of range, not an overflow)."""
+        self._integer(word)
+        return word.value / 1000.0

@@ -720,6 +720,36 @@ def test_files_are_written_whole_and_replace_the_old_one(shop, name, tmp_path):
         export(name, [op], filename=str(tmp_path / "missing" / "prog.nc"))
 
 
+@pytest.mark.parametrize("name", ["sinumerik", "fanuc"])
+def test_files_the_posts_write_and_refuse(shop, name, tmp_path):
+    # The engine's writer (tests/test_output.py): the file a link leads to, never
+    # a pipe, a device or a write-protected file; one PostError for each refusal.
+    op = groove(shop, "cylinder")
+    (tmp_path / "jobs").mkdir()
+    real = tmp_path / "jobs" / "prog.nc"
+    real.write_text("old\n")
+    link = tmp_path / "prog.nc"
+    link.symlink_to(real)
+    assert export(name, [op], filename=str(link)) == real.read_text() and link.is_symlink()
+    fifo = tmp_path / "pipe.nc"
+    os.mkfifo(fifo)
+    with pytest.raises(posts.PostError) as info:
+        export(name, [op], filename=str(fifo))
+    assert str(info.value) == "cannot write %s: it is a named pipe (FIFO), not a regular file" % fifo
+    device = tmp_path / "full.nc"
+    device.symlink_to("/dev/full")
+    with pytest.raises(posts.PostError, match="its link target /dev/full is a character device"):
+        export(name, [op], filename=str(device))
+    protected = tmp_path / "protected.nc"
+    protected.write_text("keep me\n")
+    os.chmod(protected, 0o444)
+    with pytest.raises(posts.PostError, match=r"it is write-protected \(mode 0444\)"):
+        export(name, [op], filename=str(protected))
+    assert protected.read_text() == "keep me\n" and stat.S_ISFIFO(os.lstat(fifo).st_mode)
+    assert snapshot(tmp_path) == ["full.nc", "jobs", "pipe.nc", "prog.nc", "protected.nc"]
+    assert snapshot(tmp_path / "jobs") == ["prog.nc"]
+
+
 @pytest.mark.parametrize("args, match", [
     ("--precision 9", "--precision 9: must be 0 to 6"),
     ("--bogus", "unrecognized arguments: --bogus"),

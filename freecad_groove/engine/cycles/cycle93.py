@@ -55,7 +55,7 @@ from dataclasses import dataclass, fields
 from typing import ClassVar, List, Optional, Tuple
 
 from ..moves import MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, MachineState, Move
-from ..numbers import format_value
+from ..numbers import DIGITS_RULE, format_value, shortened, too_many_digits
 from ..registry import CALL, register
 from ..settings import DEFAULT_SETTINGS, Settings
 from .cycle93_geometry import (  # noqa: F401 - the constants are part of this module's API
@@ -147,6 +147,8 @@ class Cycle93:
         for name, arg in zip(PARAMS, args):
             if arg == "":
                 continue
+            if too_many_digits(arg):
+                raise cycle93_error(name, shortened(arg), DIGITS_RULE)
             try:
                 num = float(arg)
             except ValueError:

@@ -38,7 +38,7 @@ from typing import ClassVar, Dict, List, Optional, Sequence, Tuple
 
 from ..errors import CycleError
 from ..moves import FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID, MachineState, Move
-from ..numbers import format_decimal
+from ..numbers import DIGITS_RULE, format_decimal, shortened, too_many_digits
 from ..settings import DEFAULT_SETTINGS, Settings
 
 DECIMALS = 4
@@ -99,6 +99,8 @@ def read_block(text: str, cycle: str, letters: Sequence[str], counted: Sequence[
             raise CycleError(block[pos], None, "cannot read %r as a %s word" % (block[pos:], cycle), cycle=cycle)
         letter, number = match.groups()
         pos = match.end()
+        if too_many_digits(number):
+            raise CycleError(letter, shortened(number), DIGITS_RULE, cycle=cycle)
         if letter == "G":
             if seen_g or "." in number or int(number) != code:
                 raise CycleError("G", float(number), "only %s may be programmed in this block" % cycle, cycle=cycle)

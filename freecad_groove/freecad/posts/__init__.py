@@ -79,9 +79,12 @@ Errors: anything that stops a post (an op whose grooves the engine refuses,
 a move the control cannot take, a bad option) raises :class:`PostError`,
 whose message starts with the op's Label and names the op property (and the
 cycle parameter); the message also goes to FreeCAD's report view. A file is
-written only when the whole text is built, through a temporary file in the
-same folder renamed over the target, so a failed post leaves no file and an
-existing one untouched.
+written only when the whole text is built, by the engine's
+``write_atomically`` (engine/output.py): through a temporary file in the
+target's folder renamed over it, so a failed post leaves no file and an
+existing one untouched; a symbolic link is followed to the file it names; a
+directory, pipe, device or write-protected file is refused with a PostError
+``cannot write FILE: <why>``.
 
 The package
 -----------
