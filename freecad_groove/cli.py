@@ -19,16 +19,26 @@ temporary file of OUT removed.
 """
 
 import argparse
-import math
 import os
 import re
 import signal
 import sys
 import threading
-from dataclasses import replace
 from typing import Callable
 
 from . import __version__
+from .cli_options import (
+    add_settings_options,
+    add_start_options,
+    add_tool_table_option,
+    counted,
+    decimal_word,
+    finite,
+    positive,
+    settings_from,
+    siemens_value,
+    start_state,
+)
 from .engine import registry
 from .engine.input_controls import DIALECTS, INPUT_CONTROLS
 from .engine.output import write_atomically
@@ -73,192 +83,6 @@ Examples:
 """
 
 
-# ---------------------------------------------------------------- argument types
-
-
-def _finite(text):
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError("%r is not a number" % text) from None
-    if not math.isfinite(value):
-        raise argparse.ArgumentTypeError("%r is not a finite number" % text)
-    return value
-
-
-def _positive(text):
-    value = _finite(text)
-    if not value > 0:
-        raise argparse.ArgumentTypeError("%r must be greater than 0" % text)
-    return value
-
-
-def _not_negative(text):
-    value = _finite(text)
-    if value < 0:
-        raise argparse.ArgumentTypeError("%r must not be negative" % text)
-    return value
-
-
-_DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)\Z")
-_INTEGER = re.compile(r"[+-]?[0-9]+\Z")
-
-
-def _decimal_word(text):
-    """A word value as typed; a decimal point is added to whole numbers (``20`` -> ``20.``)."""
-    text = text.strip()
-    if not _DECIMAL.match(text):
-        raise argparse.ArgumentTypeError("%r is not a plain decimal number" % text)
-    return text if "." in text else text + "."
-
-
-def _siemens_value(text):
-    text = text.strip()
-    if not _DECIMAL.match(text):
-        raise argparse.ArgumentTypeError("%r is not a plain decimal number" % text)
-    return text
-
-
-def _counted(text):
-    text = text.strip()
-    if not _INTEGER.match(text):
-        raise argparse.ArgumentTypeError("%r must be a whole number (least input increments: P2000 = 2 mm)" % text)
-    return text
-
-
-# ---------------------------------------------------------------- settings options
-
-
-def _add_settings_options(parser):
-    g = parser.add_argument_group(
-        "tool and machine settings (accepted with every dialect, ignored where a cycle does not use them)"
-    )
-    g.add_argument(
-        "--tool-width",
-        type=_positive,
-        metavar="W",
-        help="width of the grooving blade, in the program's units when the cycle runs. No default: CYCLE93 "
-        "places its plunges with it, so it is refused without the blade (this option or expand's --tool-table; "
-        "with a table, this blade is the one of tools the table does not list and of cycles before any T).",
-    )
-    g.add_argument(
-        "--tool-radius",
-        type=_not_negative,
-        metavar="R",
-        help="corner radius of both front corners of the --tool-width blade (default 0.2); must be less than "
-        "half the width.",
-    )
-    g.add_argument(
-        "--reference-corner",
-        choices=("minus", "plus"),
-        help="CYCLE93: which front corner of the --tool-width blade the moves drive: minus = the -Z corner (-X "
-        "for face grooves, the default), plus = the other. Must match the corner your tool offset was measured "
-        "on. (The pecking cycles G77/G76/G75/G74 drive the programmed point, as the control does.)",
-    )
-    g.add_argument(
-        "--retract",
-        type=_not_negative,
-        metavar="E",
-        help="peck retract e per side after each infeed of Allen-Bradley G77/G76 (AMP parameter) and Haas "
-        "G75/G74 (setting 22); also Fanuc G75/G74 when the program has no 'G75 R(e)' block "
-        "(parameter 5139). Default 0.5 mm / 0.02 in.",
-    )
-    g.add_argument(
-        "--diameter-input",
-        action="store_true",
-        help="CYCLE93: read AXFA, DEPG, FAL1 and FAL2 as diameters (840D with DIAMON). Default: radius values, "
-        "as the seed manual says.",
-    )
-    g.add_argument(
-        "--g07-radius",
-        action="store_true",
-        help="Allen-Bradley: G07 selects RADIUS mode and G08 diameter mode. Default: G07 = diameter, G08 = radius "
-        "(the 9/Series manual uses both readings; check your control).",
-    )
-    g.add_argument(
-        "--clearance",
-        type=_not_negative,
-        metavar="C",
-        help="clearance per side kept above the material before a plunge, for cycles without a retract "
-        "parameter (default 1).",
-    )
-    g.add_argument(
-        "--max-contour-tilt",
-        type=_finite,
-        metavar="DEG",
-        help="CYCLE93: steepest contour (degrees from the groove's own axis) the paraxial roughing accepts "
-        "(default 45).",
-    )
-
-
-def _add_tool_table_option(parser):
-    parser.add_argument(
-        "--tool-table",
-        metavar="FILE",
-        help="the blade of each tool number, one tool a line: T width corner-radius reference (minus/plus), "
-        "e.g. '5 3.0 0.2 minus'; '#' starts a comment; lengths in the program's units when the cycle runs; "
-        "- reads standard input. "
-        "A CYCLE93 cuts with the blade of the tool in force (Siemens T5 D1, Fanuc-style T0512: tool 5); a tool "
-        "the table does not list, or a cycle before any T, is refused unless --tool-width gives a default blade.",
-    )
-
-
-def _settings(args):
-    from .engine.settings import DEFAULT_SETTINGS
-
-    s = DEFAULT_SETTINGS.with_tool(args.tool_width, args.tool_radius, args.reference_corner)
-    changes = {}
-    if args.retract is not None:
-        changes["peck_retract"] = args.retract
-    if args.diameter_input:
-        changes["cycle93_diameter_input"] = True
-    if args.g07_radius:
-        changes["ab_g07_is_diameter"] = False
-    if args.clearance is not None:
-        changes["clearance"] = args.clearance
-    if args.max_contour_tilt is not None:
-        changes["cycle93_max_contour_tilt"] = args.max_contour_tilt
-    return replace(s, **changes) if changes else s
-
-
-def _add_start_options(parser, expand):
-    g = parser.add_argument_group("modes at the start of the program" if expand else "start point and modes")
-    g.add_argument(
-        "--units",
-        choices=("mm", "inch"),
-        default="mm",
-        help="length unit until the program selects one (G20/G21, Siemens G70/G71/G700/G710). Default mm.",
-    )
-    g.add_argument(
-        "--feed-mode",
-        choices=("min", "rev"),
-        default=None,
-        help="feed per minute or per revolution until the program selects one (G94/G95, Fanuc/Haas G98/G99). "
-        "Default: none, and a feed move or cycle before the program selects one is refused."
-        if expand
-        else "feed per minute or per revolution (default rev).",
-    )
-    g.add_argument(
-        "--x-mode",
-        choices=("diameter", "radius"),
-        default="diameter",
-        help="how X words are read until the program says otherwise (Siemens DIAMON/DIAMOF, AB G07/G08). "
-        "Default diameter; use radius for a Fanuc/Haas lathe set to radius programming (Fanuc parameter "
-        "1006#3 off). The output always writes diameters.",
-    )
-
-
-def _start_state(args, feed_default=None):
-    from .engine.moves import MachineState
-
-    mode = args.feed_mode or feed_default
-    return MachineState(
-        diameter_mode=args.x_mode == "diameter",
-        metric=args.units == "mm",
-        feed_per_rev=None if mode is None else mode == "rev",
-    )
-
-
 # ---------------------------------------------------------------- emit: one cycle call
 
 
@@ -266,8 +90,8 @@ def _word_type(entry: CycleEntry, word: CycleWord) -> Callable[[str], str]:
     """How a cycle word is typed on the command line: a Siemens call parameter,
     a counted integer (Fanuc P/Q) or a decimal word."""
     if entry.form == CALL:
-        return _siemens_value
-    return _counted if word.counted else _decimal_word
+        return siemens_value
+    return counted if word.counted else decimal_word
 
 
 def _add_cycle_words(parser: argparse.ArgumentParser, entry: CycleEntry) -> None:
@@ -278,7 +102,7 @@ def _add_cycle_words(parser: argparse.ArgumentParser, entry: CycleEntry) -> None
         words.add_argument(*flags, dest="w_" + word.name, type=_word_type(entry, word), metavar="V", help=word.help)
     if entry.retract_block:
         words.add_argument(
-            "-e", "--first-block-r", dest="retract_e", type=_decimal_word, metavar="E",
+            "-e", "--first-block-r", dest="retract_e", type=decimal_word, metavar="E",
             help="peck retract e: writes the first block '%s %s(e)' (parameter 5139 otherwise)"
             % (entry.name, entry.retract_block),
         )
@@ -289,16 +113,16 @@ def _add_expand_options(parser: argparse.ArgumentParser) -> None:
     ex = parser.add_argument_group("expanded output (--expand)")
     ex.add_argument("--expand", action="store_true",
                     help="print a whole program with the expanded moves instead of the native call")
-    ex.add_argument("--start-x", type=_finite, metavar="X",
+    ex.add_argument("--start-x", type=finite, metavar="X",
                     help="start point X as a DIAMETER (the tool position before the call; required with "
                     "--expand)")
-    ex.add_argument("--start-z", type=_finite, metavar="Z", help="start point Z (required with --expand)")
-    ex.add_argument("--feed", type=_positive, metavar="F", help="feed in force before the call")
-    ex.add_argument("--spindle", type=_positive, metavar="RPM",
+    ex.add_argument("--start-z", type=finite, metavar="Z", help="start point Z (required with --expand)")
+    ex.add_argument("--feed", type=positive, metavar="F", help="feed in force before the call")
+    ex.add_argument("--spindle", type=positive, metavar="RPM",
                     help="spindle speed started (M3) before the moves; needed with feed per revolution")
     ex.add_argument("--incremental", action="store_true", help="G91 in force (AB, Siemens)")
     ex.add_argument("--to", choices=TARGETS, default="linuxcnc", help="output control")
-    _add_start_options(parser, expand=False)
+    add_start_options(parser, expand=False)
 
 
 def _add_emit_parsers(sub: argparse._SubParsersAction) -> None:
@@ -327,7 +151,7 @@ def _add_emit_parsers(sub: argparse._SubParsersAction) -> None:
         )
         parser.set_defaults(cycle_name=entry.key)
         _add_cycle_words(parser, entry)
-        _add_settings_options(parser)
+        add_settings_options(parser)
         _add_expand_options(parser)
 
 
@@ -351,7 +175,7 @@ def _emit(args: argparse.Namespace) -> str:
     from .engine.tool_table import BLADE_UNKNOWN
 
     entry = registry.entry(args.cycle_name)
-    settings = _settings(args)
+    settings = settings_from(args)
     text = _native_text(args, entry)
     try:
         model = entry.cycle_class.parse(text)
@@ -362,7 +186,7 @@ def _emit(args: argparse.Namespace) -> str:
             return model.emit() + "\n"
         if args.start_x is None or args.start_z is None:
             raise ProgramError("--expand needs the start point: --start-x (diameter) and --start-z")
-        state = _start_state(args, feed_default="rev")
+        state = start_state(args, feed_default="rev")
         state.x = args.start_x / 2.0
         state.z = args.start_z
         state.feed = args.feed
@@ -434,7 +258,7 @@ def _expand(args):
 
     tools = _tool_table(args)
     name, text = _read_program(args.program)
-    settings = _settings(args)
+    settings = settings_from(args)
     try:
         return translate_program(
             text,
@@ -442,7 +266,7 @@ def _expand(args):
             settings,
             target=args.to,
             source_name=os.path.basename(name) if name != "<stdin>" else "stdin",
-            start=_start_state(args),
+            start=start_state(args),
             tools=tools,
         )
     except ProgramError as exc:
@@ -570,9 +394,9 @@ def build_parser():
         help="write the translated program to OUT (replaced only when the whole run succeeds) instead of "
         "standard output",
     )
-    _add_start_options(ex, expand=True)
-    _add_settings_options(ex)
-    _add_tool_table_option(ex)
+    add_start_options(ex, expand=True)
+    add_settings_options(ex)
+    add_tool_table_option(ex)
     _add_emit_parsers(sub)
     return parser
 
