@@ -8,8 +8,10 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
+from freecad_groove.engine.cycles import pecking
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.moves import DWELL, FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID
+from freecad_groove.engine.numbers import MAX_MOVES
 
 SEED_CALL = "CYCLE93(35, 60, 30, 25, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)"
 SEED_START = MachineState(x=40.0, z=65.0)  # N30 G00 X80 Z65, X as a diameter
@@ -347,3 +349,166 @@ def test_inch_program_defaults_vrt_to_004():
     c = call(axfa=1.0, axsa=0.0, widg=0.25, depg=0.1, idep=0.05)
     moves = c.expand(MachineState(x=1.2, z=0.5, metric=False), Settings(tool=GroovingTool(0.12, 0.01)))
     assert max(m.x for m in moves if m.kind == RAPID and m.x < 1.2) == pytest.approx(1.04)
+
+
+# -- DWT: a dwell at the recess base only ---------------------------------------------
+
+
+def test_dwell_only_where_a_plunge_reaches_the_base():
+    # Flanks at 30 degrees, 3 deep: the opening is 6 + 2 * 3 * tan 30 = 9.464
+    # wide, so the minus corner plunges at z = -13 - k * 6.464 / 4, k = 0..4
+    # (steps of at most 0.95 * (3 - 2 * 0.4) = 2.09). The first and the last
+    # stop on a flank, the three between reach the base at radius 17: only
+    # those dwell ("dwell time at recess base").
+    moves = call(ang1=30, ang2=30, dwt=0.5).expand(MachineState(x=25.0, z=0.0), TOOL)
+    span = 6 + 6 * math.tan(math.radians(30)) - 3
+    plunge_z = [-13 - span * k / 4 for k in range(5)]
+    dwells = [(m.x, m.z, m.p) for m in moves if m.kind == DWELL]
+    assert dwells == pytest.approx([(17.0, z, 0.5) for z in plunge_z[1:4]])
+    for z in (plunge_z[0], plunge_z[4]):  # plunged, down to the flank, no dwell
+        assert any(m.kind == FEED and m.z == pytest.approx(z) and 17.1 < m.x < 20 for m in moves)
+
+
+def test_seed_example_dwells_where_its_plunges_end_on_the_oblique_base():
+    # The roughing base runs FAL1 = 1 above the base: x = 11 + (z - 60) tan 12
+    # at the start point's z = 60. The 3 mm blade's corner (r 0.4) rests on it
+    # where the slope q = tan 12 is tangent to the corner: s = 2.6 + 0.4 q /
+    # sqrt(1 + q^2) from the minus corner, s - 2.6 = 0.0832, 0.4 - sqrt(0.16 -
+    # 0.0832^2) = 0.00875 above the front edge. A plunge ending higher stopped
+    # on a flank or a base chamfer.
+    q = math.tan(math.radians(12))
+    s = 2.6 + 0.4 * q / math.hypot(1, q)
+    lift = 0.4 - math.sqrt(0.16 - (s - 2.6) ** 2)
+
+    def base(z):
+        return 11 + (z + s - 60) * q - lift
+
+    moves = Cycle93.parse(SEED_CALL).expand(SEED_START, TOOL)
+    first_pass = next(i for i in range(1, len(moves)) if moves[i].kind == FEED and moves[i].z != moves[i - 1].z)
+    roughing = moves[:first_pass]
+    bottoms = {}
+    for m in roughing:
+        if m.kind == FEED:
+            bottoms[m.z] = min(m.x, bottoms.get(m.z, m.x))
+    dwell_z = [m.z for m in roughing if m.kind == DWELL]
+    on_base = [z for z, x in bottoms.items() if x <= base(z) + 1e-6]
+    assert dwell_z == on_base
+    assert all(m.x == pytest.approx(base(m.z), abs=1e-9) for m in roughing if m.kind == DWELL)
+    assert 0 < len(on_base) < len(bottoms)  # plunges on the flanks and chamfers do not dwell
+
+
+# -- the size of an expansion, counted before anything is expanded --------------------------
+
+
+def test_one_move_limit_for_every_cycle():
+    assert MAX_MOVES == 1_000_000
+    assert pecking.MAX_MOVES is MAX_MOVES
+
+
+@pytest.mark.parametrize(
+    "kw, param, start",
+    [
+        # 6 wide with a 3 mm blade: 3 plunges, (6 - 3) / 2.09 = 1.4 steps apart;
+        # 3 deep in infeeds of 0.000001: 3000000 infeeds.
+        (dict(idep=0.000001), "IDEP", "IDEP=0.000001: gives 3 plunges (steps of at most 2.09 across) of up to 3000000 "
+                                      "infeeds"),
+        # 999999 deep in infeeds of 1: DEPG is the one far from the blade's size.
+        (dict(depg=999999, idep=1), "DEPG", "DEPG=999999: gives 3 plunges (steps of at most 2.09 across) of up to "
+                                            "999999 infeeds"),
+        # (999999 - 3) / 2.09 = 478466.98 steps: 478468 plunges of 3 infeeds.
+        (dict(widg=999999), "WIDG", "WIDG=999999: gives 478468 plunges (steps of at most 2.09 across) of up to 3 "
+                                    "infeeds"),
+        # An 80 degree flank 99999 deep opens the groove 567k wide: DEPG.
+        (dict(depg=99999, ang1=80, idep=99999), "DEPG", "DEPG=99999: gives "),
+    ],
+)
+def test_an_expansion_beyond_the_move_limit_is_refused_naming_the_parameter(kw, param, start):
+    with pytest.raises(CycleError) as e:
+        call(**kw).validate(TOOL)
+    assert e.value.parameter == param
+    assert str(e.value).startswith("CYCLE93 " + start)
+    assert str(e.value).endswith("more than the 1000000 moves an expansion may hold")
+
+
+def test_the_calls_of_issue_9_are_refused():
+    seed = "CYCLE93(35, 60, 30, %s, 12, 15, 16, 0, 0, -2, -2, 1, 1, %s, 1, 5, 0)"
+    with pytest.raises(CycleError) as e:
+        Cycle93.parse(seed % ("12345678", "10")).validate(TOOL)
+    assert str(e.value) == ("CYCLE93 DEPG=12345678: must be less than 1000000 in magnitude, like every coordinate "
+                            "written")
+    for idep in ("0.000000001", "0.000001"):
+        with pytest.raises(CycleError) as e:
+            Cycle93.parse(seed % ("25", idep)).expand(SEED_START, TOOL)
+        assert e.value.parameter == "IDEP" and "moves an expansion may hold" in str(e.value)
+
+
+@pytest.mark.parametrize(
+    "kw, tool, param, words",
+    [
+        (dict(depg=1e300), TOOL, "DEPG", "DEPG=1e+300: must be less than 1000000 in magnitude"),
+        (dict(widg=1e300), TOOL, "WIDG", "WIDG=1e+300: must be less than 1000000 in magnitude"),
+        (dict(widg=1e300, depg=1e300), TOOL, "WIDG", "less than 1000000 in magnitude"),
+        (dict(rco1=1e300), TOOL, "RCO1", "less than 1000000 in magnitude"),
+        (dict(vrt=1e300), TOOL, "VRT", "less than 1000000 in magnitude"),
+        (dict(axfa=-1e300), TOOL, "AXFA", "AXFA=-1e+300: must be less than 1000000 in magnitude"),
+        (dict(depg=999999, widg=999999, idep=0.000001), TOOL, "IDEP", "moves an expansion may hold"),
+        (dict(idep=1e-300), TOOL, "IDEP", "of up to 3e+300 infeeds"),
+        # A blade 1e-300 wide: 6 / (0.95 * 1e-300) plunges.
+        (dict(), Settings(tool=GroovingTool(1e-300)), "WIDG", "WIDG=6: gives 6.32e+300 plunges"),
+    ],
+)
+def test_huge_values_give_a_clean_error_at_once(kw, tool, param, words):
+    with pytest.raises(CycleError) as e:
+        call(**kw).validate(tool)
+    assert e.value.parameter == param
+    assert words in str(e.value)
+
+
+def test_a_wide_base_radius_of_a_large_groove_is_traced():
+    # The arc of a 12345 radius ends a rounding error (~1e-12) behind the
+    # flank it meets; the profile must not be taken as folding back.
+    c = Cycle93.parse("CYCLE93(60000, 0, 20000, 20000, 0, 0, 0, 12345, 0, 0, 0, 0, 0, 20000, 0, 5, 0)")
+    settings = Settings(tool=GroovingTool(4.0))
+    moves = c.expand(MachineState(x=60010.0, z=10.0), settings)
+    assert min(m.x for m in moves) == pytest.approx(40000.0)
+    assert len(moves) <= c.geometry(settings).size.moves
+
+
+# -- messages and numbers: the values as programmed -----------------------------------
+
+
+@pytest.mark.parametrize(
+    "kw, message",
+    [
+        (dict(widg=-1.0), "CYCLE93 WIDG=-1: must be entered without sign"),
+        (dict(widg=-0.0000001), "CYCLE93 WIDG=-0.0000001: must be entered without sign"),
+        (dict(widg=2.9999999), "CYCLE93 WIDG=2.9999999: groove is narrower than the tool width 3 (alarm 61602)"),
+        (dict(depg=-0.00000012), "CYCLE93 DEPG=-0.00000012: must be greater than 0 (enter without sign)"),
+    ],
+)
+def test_messages_quote_the_value_as_programmed(kw, message):
+    with pytest.raises(CycleError) as e:
+        call(**kw).validate(TOOL)
+    assert str(e.value) == message
+
+
+def test_emit_writes_every_value_exactly_without_an_exponent():
+    c = call(axfa=0.1 + 0.2, axsa=-10.123456789, widg=6.0000001, fal1=1e-7, dwt=0.0, vrt=-0.0)
+    assert c.emit() == ("CYCLE93(0.30000000000000004, -10.123456789, 6.0000001, 3, 0, 0, 0, 0, 0, 0, 0, "
+                        "0.0000001, 0, 1, 0, 5, 0)")
+    assert Cycle93.parse(c.emit()) == c
+
+
+@given(
+    values=st.lists(st.floats(allow_nan=False, allow_infinity=False), min_size=16, max_size=16),
+    many=st.lists(st.decimals(-1000, 1000, places=12).map(float), min_size=16, max_size=16),
+    typ=st.integers(1, 18),
+)
+def test_parse_emit_round_trip_keeps_every_decimal(values, many, typ):
+    names = ["axfa", "axsa", "widg", "depg", "angc", "ang1", "ang2", "rco1", "rco2", "rci1", "rci2",
+             "fal1", "fal2", "idep", "dwt", "vrt"]
+    for row in (values, many):
+        c = Cycle93(**dict(zip(names, row)), typ=typ)
+        text = c.emit()
+        assert "e" not in text.lower().replace("cycle", "")  # Siemens writes exponents as EX: none at all
+        assert Cycle93.parse(text) == c

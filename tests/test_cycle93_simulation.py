@@ -133,6 +133,24 @@ def test_generated_grooves_are_cut_without_gouge_leftover_or_rapid_into_stock(ca
     sim.assert_clean(verdict, allow_infeasible=True)
 
 
+@settings(suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow])
+@given(grooves())
+def test_the_counted_size_bounds_every_expansion(case):
+    # The move limit is checked on counts made before expanding: they must
+    # never fall short of the moves the expansion really writes.
+    call, tool = case
+    settings_ = Settings(tool=tool)
+    try:
+        geo = call.geometry(settings_)
+    except CycleError:
+        assume(False)
+    lo, hi = geo.opening(geo.final_top)
+    u = lo - tool.width - 4.0
+    start = geo.frame.blade(u, max(geo.contour_top(u), geo.contour_top(hi)) + 3.0)
+    moves = call.expand(MachineState(x=start[0], z=start[1]), settings_)
+    assert len(moves) <= geo.size.moves
+
+
 def test_plain_grooves_are_cut_completely():
     # Paraxial flanks on a straight contour: everything but the blade's own
     # corner radius at the base is reachable, and nothing may be excused.

@@ -1,13 +1,14 @@
 """The error types of the engine.
 
 A machinist must be able to act on the message alone, so a CycleError always
-names the cycle, the parameter, the value that was given and the rule it
-broke, plus the control's own alarm number where the manual has one.
+names the cycle, the parameter, the value that was given (exactly, never
+rounded into another value) and the rule it broke, plus the control's own
+alarm number where the manual has one.
 """
 
 from typing import Optional
 
-from .numbers import format_value
+from .numbers import format_given
 
 
 class CycleError(ValueError):
@@ -40,7 +41,7 @@ class CycleError(ValueError):
         if self.value is None:
             text = "%s%s: %s" % (head, self.parameter, self.rule)
         else:
-            text = "%s%s=%s: %s" % (head, self.parameter, format_value(self.value), self.rule)
+            text = "%s%s=%s: %s" % (head, self.parameter, format_given(self.value), self.rule)
         if self.alarm is not None:
             text += " (alarm %s)" % self.alarm
         return text

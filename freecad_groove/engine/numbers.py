@@ -2,8 +2,13 @@
 
 One formatter for every decimal the project writes (cycle words, output
 coordinates, messages), so a value is never written two ways. The limits are
-the ones each target or control puts on a written word.
+the ones each target or control puts on a written word, and the size of an
+expansion.
 """
+
+import math
+from decimal import Decimal
+from typing import Union
 
 MM_PER_INCH = 25.4
 
@@ -13,6 +18,11 @@ MAX_WORD = 1.0e6
 
 # Longest dwell any output writes (Fanuc: P holds at most 8 digits of ms).
 MAX_DWELL_SECONDS = 99999.0
+
+# Most moves one cycle call may expand into: every cycle counts its moves from
+# its parameters before expanding and refuses a call beyond this, naming the
+# parameter (a typo such as an infeed of 0.000001 must not hang FreeCAD).
+MAX_MOVES = 1_000_000
 
 # Arcs: an I/K arc's start and end radius may differ by this (mm per side;
 # LinuxCNC refuses between 0.02 and 0.05), half the chord of an R arc may
@@ -62,8 +72,37 @@ def format_decimal(value: float, digits: int, point: bool = True) -> str:
 
 
 def format_value(value: object) -> str:
-    """A parameter value the way a G-code programmer reads it back (messages,
-    Siemens call parameters): floats with at most 6 decimals, others as str()."""
+    """A value the way a G-code programmer reads it in a message: floats with
+    at most 6 decimals, others as str()."""
     if isinstance(value, float):
         return format_decimal(value, 6, point=False)
     return str(value)
+
+
+def format_exact(value: Union[int, float]) -> str:
+    """The shortest decimal that reads back as exactly ``value`` (the digits of
+    Python's repr), written without an exponent and without a trailing point:
+    35.0 -> ``35``, 0.1 -> ``0.1``, 1e-07 -> ``0.0000001``, -0.0 -> ``0``;
+    integers, ``nan`` and ``inf`` as Python writes them."""
+    if isinstance(value, int):
+        return str(value)
+    if not math.isfinite(value):
+        return repr(float(value))
+    text = format(Decimal(repr(float(value))), "f")
+    if "." in text:
+        text = text.rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+# A given value longer than this in format_exact is shown in exponent form.
+GIVEN_DIGITS = 20
+
+
+def format_given(value: object) -> str:
+    """A value as it was given, for a message (``CYCLE93 WIDG=-0.0000001: ...``):
+    floats exactly (format_exact), or as ``1e+300`` when that would take more
+    than GIVEN_DIGITS characters; anything else as format_value writes it."""
+    if isinstance(value, float):
+        text = format_exact(value)
+        return text if len(text) <= GIVEN_DIGITS else repr(value)
+    return format_value(value)

@@ -71,7 +71,8 @@ PROPERTIES = (
     ("App::PropertyLength", "Infeed", "Groove", _tip(
         "Largest infeed of one plunge step before a chip-breaking retract (IDEP); greater than 0."), 1.0),
     ("App::PropertyFloat", "Dwell", "Groove", _tip(
-        "Dwell at the bottom of every roughing plunge, in seconds (DWT); 0 = none."), 0.0),
+        "Dwell where a roughing plunge reaches the groove base (not where it stops on a flank), in seconds "
+        "(DWT); 0 = none."), 0.0),
     ("App::PropertyLength", "Retract", "Groove", _tip(
         "Chip-breaking retract and clearance above the contour (VRT); 0 = 1 mm. Also the clearance "
         "kept outside the model for the op's start points."), 0.0),

@@ -36,8 +36,10 @@ Expansion (the seed's four steps), driving the tool's reference corner:
   (tool width - 2 x corner radius) apart, from the start side*; each to the
   roughing profile (final profile less the allowances) in equal infeeds of at
   most IDEP, each followed by a rapid chip-breaking retract of VRT (0 = 1 mm)
-  and a feed back in; DWT dwell at the bottom; rapid retract to VRT above the
-  contour. Traverses run VRT above the contour, parallel to it.
+  and a feed back in; a DWT dwell at the bottom of the plunges that reach the
+  base (seed: "dwell time at recess base"; not where a plunge stops on a flank
+  or a base corner above the base); rapid retract to VRT above the contour.
+  Traverses run VRT above the contour, parallel to it.
 3. When flanks are angled, base corners rounded or the contour oblique, a
   contour-parallel pass on the roughing profile from each edge toward the
   groove removes the plunges' staircase.
@@ -47,6 +49,14 @@ Expansion (the seed's four steps), driving the tool's reference corner:
 The cycle approaches along the longitudinal axis first for external grooves
 (the facing axis for internal ones), and returns to its start point the
 reverse way*.
+
+Limits*: the length parameters are less than MAX_WORD (1000000) in magnitude,
+like every written coordinate; a call whose expansion could hold more than
+MAX_MOVES (1000000) moves is refused before it is expanded, naming WIDG, DEPG
+or IDEP (``cycle93_size`` counts plunges, infeeds and contour points from the
+parameters). Numbers*: Siemens reads the parameters as REAL (IEEE doubles), so
+emit() writes each one exactly, as the shortest decimal that reads back as the
+same double, without an exponent (Siemens writes exponents as EX).
 """
 
 import math
@@ -55,10 +65,10 @@ from dataclasses import dataclass, fields
 from typing import ClassVar, List, Optional, Tuple
 
 from ..moves import MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, MachineState, Move
-from ..numbers import DIGITS_RULE, format_value, shortened, too_many_digits
+from ..numbers import DIGITS_RULE, format_exact, shortened, too_many_digits
 from ..registry import CALL, register
 from ..settings import DEFAULT_SETTINGS, Settings
-from .cycle93_geometry import (  # noqa: F401 - the constants are part of this module's API
+from .cycle93_constants import (  # noqa: F401 - the constants are part of this module's API
     ALARM_FORM,
     ALARM_TYP,
     ALARM_WIDTH,
@@ -69,9 +79,9 @@ from .cycle93_geometry import (  # noqa: F401 - the constants are part of this m
     PARAMS,
     PATH_TOLERANCE,
     WIDTH_STEP_FACTOR,
-    GrooveGeometry,
     cycle93_error,
 )
+from .cycle93_geometry import GrooveGeometry
 
 
 @register
@@ -128,11 +138,13 @@ class Cycle93:
 
     # -- text ---------------------------------------------------------------
     def emit(self) -> str:
-        """The call as the control reads it."""
+        """The call as the control reads it: every value exactly (the shortest
+        decimal that reads back as the same double, no exponent), so
+        ``parse(emit(m)) == m``."""
         values = [getattr(self, f.name) for f in fields(self)]
         if values[-1] is None:
             values = values[:-1]
-        return "CYCLE93(%s)" % ", ".join("" if v is None else format_value(v) for v in values)
+        return "CYCLE93(%s)" % ", ".join("" if v is None else format_exact(v) for v in values)
 
     @classmethod
     def parse(cls, text: str) -> "Cycle93":

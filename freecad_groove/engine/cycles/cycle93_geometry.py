@@ -11,36 +11,30 @@ import math
 from typing import TYPE_CHECKING, List, Optional, Tuple
 
 from ..envelope import Envelope, arc_points
-from ..errors import CycleError
 from ..moves import REFERENCE_PLUS, Move, dwell, feed, rapid
-from ..numbers import format_value
+from ..numbers import MAX_WORD, format_given, format_value
 from ..settings import Settings
+from .cycle93_constants import (
+    ALARM_FORM,
+    ALARM_WIDTH,
+    BASE_TOLERANCE,
+    DEFAULT_VRT_INCH,
+    DEFAULT_VRT_MM,
+    EPS,
+    LENGTH_PARAMS,
+    MAX_FLANK_ANGLE,
+    NAME,
+    PATH_TOLERANCE,
+    cycle93_error,
+)
+from .cycle93_size import ExpansionSize, plunge_count
 
 if TYPE_CHECKING:  # the model imports this module
     from .cycle93 import Cycle93
 
 Point = Tuple[float, float]
 
-NAME = "CYCLE93"
-PARAMS = (
-    "AXFA", "AXSA", "WIDG", "DEPG", "ANGC", "ANG1", "ANG2", "RCO1", "RCO2",
-    "RCI1", "RCI2", "FAL1", "FAL2", "IDEP", "DWT", "TYP", "VRT", "DN",
-)
-ALARM_TYP = 61002
-ALARM_WIDTH = 61602
-ALARM_FORM = 61603
-MAX_FLANK_ANGLE = 89.999
-WIDTH_STEP_FACTOR = 0.95  # seed: at most 95 % of (tool width - edge radii)
-DEFAULT_VRT_MM = 1.0  # seed: VRT = 0 means 1 mm
-DEFAULT_VRT_INCH = 0.04
-PATH_TOLERANCE = 0.0002  # chord error allowed on contour passes and arcs
-EPS = 1e-9
-
-
-def cycle93_error(param: str, value: object, rule: str, alarm: Optional[int] = None) -> CycleError:
-    """A CycleError of CYCLE93."""
-    return CycleError(param, value, rule, alarm=alarm, cycle=NAME)
-
+FOLD_TOLERANCE = 1e-9  # a profile stepping back further than this folds over itself
 
 
 class Frame:
@@ -94,6 +88,16 @@ def _intersect(p, d, q, e):
         return None
     t = ((q[0] - p[0]) * e[1] - (q[1] - p[1]) * e[0]) / den
     return p[0] + t * d[0], p[1] + t * d[1]
+
+
+def _without_float_folds(pts):
+    """The points with u never stepping back by rounding: an arc's end computed
+    from a large radius may lie FOLD_TOLERANCE behind the next point."""
+    out = [pts[0]]
+    for u, v in pts[1:]:
+        back = out[-1][0]
+        out.append((back, v) if back - FOLD_TOLERANCE <= u < back else (u, v))
+    return out
 
 
 class _Corner:
@@ -178,6 +182,10 @@ class GrooveGeometry:
         if call.idep is None:
             raise cycle93_error("IDEP", None, "must be programmed in all cases")
         p["IDEP"] = float(call.idep)
+        for name in LENGTH_PARAMS:
+            if not abs(p[name]) < MAX_WORD:
+                raise cycle93_error(name, getattr(call, name.lower()),
+                                    "must be less than %d in magnitude, like every coordinate written" % MAX_WORD)
         longitudinal = call.kind()[0]
         if settings.cycle93_diameter_input:
             p["AXFA"] /= 2
@@ -186,13 +194,21 @@ class GrooveGeometry:
                 p["FAL1"] /= 2
             else:
                 p["FAL2"] /= 2
+        GrooveGeometry._check_parameters(call, settings, p)
+        if p["VRT"] == 0:
+            p["VRT"] = DEFAULT_VRT_MM if metric else DEFAULT_VRT_INCH
+        return p
+
+    @staticmethod
+    def _check_parameters(call, settings, p):
+        """The seed's rules on single parameters (p: read, in radius values)."""
         if p["WIDG"] < 0:
             raise cycle93_error("WIDG", call.widg, "must be entered without sign")
         if p["WIDG"] < settings.tool.width - EPS:
             raise cycle93_error(
                 "WIDG",
                 call.widg,
-                "groove is narrower than the tool width %s" % format_value(settings.tool.width),
+                "groove is narrower than the tool width %s" % format_given(settings.tool.width),
                 ALARM_WIDTH,
             )
         if p["DEPG"] <= 0:
@@ -215,17 +231,14 @@ class GrooveGeometry:
             raise cycle93_error(
                 "FAL1",
                 call.fal1,
-                "base allowance must be less than the groove depth DEPG %s" % format_value(call.depg),
+                "base allowance must be less than the groove depth DEPG %s" % format_given(call.depg),
             )
         if 2 * p["FAL2"] >= p["WIDG"]:
             raise cycle93_error(
                 "FAL2",
                 call.fal2,
-                "two flank allowances must be less than the groove width WIDG %s" % format_value(call.widg),
+                "two flank allowances must be less than the groove width WIDG %s" % format_given(call.widg),
             )
-        if p["VRT"] == 0:
-            p["VRT"] = DEFAULT_VRT_MM if metric else DEFAULT_VRT_INCH
-        return p
 
     def _contour_slope(self, angc, su, sv):
         a = math.radians(angc)
@@ -292,11 +305,14 @@ class GrooveGeometry:
         self._check_form(final, (p1, b1, b2, p2), p)
         self.final_corners = final
         self.rough_corners = self._rough_corners(p, final, (p1, b1, b2, p2), (t1, t2))
+        # Counted before a single arc is traced: a call beyond MAX_MOVES stops here.
+        self.size = ExpansionSize(self)
+        self.size.check()
         self.final_top = self._material_top(final)
         self.rough_top = self._material_top(self.rough_corners)
         tool = self.tool
         for top in (self.final_top, self.rough_top):
-            if any(b[0] < a[0] - 1e-9 for a, b in zip(top, top[1:])):
+            if any(b[0] < a[0] - FOLD_TOLERANCE for a, b in zip(top, top[1:])):
                 raise cycle93_error("call", None, "groove form wrong: the profile folds back on itself", ALARM_FORM)
         self.final_env = Envelope(self.final_top, tool.width, tool.corner_radius, self._element_ends(final))
         self.rough_env = Envelope(self.rough_top, tool.width, tool.corner_radius,
@@ -381,7 +397,7 @@ class GrooveGeometry:
         m = self.slope
         reach = self.tool.width + self.params["VRT"] + 1.0
         lo, hi = pts[0][0] - reach, pts[-1][0] + reach
-        return [(lo, m * lo)] + pts + [(hi, m * hi)]
+        return [(lo, m * lo)] + _without_float_folds(pts) + [(hi, m * hi)]
 
     # -- derived quantities -------------------------------------------------
     def opening(self, top: List[Point]) -> Point:
@@ -421,11 +437,11 @@ class GrooveGeometry:
         """u of the roughing plunges, from the start side, equally spaced."""
         lo, hi = self.opening(self.rough_top)
         tool = self.tool
+        count = int(plunge_count(lo, hi, tool.width, tool.corner_radius))
         hi -= tool.width
-        step = WIDTH_STEP_FACTOR * (tool.width - 2 * tool.corner_radius)
-        if hi <= lo + EPS:
+        if count == 1:
             return [0.5 * (lo + hi)]
-        n = int(math.ceil((hi - lo) / step - 1e-9))
+        n = count - 1
         return [lo + (hi - lo) * k / n for k in range(n + 1)]
 
     # -- moves --------------------------------------------------------------
@@ -459,11 +475,13 @@ class GrooveGeometry:
         return out
 
     def _plunges(self, positions, go, out):
-        """Steps 1 and 2: plunges in equal infeeds with chip-breaking retracts;
-        returns the u of the plunges that reached the deepest bottom."""
+        """Steps 1 and 2: plunges in equal infeeds with chip-breaking retracts,
+        DWT at the bottom of those that reach the base; returns the u of the
+        plunges that reached the deepest bottom."""
         p = self.params
         vrt, idep, dwt = p["VRT"], p["IDEP"], p["DWT"]
         bottoms = [self.rough_env.lowest(u) for u in positions]
+        base = self._base_envelope()
         deepest = min(bottoms)
         full_depth = []
         for u, bottom in zip(positions, bottoms):
@@ -480,13 +498,22 @@ class GrooveGeometry:
                 go("f", u, level)
                 if k < n:
                     go("r", u, level + vrt)
-            if dwt > 0:
+            if dwt > 0 and bottom <= base.lowest(u) + BASE_TOLERANCE:
                 x, z = self.frame.blade(u, bottom)
                 out.append(dwell(x, z, dwt))
             go("r", u, clear)
             if bottom <= deepest + 1e-6:
                 full_depth.append(u)
         return full_depth
+
+    def _base_envelope(self) -> Envelope:
+        """Where the blade stands on the roughing profile's base line alone
+        (extended past both flanks): a plunge whose bottom is there reached
+        the base, not a flank or a base corner above it."""
+        (u1, v1), (u2, v2) = self.rough_corners[1].vertex, self.rough_corners[2].vertex
+        lo, hi = self.rough_top[0][0], self.rough_top[-1][0]
+        line = [(lo, v1 + (lo - u1) * self.slope), (hi, v2 + (hi - u2) * self.slope)]
+        return Envelope(line, self.tool.width, self.tool.corner_radius)
 
     def _profile_passes(self, full_depth, go):
         """Step 3: take the plunges' staircase off flanks, base corners and an

@@ -38,13 +38,12 @@ from typing import ClassVar, Dict, List, Optional, Sequence, Tuple
 
 from ..errors import CycleError
 from ..moves import FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID, MachineState, Move
-from ..numbers import DIGITS_RULE, format_decimal, shortened, too_many_digits
+from ..numbers import DIGITS_RULE, MAX_MOVES, format_decimal, shortened, too_many_digits
 from ..settings import DEFAULT_SETTINGS, Settings
 
 DECIMALS = 4
 MAX_WORD = 100000.0
 MAX_COUNT = 99999999  # Fanuc P/Q: 8 digits
-MAX_MOVES = 1_000_000
 TOLERANCE = 1e-7  # far below the 0.0001 word resolution, far above float noise
 
 # ---------------------------------------------------------------- numbers, words

@@ -1,0 +1,33 @@
+"""The names, alarm numbers, limits and tolerances of CYCLE93, and its error;
+shared by the model (``cycle93``), the geometry (``cycle93_geometry``) and the
+size check (``cycle93_size``)."""
+
+from typing import Optional
+
+from ..errors import CycleError
+
+NAME = "CYCLE93"
+PARAMS = (
+    "AXFA", "AXSA", "WIDG", "DEPG", "ANGC", "ANG1", "ANG2", "RCO1", "RCO2",
+    "RCI1", "RCI2", "FAL1", "FAL2", "IDEP", "DWT", "TYP", "VRT", "DN",
+)
+ALARM_TYP = 61002
+ALARM_WIDTH = 61602
+ALARM_FORM = 61603
+MAX_FLANK_ANGLE = 89.999
+WIDTH_STEP_FACTOR = 0.95  # seed: at most 95 % of (tool width - edge radii)
+DEFAULT_VRT_MM = 1.0  # seed: VRT = 0 means 1 mm
+DEFAULT_VRT_INCH = 0.04
+PATH_TOLERANCE = 0.0002  # chord error allowed on contour passes and arcs
+EPS = 1e-9
+# A plunge that ends this close to the roughing profile's base line is on the
+# base: DWT dwells there only ("dwell time at recess base").
+BASE_TOLERANCE = 1e-6
+# The length parameters: like every written coordinate, less than MAX_WORD in
+# magnitude (beyond that, doubles no longer hold PATH_TOLERANCE).
+LENGTH_PARAMS = ("AXFA", "AXSA", "WIDG", "DEPG", "RCO1", "RCO2", "RCI1", "RCI2", "FAL1", "FAL2", "IDEP", "VRT")
+
+
+def cycle93_error(param: str, value: object, rule: str, alarm: Optional[int] = None) -> CycleError:
+    """A CycleError of CYCLE93."""
+    return CycleError(param, value, rule, alarm=alarm, cycle=NAME)

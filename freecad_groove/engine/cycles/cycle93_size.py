@@ -1,0 +1,113 @@
+"""How many moves a CYCLE93 groove expands into, counted from its corners
+before anything is expanded, and the refusal of a call beyond ``MAX_MOVES``.
+
+What grows with the parameters:
+- the plunges across the opening: its width over the width step, 95 % of
+  (tool width - 2 x corner radius) (WIDG, or DEPG through angled flanks);
+- the infeeds of each plunge: its depth over IDEP (DEPG or IDEP);
+- the points of the contour passes: the chords of the profile's radii (RCO,
+  RCI) and of the blade's corner radius, PATH_TOLERANCE from the true arcs.
+
+Each count is arithmetic on the groove's corners (upper bounds, as floats, so
+that even an infinite count compares): nothing loops over a count, and the
+check takes as long for IDEP 1e-300 as for IDEP 1.
+"""
+
+import math
+from typing import TYPE_CHECKING
+
+from ..numbers import MAX_MOVES
+from .cycle93_constants import EPS, PATH_TOLERANCE, WIDTH_STEP_FACTOR, cycle93_error
+
+if TYPE_CHECKING:  # the geometry imports this module
+    from .cycle93_geometry import GrooveGeometry
+
+# Moves besides the plunges and the contour passes: the approach (at most 3)
+# and the retreat (at most 3) with a margin.
+FRAME_MOVES = 8
+# Points a trace adds at element ends, wall steps and tangent points of one
+# profile (four corners give at most ten element ends, each seen from four
+# places on the blade), with a margin.
+TRACE_BREAKPOINTS = 100
+# The trace halves an interval until its chord is within the tolerance, so it
+# writes up to twice the chords an arc needs.
+TRACE_REFINEMENT = 2
+
+
+def arc_chords(radius: float, turn: float, tol: float = PATH_TOLERANCE) -> float:
+    """Chords ``envelope.arc_points`` takes for ``turn`` radians of a
+    ``radius`` arc (0 without an arc); infinite when the step underflows."""
+    if radius <= 0 or turn <= 0:
+        return 0.0
+    step = 2 * math.acos(max(1 - tol / radius, -1.0))
+    return math.ceil(turn / step) if step > 0 else math.inf
+
+
+def plunge_count(lo: float, hi: float, width: float, radius: float) -> float:
+    """Plunges ``GrooveGeometry.plunge_positions`` makes over the opening lo..hi."""
+    span = hi - width - lo
+    if not span > EPS:
+        return 1.0
+    step = WIDTH_STEP_FACTOR * (width - 2 * radius)
+    steps = span / step - 1e-9 if step > 0 else math.inf
+    return math.ceil(steps) + 1.0 if math.isfinite(steps) else steps
+
+
+def infeed_count(depth: float, idep: float) -> float:
+    """Infeeds of a plunge ``depth`` deep in steps of at most ``idep``."""
+    steps = depth / idep - 1e-9
+    return max(1.0, math.ceil(steps) if math.isfinite(steps) else steps)
+
+
+def _count_text(count: float, what: str) -> str:
+    """``3 plunges``, ``1 infeed``, ``6.32e+300 plunges``."""
+    number = "%d" % count if count < 1e15 else "%.3g" % count
+    return "%s %s" % (number, what if count == 1 else what + "s")
+
+
+class ExpansionSize:
+    """The counts of one groove, from its corners (GrooveGeometry before its
+    profiles are traced); each an upper bound."""
+
+    def __init__(self, geo: "GrooveGeometry") -> None:
+        tool, p = geo.tool, geo.params
+        self.geo = geo
+        rough = geo.rough_corners
+        lo, hi = rough[0].vertex[0], rough[-1].vertex[0]
+        self.plunges = plunge_count(lo, hi, tool.width, tool.corner_radius)
+        top = max(geo.contour_top(lo), geo.contour_top(hi - tool.width))
+        bottom = min(c.vertex[1] for c in rough)
+        self.infeeds = infeed_count(top - bottom, p["IDEP"])
+        # Over, the infeeds, the chip-breaking retracts, the dwell, out.
+        self.plunge_moves = self.plunges * (2 * self.infeeds + 2)
+        # The blade's corner rolls at most once over every turn of the profile.
+        turn = sum(c.turn for c in geo.final_corners)
+        blade = arc_chords(tool.corner_radius, turn)
+        self.contour_moves = sum(
+            TRACE_REFINEMENT * (sum(arc_chords(c.value, c.turn) + 2 for c in corners) + blade) + TRACE_BREAKPOINTS
+            for corners in (rough, geo.final_corners)
+        )
+        self.moves = FRAME_MOVES + self.plunge_moves + self.contour_moves
+
+    def check(self) -> None:
+        """Raise CycleError naming the parameter to blame when the expansion
+        could hold more than MAX_MOVES moves."""
+        if self.moves <= MAX_MOVES:
+            return
+        geo, tool, p = self.geo, self.geo.tool, self.geo.params
+        if self.infeeds > self.plunges:
+            # DEPG or IDEP: the one further from the tool width in orders of
+            # magnitude (DEPG / width > width / IDEP).
+            name = "DEPG" if p["DEPG"] * p["IDEP"] > tool.width ** 2 else "IDEP"
+        else:
+            # Across: WIDG, unless angled flanks widen the opening more.
+            opening = geo.rough_corners[-1].vertex[0] - geo.rough_corners[0].vertex[0]
+            name = "WIDG" if p["WIDG"] >= opening - p["WIDG"] else "DEPG"
+        step = WIDTH_STEP_FACTOR * (tool.width - 2 * tool.corner_radius)
+        raise cycle93_error(
+            name, getattr(geo.call, name.lower()),
+            "gives %s (steps of at most %s across) of up to %s, and up to %s of contour passes: more than the %d "
+            "moves an expansion may hold"
+            % (_count_text(self.plunges, "plunge"), "%g" % step, _count_text(self.infeeds, "infeed"),
+               _count_text(self.contour_moves, "move"), MAX_MOVES),
+        )
