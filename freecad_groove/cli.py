@@ -16,6 +16,12 @@ option values are reported by argparse (usage and message on stderr, status 2).
 A broken pipe on stdout ends quietly with status 1. SIGINT, SIGTERM and SIGHUP
 print ``PROGRAM:0: interrupted`` and exit with 128 + the signal's number, the
 temporary file of OUT removed.
+
+Warnings: what a cycle cannot do as programmed but does anyway (the engine's
+CycleWarning) prints one line each on stderr, ``PROGRAM:LINE: warning: CYCLE93:
+...`` (``emit CYCLE:1: warning: ...`` for emit --expand), after the output is
+written; the status stays 0 and stdout and OUT are the same as without them.
+A run that fails prints its error alone.
 """
 
 import argparse
@@ -24,7 +30,7 @@ import re
 import signal
 import sys
 import threading
-from typing import Callable
+from typing import Callable, List, Tuple
 
 from . import __version__
 from .cli_options import (
@@ -44,6 +50,7 @@ from .engine.input_controls import DIALECTS, INPUT_CONTROLS
 from .engine.output import write_atomically
 from .engine.registry import CALL, CycleEntry, CycleWord
 from .engine.targets import TARGETS
+from .engine.warnings import CycleWarning, cycle_warnings
 
 EXIT_ERROR = 2
 
@@ -169,7 +176,9 @@ def _native_text(args: argparse.Namespace, entry: CycleEntry) -> str:
     return text
 
 
-def _emit(args: argparse.Namespace) -> str:
+def _emit(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]) -> str:
+    """The native call, or with --expand the whole program; the cycle's warnings
+    are appended to ``warnings`` (on line 1)."""
     from .engine import targets
     from .engine.errors import CycleError, ProgramError
     from .engine.tool_table import BLADE_UNKNOWN
@@ -192,6 +201,7 @@ def _emit(args: argparse.Namespace) -> str:
         state.feed = args.feed
         state.incremental = args.incremental
         moves = model.expand(state, settings)
+        warnings.extend((1, warning) for warning in cycle_warnings(model, state, settings))
         return targets.write_program(
             moves, args.to, state, title="%s: %s" % (entry.title, " / ".join(text.split("\n"))), spindle=args.spindle
         )
@@ -252,7 +262,7 @@ def _tool_table(args):
         raise _Failure(name, exc.line if exc.line is not None else 0, str(exc)) from None
 
 
-def _expand(args):
+def _expand(args, warnings):
     from .engine.errors import ProgramError
     from .engine.translator import translate_program
 
@@ -268,6 +278,7 @@ def _expand(args):
             source_name=os.path.basename(name) if name != "<stdin>" else "stdin",
             start=start_state(args),
             tools=tools,
+            warnings=warnings,
         )
     except ProgramError as exc:
         raise _Failure(name, exc.line if exc.line is not None else 0, str(exc)) from None
@@ -436,13 +447,16 @@ def _run_name(args):
 
 
 def _run(args, name):
+    warnings: List[Tuple[int, CycleWarning]] = []
     try:
         if args.command == "expand":
-            text = _expand(args)
+            text = _expand(args, warnings)
             _write_output(text, args.output)
         else:
-            text = _emit(args)
+            text = _emit(args, warnings)
             _write_output(text, None)
+        for line, warning in warnings:  # after the output: a failed run reports its error alone
+            _report(name, line, "warning: " + warning.text)
         return 0
     except _Failure as exc:
         _report(exc.name, exc.line, exc.message)

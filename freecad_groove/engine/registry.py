@@ -23,7 +23,12 @@ class attributes, and is registered with the ``@register`` decorator:
                it False.
 
 and the methods ``parse(text)``, ``emit()``, ``validate(settings)`` and
-``expand(state, settings)``. The program reader, the command line (``expand``,
+``expand(state, settings)``; optionally ``warnings(state, settings) ->
+List[warnings.CycleWarning]``: what the expansion from the same state cannot
+do as programmed but does anyway (CYCLE93 roughing on the final profile, a
+Fanuc relief into the wall between grooves). A cycle without it has none
+(``warnings.cycle_warnings``); the translator calls it after ``expand()`` and
+keeps the warnings with the line. The program reader, the command line (``expand``,
 ``emit``, ``--help``) and the posts look cycles up here; adding a cycle is one
 new module in ``engine/cycles/`` whose classes carry ``@register``.
 """

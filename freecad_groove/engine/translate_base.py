@@ -7,7 +7,7 @@ The handlers themselves are mixins on :class:`TranslatorBase`: motion
 (translate_cycle.py); translator.py puts them together.
 """
 
-from typing import Dict, List, NamedTuple, NoReturn, Optional, Set
+from typing import Dict, List, NamedTuple, NoReturn, Optional, Set, Tuple
 
 from .errors import ProgramError
 from .input_controls import CYCLE, DIAMETER, DISTANCE, FEED_MODE, UNITS, InputControl, Units
@@ -17,6 +17,7 @@ from .reader import Block, Word
 from .settings import Settings
 from .targets import MAX_LINE, Writer, comment
 from .tool_table import ToolTable
+from .warnings import CycleWarning
 
 __all__ = ["ActiveCode", "TranslatorBase"]
 
@@ -40,6 +41,7 @@ class TranslatorBase:
     state: ModalState
     writer: Writer
     body: List[str]  # the translated blocks
+    warnings: List[Tuple[int, CycleWarning]]  # (line, warning) of the cycles read so far
     fanuc_output: bool  # the target writes Fanuc-style programs (TargetSpec.fanuc_style)
     _line: int  # the line being read
     _prefix: str  # "/" when the line is a block-delete line

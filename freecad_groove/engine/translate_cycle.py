@@ -6,12 +6,13 @@ from typing import List, NamedTuple, Sequence
 
 from .errors import CycleError, ProgramError
 from .input_controls import CYCLE, MODE_GROUPS
-from .moves import Move
+from .moves import MachineState, Move
 from .reader import Block, Word
 from .registry import CycleEntry
 from .settings import Settings
 from .tool_table import blade_for
 from .translate_base import Groups, TranslatorBase
+from .warnings import cycle_warnings
 
 __all__ = ["CycleCall", "CycleTranslation"]
 
@@ -51,8 +52,10 @@ class CycleTranslation(TranslatorBase):
         except CycleError as exc:
             self._fail(exc.message)
         self._check_cycle_start(call.name)
+        start = self.state.machine_state()
         try:
-            moves = model.expand(self.state.machine_state(), settings)
+            moves = model.expand(start, settings)
+            self._collect_warnings(entry, model, start, settings)
         except CycleError as exc:
             self._fail(exc.message)
         label = " / ".join(call.text.split("\n")).replace("(", " ").replace(")", "")
@@ -127,6 +130,17 @@ class CycleTranslation(TranslatorBase):
         except ProgramError as exc:
             self._fail("%s: %s" % (entry.name, exc))
         return replace(self.settings, tool=blade)
+
+    def _collect_warnings(self, entry: CycleEntry, model: object, start: MachineState, settings: Settings) -> None:
+        """The cycle's warnings, on this line. A cycle that needs no blade still
+        gets the tool table's blade of the tool in force where there is one, for
+        its warnings (a Fanuc relief is checked against the blade's width)."""
+        if not entry.needs_blade and self.tools is not None and "tool" not in self.state.ambiguous:
+            try:
+                settings = replace(settings, tool=blade_for(self.state.tool, self.tools, settings.tool))
+            except ProgramError:
+                pass  # no blade: the warnings that need one are not given
+        self.warnings.extend((self._line, warning) for warning in cycle_warnings(model, start, settings))
 
     # -- state before and after ------------------------------------------------------------
 

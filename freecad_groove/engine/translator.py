@@ -2,13 +2,16 @@
 modal state, and translate them with every grooving cycle expanded.
 
     translate_program(text, dialect, settings, target="linuxcnc", source_name="PROGRAM", start=None,
-                      tools=None) -> str
+                      tools=None, warnings=None) -> str
 
 ``dialect`` is the input: "sinumerik" (CYCLE93), "ab9" (G77/G76), "fanuc"
 (two-block G75/G74), "haas" (one-block G75/G74). ``target`` is "linuxcnc" or
 "fanuc" (see targets.py). Anything the reader cannot translate faithfully
 raises errors.ProgramError with the 1-based line number in ``.line``; a cycle's
 CycleError becomes a ProgramError on the cycle's line with the cycle's message.
+What a cycle cannot do as programmed, but runs anyway, is a warning
+(warnings.CycleWarning, from the cycle's ``warnings()``): collected with its
+line in ``Translator.warnings``; it never changes the output.
 
 How the output is made
 ----------------------
@@ -111,7 +114,7 @@ on translate_base.py's helpers.
 """
 
 import re
-from typing import List, Optional
+from typing import List, Optional, Tuple
 
 from .errors import CycleError, ProgramError
 from .input_controls import COMPENSATION, CYCLE, DWELL, OFFSET, PLANE, REFUSED, g_code_key, input_control
@@ -125,6 +128,7 @@ from .translate_base import ActiveCode, Groups
 from .translate_cycle import CycleTranslation
 from .translate_machine import MachineTranslation
 from .translate_motion import MotionTranslation
+from .warnings import CycleWarning
 
 __all__ = ["Translator", "translate_program"]
 
@@ -135,7 +139,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
     """Reads a program block by block and writes the translation.
 
     ``line(text, number)`` reads one line; ``state`` is the ModalState after it;
-    ``result()`` is the translated program text.
+    ``result()`` is the translated program text; ``warnings`` the (line,
+    CycleWarning) of the cycles read so far, in line order.
     """
 
     def __init__(self, dialect: str, settings: Settings = DEFAULT_SETTINGS, target: str = "linuxcnc",
@@ -160,6 +165,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         self.start_feed_per_rev = state.feed_per_rev
         self.writer = Writer(target, state.metric, state.feed_per_rev)
         self.body: List[str] = []
+        self.warnings: List[Tuple[int, CycleWarning]] = []
         self.program_number: Optional[int] = None
         self.started = False  # a block other than %, O, comments was read
         self.last_line = 0
@@ -322,6 +328,7 @@ def translate_program(
     source_name: str = "PROGRAM",
     start: Optional[MachineState] = None,
     tools: Optional[ToolTable] = None,
+    warnings: Optional[List[Tuple[int, CycleWarning]]] = None,
 ) -> str:
     """Translate a ``dialect`` program for ``target`` with every cycle call expanded.
 
@@ -331,9 +338,14 @@ def translate_program(
     of each tool number; a cycle that needs a blade (CYCLE93) cuts with the
     table's entry for the tool in force, else with ``settings.tool``, else it
     is refused. Raises ProgramError (``.line`` set) on the first line that
-    cannot be translated.
+    cannot be translated. ``warnings`` (a list, optional) gets a (line,
+    warnings.CycleWarning) appended for each warning of a cycle, as the lines
+    are read (so also those before a line that raises); they never change the
+    text returned.
     """
     translator = Translator(dialect, settings, target=target, source_name=source_name, start=start, tools=tools)
+    if warnings is not None:
+        translator.warnings = warnings  # appended to as the lines are read
     for number, line in enumerate(_LINES.split(text), 1):
         translator.line(line, number)
     return translator.result()

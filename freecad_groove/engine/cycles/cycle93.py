@@ -68,6 +68,7 @@ from ..moves import MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, MachineState, Move
 from ..numbers import DIGITS_RULE, format_exact, shortened, too_many_digits
 from ..registry import CALL, register
 from ..settings import DEFAULT_SETTINGS, Settings
+from ..warnings import CycleWarning
 from .cycle93_constants import (  # noqa: F401 - the constants are part of this module's API
     ALARM_FORM,
     ALARM_TYP,
@@ -82,6 +83,7 @@ from .cycle93_constants import (  # noqa: F401 - the constants are part of this 
     cycle93_error,
 )
 from .cycle93_geometry import GrooveGeometry
+from .cycle93_warnings import cycle93_warnings
 
 
 @register
@@ -213,3 +215,8 @@ class Cycle93:
         """The moves of the reference corner from ``state`` (x radius, z)."""
         geo = self.geometry(settings, state.metric)
         return geo.expand(state.x, state.z)
+
+    def warnings(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[CycleWarning]:
+        """What the expansion from ``state`` cannot do as programmed: allowances
+        that leave the blade no room (roughing then runs on the final profile)."""
+        return cycle93_warnings(self.geometry(settings, state.metric))

@@ -28,6 +28,7 @@ from .cycle93_constants import (
     cycle93_error,
 )
 from .cycle93_size import ExpansionSize, plunge_count
+from .cycle93_warnings import NoRoom, no_room
 
 if TYPE_CHECKING:  # the model imports this module
     from .cycle93 import Cycle93
@@ -146,6 +147,8 @@ class GrooveGeometry:
         self.call = call
         self.settings = settings
         self.metric = metric
+        self.roughs_to_final = False  # the allowances leave no room: roughing runs on the final profile
+        self.no_room: Optional[NoRoom] = None  # why (only when there are allowances to blame)
         if settings.tool is None:
             raise cycle93_error("tool width", None, "the blade is unknown: give it as Settings.tool")
         if not settings.tool.width > 0:
@@ -344,16 +347,13 @@ class GrooveGeometry:
             _Corner(rb2, contour_dir, d2, p["RCI2"], chr_mode),
             _Corner(r2, d2, contour_dir, 0.0, chr_mode),
         ]
-        rough_base = rb2[0] - rb1[0]
-        fits = (
-            rough_base >= self.tool.width
-            and rough[1].length + rough[2].length < rough_base * math.hypot(1, m)
-            and rough[1].length <= math.dist(r1, rb1)
-            and rough[2].length <= math.dist(r2, rb2)
-        )
         # When the allowances leave no room for the blade, rough to the final
-        # profile (without its edge features) rather than not at all.
-        if not fits:
+        # profile (without its edge features) rather than not at all, and say why.
+        units = "mm" if self.metric else "in"
+        reason = no_room(self.tool.width, m, rough, (r1, rb1, rb2, r2), units)
+        self.no_room = reason if fal1 > 0 or fal2 > 0 else None
+        self.roughs_to_final = reason is not None
+        if reason is not None:
             rough = [_Corner(p1, contour_dir, d1, 0.0, chr_mode)] + final[1:3] + [_Corner(p2, d2, contour_dir, 0.0,
                                                                                          chr_mode)]
         return rough

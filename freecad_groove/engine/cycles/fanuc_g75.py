@@ -31,9 +31,10 @@ D relief along X.
 Choices the manuals leave open (besides those listed in ``ab_g77``):
 
 * The relief is a RAPID move, and it is only made when there is more than one
-  groove (the first plunge never gets it). It is not checked against Q or the
-  tool width: as on the control, a relief larger than the gap already cut
-  (Q > tool width, or dd > Q) runs the blade into the wall at rapid.
+  groove (the first plunge never gets it). As on the control, a relief larger
+  than the gap already cut (Q > tool width, or dd > Q) runs the blade into the
+  wall at rapid: it is moved as programmed, and ``warnings()`` (pecking.py)
+  says so when the blade's width is known (``Settings.tool``; None: no warning).
 * The plunge-axis bottom (X/U for G75, Z/W for G74) is required and must differ
   from the start; P (G75) / Q (G74) then is required and > 0. The shift word is
   required and > 0 only when the last groove is away from the start; Q0 / K0 is

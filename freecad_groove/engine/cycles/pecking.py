@@ -38,8 +38,9 @@ from typing import ClassVar, Dict, List, Optional, Sequence, Tuple
 
 from ..errors import CycleError
 from ..moves import FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID, MachineState, Move
-from ..numbers import DIGITS_RULE, MAX_MOVES, format_decimal, shortened, too_many_digits
+from ..numbers import DIGITS_RULE, MAX_MOVES, format_decimal, format_given, shortened, too_many_digits
 from ..settings import DEFAULT_SETTINGS, Settings
+from ..warnings import CycleWarning
 
 DECIMALS = 4
 MAX_WORD = 100000.0
@@ -134,6 +135,11 @@ def read_block(text: str, cycle: str, letters: Sequence[str], counted: Sequence[
     if not seen_g:
         raise CycleError("G", None, "the block must hold %s" % cycle, cycle=cycle)
     return words
+
+
+def _words(value: float) -> str:
+    """A length in a warning: at most DECIMALS decimals, no trailing zeros."""
+    return format_decimal(value, DECIMALS, point=False)
 
 
 # ---------------------------------------------------------------- the shared pecking loop
@@ -360,9 +366,9 @@ class PeckingCycle:
             return MINUS_X if bottom < start else PLUS_X
         return MINUS_Z if bottom < start else PLUS_Z
 
-    def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
-        """The moves the control makes, from ``state`` (x radius, z)."""
-        self.validate(settings)
+    def _grooves(self, state):
+        """(bottom, start on the plunge axis, groove positions, peck length):
+        the layout expand() cuts, checked (a feed too)."""
         name = self.NAME
         bottom, p0 = self._bottom(state)
         s0 = state.z if self.AXIS == "X" else state.x
@@ -397,6 +403,13 @@ class PeckingCycle:
                 cycle=name,
             )
         positions = [s0] if grooves == 1 else _points(s0, last, pitch, grooves - 1)
+        return bottom, p0, positions, peck
+
+    def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
+        """The moves the control makes, from ``state`` (x radius, z)."""
+        self.validate(settings)
+        bottom, _p0, positions, peck = self._grooves(state)
+        s0, last = positions[0], positions[-1]
         relief = float(getattr(self, self.RELIEF) or 0.0)
         if not self.SHIFT_D:
             relief = relief if last < s0 else -relief  # back toward the grooves already cut
@@ -412,6 +425,38 @@ class PeckingCycle:
             self.F,
             self._returns_to_start(),
         )
+
+    def warnings(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[CycleWarning]:
+        """A Fanuc/Haas relief that rapids the blade's side into material: the
+        relief moves the blade at the bottom back toward the grooves already cut,
+        so it needs that much bottom already cut behind the blade. Grooves further
+        apart than the blade's width leave a wall between them (any relief hits
+        it); overlapping plunges leave their spacing behind the second groove.
+        Needs the blade (``settings.tool``): without one, no warning. None for
+        Allen-Bradley's D, which is signed and meant to move away from the part."""
+        relief = getattr(self, self.RELIEF)
+        if self.SHIFT_D or settings.tool is None or not relief:
+            return []
+        positions = self._grooves(state)[2]
+        steps = [abs(b - a) for a, b in zip(positions, positions[1:])]
+        if not steps:
+            return []
+        width = settings.tool.width
+        units = "mm" if state.metric else "in"
+        given = "%s=%s" % (self.RELIEF, format_given(relief))
+        pitch = "%s=%s" % (self.PITCH, format_given(getattr(self, self.PITCH)))
+        wall = max(steps)
+        if wall > width + TOLERANCE:
+            message = ("the relief %s at the groove bottom rapids the blade's side into the wall between grooves: "
+                       "grooves %s %s apart (%s) leave a %s %s wall beside the %s %s blade"
+                       % (given, _words(wall), units, pitch, _words(wall - width), units, _words(width), units))
+        elif relief > steps[0] + TOLERANCE:
+            message = ("the relief %s at the groove bottom rapids the blade's side past the cut bottom into the "
+                       "wall: grooves %s %s apart (%s) cut only %s %s behind the %s %s blade at the second groove"
+                       % (given, _words(steps[0]), units, pitch, _words(steps[0]), units, _words(width), units))
+        else:
+            return []
+        return [CycleWarning(self.NAME, self.RELIEF, message)]
 
     def _words_text(self):
         parts = [self.NAME]
