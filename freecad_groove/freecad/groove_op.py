@@ -204,6 +204,9 @@ class ObjectGroove(PathOp.ObjectOp):
             raise
         self.commandlist.extend(self.commands(obj, plans))
         self._plans = plans  # the posts reuse it while the op stays up to date
+        for plan in plans:  # what the cycles cannot do as programmed: once per recompute
+            for text in plan.warning_texts:
+                FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, text))
 
     def current_plan(self, obj: object) -> list[GroovePlan]:
         """plan(obj) as the last recompute made it, while nothing has touched

@@ -30,8 +30,10 @@ from typing import Optional
 from ..engine import CycleError, MachineState, Settings
 from ..engine.cycles.cycle93 import Cycle93
 from ..engine.cycles.cycle93_geometry import GrooveGeometry
+from ..engine.cycles.cycle93_warnings import cycle93_warnings
 from ..engine.moves import FEED, RAPID, Move
 from ..engine.numbers import format_value
+from ..engine.warnings import CycleWarning
 from .faces import GrooveFace
 from .groove_properties import GrooveInputError
 from .links import BOTTOM, SIDE, TOP, LinkMove, Point, SafeEnvelope
@@ -55,6 +57,8 @@ class GroovePlan:
               start point (for the first groove: from wherever the tool is) to ``start``
     moves     the engine's expansion of ``cycle`` from ``start``
     geometry  ``cycle.geometry(settings)``: the groove's profile (the preview draws it)
+    warnings  the call's CycleWarnings (what it cannot do as programmed: allowances
+              that leave the blade no room); the op prints them on each recompute
     """
 
     face: GrooveFace
@@ -67,6 +71,12 @@ class GroovePlan:
     link: list[LinkMove] = field(default_factory=list)
     moves: list[Move] = field(default_factory=list)
     geometry: Optional[GrooveGeometry] = None
+    warnings: list[CycleWarning] = field(default_factory=list)
+
+    @property
+    def warning_texts(self) -> list[str]:
+        """Each warning as one line naming the face and the groove."""
+        return ["%s: groove %d: %s" % (self.face.name, self.index + 1, warning.text) for warning in self.warnings]
 
     @property
     def start_point(self) -> Point:
@@ -193,4 +203,5 @@ def plan_groove(face: GrooveFace, index: int, position: float, call: Cycle93, se
         link = envelope.link(None, None, (start.x, start.z), start_on)
     else:
         link = envelope.link(previous.start_point, previous.start_on, (start.x, start.z), start_on)
-    return GroovePlan(face, index, position, call, settings, start, start_on, link, moves, geometry)
+    return GroovePlan(face, index, position, call, settings, start, start_on, link, moves, geometry,
+                      cycle93_warnings(geometry))

@@ -560,3 +560,24 @@ def test_face_errors_point_at_the_base_geometry(doc):
     with pytest.raises(ValueError) as info:
         op.Proxy.plan(op)
     assert groove_op.error_properties(info.value) == ("Base",)
+
+
+# -- warnings -------------------------------------------------------------------------
+
+
+def test_a_recompute_reports_the_cycles_warnings_once(shop, monkeypatch):
+    printed = []
+    monkeypatch.setattr(FreeCAD.Console, "PrintWarning", printed.append)
+    doc = shop[0]
+    op = groove(shop, "cylinder")  # width 4, the 3 mm blade: room for it
+    assert op.isValid(), op.getStatusString()
+    assert not [m for m in printed if "CYCLE93" in m] and all(plan.warnings == [] for plan in op.Proxy.plan(op))
+    op.FlankAllowance = 0.6  # 4 - 2 x 0.6 = 2.8 < 3: roughing runs on the final profile
+    doc.recompute()
+    assert op.isValid(), op.getStatusString()
+    text = ("CYCLE93: the allowances FAL1=0 FAL2=0.6 leave no room for the 3 mm blade: FAL2 leaves a roughing base "
+            "2.8 mm wide; roughing runs on the final profile, leaving nothing for the finishing pass")
+    (plan,) = op.Proxy.current_plan(op)
+    assert [m for m in printed if "CYCLE93" in m] == ["%s: %s: groove 1: %s\n" % (op.Label, plan.face.name, text)]
+    assert [warning.text for warning in plan.warnings] == [text]
+    assert plan.geometry.roughs_to_final
