@@ -44,6 +44,15 @@ START = MachineState(x=40.0, z=65.0, feed=0.2, feed_per_rev=True)
 G75_START = MachineState(x=25.0, z=0.0, feed=0.1, feed_per_rev=True)
 
 
+NO_ROOM_TEXT = ("CYCLE93: the allowances FAL1=0.2 FAL2=0.6 leave no room for the 3 mm blade: FAL2 leaves a "
+                "roughing base 2.8 mm wide; roughing runs on the final profile, leaving nothing for the finishing pass")
+
+
+def assert_one(warnings, cycle, parameter, text):
+    (warning,) = warnings
+    assert (warning.cycle, warning.parameter, warning.text) == (cycle, parameter, text)
+
+
 def sha(text):
     return hashlib.sha256(text.encode()).hexdigest()
 
@@ -66,11 +75,7 @@ def test_cycle93_allowances_that_leave_no_room_warn_naming_fal2():
     assert geometry.roughs_to_final
     assert geometry.no_room.parameter == "FAL2"
     assert geometry.no_room.room == pytest.approx(2.8) and geometry.no_room.need == 3.0
-    (warning,) = call.warnings(START, BLADE)
-    assert warning.cycle == "CYCLE93" and warning.parameter == "FAL2"
-    assert warning.text == (
-        "CYCLE93: the allowances FAL1=0.2 FAL2=0.6 leave no room for the 3 mm blade: FAL2 leaves a roughing base "
-        "2.8 mm wide; roughing runs on the final profile, leaving nothing for the finishing pass")
+    assert_one(call.warnings(START, BLADE), "CYCLE93", "FAL2", NO_ROOM_TEXT)
 
 
 def test_cycle93_raised_base_that_leaves_no_room_for_a_base_corner_names_fal1():
@@ -109,11 +114,9 @@ def test_cycle93_warning_leaves_the_moves_and_output_as_they_were():
 
 def test_fanuc_relief_into_the_wall_between_grooves_warns():
     model = FanucG75.parse("G75 X40. Z-20. P2000 Q5000 R2.5 F0.1")  # 5 - 3 = 2 < 2.5
-    (warning,) = model.warnings(G75_START, BLADE)
-    assert warning.cycle == "G75" and warning.parameter == "R"
-    assert warning.text == (
-        "G75: the relief R=2.5 at the groove bottom rapids the blade's side into the wall between grooves: "
-        "grooves 5 mm apart (Q=5000) leave a 2 mm wall beside the 3 mm blade")
+    assert_one(model.warnings(G75_START, BLADE), "G75", "R",
+               "G75: the relief R=2.5 at the groove bottom rapids the blade's side into the wall between grooves: "
+               "grooves 5 mm apart (Q=5000) leave a 2 mm wall beside the 3 mm blade")
 
 
 def test_fanuc_relief_within_the_cut_bottom_does_not_warn():
@@ -163,9 +166,7 @@ def test_command_line_prints_warnings_on_stderr_and_exits_0(tmp_path):
     status, out, err = run_inline(["expand", str(path), "--dialect", "sinumerik", "--tool-width", "3"])
     assert status == 0
     assert out == translate_program(C93_PROGRAM, "sinumerik", BLADE, source_name="part.mpf")
-    assert err == "%s:4: warning: CYCLE93: the allowances FAL1=0.2 FAL2=0.6 leave no room for the 3 mm blade: " \
-                  "FAL2 leaves a roughing base 2.8 mm wide; roughing runs on the final profile, leaving nothing " \
-                  "for the finishing pass\n" % path
+    assert err == "%s:4: warning: %s\n" % (path, NO_ROOM_TEXT)
     out_file = tmp_path / "part.ngc"
     status, out, err2 = run_inline(["expand", str(path), "--dialect", "sinumerik", "--tool-width", "3",
                                     "-o", str(out_file)])
