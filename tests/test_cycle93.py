@@ -2,14 +2,22 @@
 moves' structure. The material-removal proof is in test_cycle93_simulation.py."""
 
 import math
+from pathlib import Path
 
 import pytest
+from cycle93_helpers import assert_reentries, chip_breaks
 from hypothesis import given
 from hypothesis import strategies as st
 
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
 from freecad_groove.engine.cycles import pecking
 from freecad_groove.engine.cycles.cycle93 import Cycle93
+from freecad_groove.engine.cycles.cycle93_constants import (
+    DEFAULT_VRT_INCH,
+    DEFAULT_VRT_MM,
+    REENTRY_CLEARANCE_INCH,
+    REENTRY_CLEARANCE_MM,
+)
 from freecad_groove.engine.moves import DWELL, FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID
 from freecad_groove.engine.numbers import MAX_MOVES
 
@@ -270,7 +278,8 @@ def test_seed_example_moves_follow_the_four_steps():
     dwells = [m for m in moves if m.kind == DWELL]
     assert dwells and all(m.p == 1.0 for m in dwells)
     # Every plunge: equal infeeds of at most IDEP (10), each followed by a
-    # 1 mm (VRT = 0) rapid chip-breaking retract, then fed back in.
+    # 1 mm (VRT = 0) rapid chip-breaking retract, a rapid back down to 0.1
+    # above the depth reached, then fed on.
     plunges = split_plunges(moves)
     assert len(plunges) >= 10
     widths = sorted({round(p["z"], 6) for p in plunges})
@@ -281,29 +290,92 @@ def test_seed_example_moves_follow_the_four_steps():
     assert len(deepest["infeeds"]) == 3  # about 25 mm deep in IDEP 10 infeeds
     incs = deepest["infeeds"]
     assert max(incs) - min(incs) < 1e-6 and max(incs) <= 10
-    for retract in deepest["retracts"]:
-        assert retract == pytest.approx(1.0)
+    assert deepest["retracts"] == pytest.approx([1.0, 1.0])
+    assert deepest["reentries"] == pytest.approx([0.1, 0.1])
 
 
 def split_plunges(moves, vrt=1.0):
     """The roughing plunges of an external longitudinal groove: a rapid to the
-    clearance, feeds straight down in X with rapid chip-breaking retracts in
-    between, a dwell at the bottom."""
+    clearance, feeds straight down in X with rapid chip-breaking retracts and
+    rapid re-entries in between, a dwell at the bottom. ``reentries``: how far
+    above the depth reached each re-entry rapid stops."""
+
+    def chip_break(j):  # a retract (after a feed) or a re-entry (back down after a retract)
+        up, down = moves[j - 1], moves[j]
+        back_in = up.kind == RAPID and moves[j - 2].kind == FEED and down.z == up.z and down.x < up.x
+        return moves[j - 1].kind == FEED or back_in
+
     out = []
     for i, m in enumerate(moves):
         if m.kind != DWELL:
             continue
         j = i - 1
-        while moves[j].kind != RAPID or moves[j - 1].kind == FEED:
+        while moves[j].kind != RAPID or chip_break(j):
             j -= 1  # back to the rapid that brought the tool over this plunge
         seq = moves[j:i]
         assert all(s.z == m.z for s in seq)
         top = seq[0].x - vrt
         levels = [s.x for s in seq if s.kind == FEED]
         infeeds = [a - b for a, b in zip([top] + levels, levels)]
-        retracts = [b.x - a.x for a, b in zip(seq, seq[1:]) if a.kind == FEED and b.kind == RAPID]
-        out.append(dict(z=m.z, depth=top - m.x, infeeds=infeeds, retracts=retracts))
+        triples = list(zip(seq, seq[1:], seq[2:]))
+        retracts = [b.x - a.x for a, b, _c in triples if a.kind == FEED and b.kind == RAPID]
+        reentries = [c.x - a.x for a, b, c in triples if a.kind == FEED and b.kind == RAPID and c.kind == RAPID]
+        out.append(dict(z=m.z, depth=top - m.x, infeeds=infeeds, retracts=retracts, reentries=reentries))
     return out
+
+
+def test_plain_groove_moves_by_hand():
+    # 6 wide at radius 20 from z -10 toward -Z, 3 deep, IDEP 1, VRT 0 = 1 mm,
+    # a 3 mm blade (r 0.4): the opening -16..-10 takes 3 plunges (3 mm to
+    # cover in steps of at most 0.95 * (3 - 0.8) = 2.09: 2 steps of 1.5),
+    # from the start side: minus corner at z -13, -14.5, -16. Each: rapid to
+    # VRT above the surface (X21), three infeeds of 1 (X19, X18, X17); after
+    # the first two a chip-breaking retract of VRT (X20, X19), a rapid back
+    # down the slot just cut to 0.1 above the depth reached (X19.1, X18.1),
+    # then the feed on. No contour pass (square flanks, no allowance), back to
+    # the start the way the approach came (along X, then along Z).
+    moves = call().expand(MachineState(x=25.0, z=0.0), TOOL)
+    expected = [(RAPID, 25.0, -13.0)]
+    for z in (-13.0, -14.5, -16.0):
+        expected += [(RAPID, 21.0, z), (FEED, 19.0, z), (RAPID, 20.0, z), (RAPID, 19.1, z),
+                     (FEED, 18.0, z), (RAPID, 19.0, z), (RAPID, 18.1, z), (FEED, 17.0, z), (RAPID, 21.0, z)]
+    expected += [(RAPID, 25.0, -16.0), (RAPID, 25.0, 0.0)]
+    assert [(m.kind, round(m.x, 9), round(m.z, 9)) for m in moves] == expected
+
+
+@pytest.mark.parametrize(
+    "kw, start, metric, tool, breaks",
+    [
+        # The seed example: 12 plunges, the deepest in 3 infeeds.
+        (None, SEED_START, True, TOOL, None),
+        # The plain groove above: 3 plunges of 3 infeeds, 2 chip-breaks each.
+        (dict(), MachineState(x=25.0, z=0.0), True, TOOL, 6),
+        # A face groove (plunging -Z), VRT 0.5: 3 plunges x 2.
+        (dict(typ=2, angc=90, axfa=10.0, axsa=0.0, vrt=0.5), MachineState(x=5.0, z=2.0), True, TOOL, 6),
+        # An internal groove (plunging +X), 3 deep in IDEP 0.7: 5 infeeds.
+        (dict(typ=7, idep=0.7), MachineState(x=10.0, z=5.0), True, TOOL, 12),
+        # VRT below the clearance: the retract already stands there.
+        (dict(vrt=0.05), MachineState(x=25.0, z=0.0), True, TOOL, 6),
+        # Inch: VRT 0 = 0.04 in, re-entry 0.004 in; 0.1 deep in IDEP 0.05.
+        (dict(axfa=1.0, axsa=0.0, widg=0.25, depg=0.1, idep=0.05), MachineState(x=1.2, z=0.5, metric=False), False,
+         Settings(tool=GroovingTool(0.12, 0.01)), 3),
+    ],
+)
+def test_after_each_chip_break_the_blade_rapids_back_down_its_slot(kw, start, metric, tool, breaks):
+    c = Cycle93.parse(SEED_CALL) if kw is None else call(**kw)
+    moves = c.expand(start, tool)
+    vrt = c.geometry(tool, metric=metric).params["VRT"]
+    clearance = min(vrt, REENTRY_CLEARANCE_MM if metric else REENTRY_CLEARANCE_INCH)
+    count = assert_reentries(moves, c.plunge_direction(), vrt, clearance)
+    assert count == (breaks if breaks is not None else len(chip_breaks(moves, c.plunge_direction(), vrt))) > 0
+
+
+def test_reentry_clearance_is_the_one_in_the_readme_and_below_the_default_vrt():
+    assert (REENTRY_CLEARANCE_MM, REENTRY_CLEARANCE_INCH) == (0.1, 0.004)
+    assert REENTRY_CLEARANCE_MM < DEFAULT_VRT_MM and REENTRY_CLEARANCE_INCH < DEFAULT_VRT_INCH
+    readme = (Path(__file__).parent.parent / "README.md").read_text(encoding="utf-8")
+    row = next(line for line in readme.splitlines() if line.startswith("| chip-break retract |"))
+    assert "0.1 mm" in row and "0.004 in" in row and "REENTRY_CLEARANCE_MM" in row
 
 
 def test_plain_groove_is_plunged_only_with_no_contour_pass():

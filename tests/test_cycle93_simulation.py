@@ -8,6 +8,7 @@ blade's own): the oracle works out what the blade can reach and judges the
 program on that (allow_infeasible), while gouges and rapids are judged
 everywhere."""
 
+from cycle93_helpers import PLUNGE_AXIS, assert_reentries, chip_breaks
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from rs274 import canonical_matches, require_rs274, run_rs274, written_moves
@@ -16,6 +17,7 @@ from shapely.geometry import Polygon
 from freecad_groove import verify as sim
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
 from freecad_groove.engine.cycles.cycle93 import Cycle93
+from freecad_groove.engine.cycles.cycle93_constants import REENTRY_CLEARANCE_MM
 from freecad_groove.engine.targets import write_program
 
 SEED_CALL = "CYCLE93(35, 60, 30, 25, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)"
@@ -54,6 +56,44 @@ def test_seed_example_cuts_the_groove_exactly():
     assert moves[-1].x == 40.0 and moves[-1].z == 65.0
     # Everything but the corners a flat blade cannot enter is cut.
     assert verdict.unreachable.area < 0.5
+
+
+def reentries_checked(call, tool, moves):
+    """The chip-break re-entries of a metric expansion, checked (see
+    cycle93_helpers.assert_reentries); returns how many there were."""
+    vrt = call.geometry(Settings(tool=tool)).params["VRT"]
+    return assert_reentries(moves, call.plunge_direction(), vrt, min(vrt, REENTRY_CLEARANCE_MM))
+
+
+def test_seed_example_reenters_after_each_chip_break_without_a_rapid_into_stock():
+    # The seed's plunges break the chip 30 times (up to 3 infeeds of at most
+    # IDEP 10 each): each re-entry rapid runs down the slot just cut, and
+    # with no skin at all (rapid_skin 0) none touches standing stock.
+    call, tool = Cycle93.parse(SEED_CALL), GroovingTool(3.0, 0.4)
+    verdict, moves = run(call, tool, start=(40.0, 65.0))
+    assert reentries_checked(call, tool, moves) == 30
+    geo = call.geometry(Settings(tool=tool))
+    stock = Polygon([(z, x) for x, z in geo.stock_world()])
+    exact = sim.simulate(moves, tool, call.plunge_direction(), (40.0, 65.0), stock, rapid_skin=0.0)
+    reentry = {i + 2 for i in chip_breaks(moves, call.plunge_direction(), 1.0)}
+    assert not [c for c in exact.rapid_collisions if c.index in reentry]
+
+
+def test_oracle_catches_a_reentry_rapid_below_the_depth_reached():
+    # The proof must be able to fail: send every re-entry rapid 0.2 below the
+    # depth reached instead of 0.1 above it, into stock the blade has not cut.
+    call, tool = Cycle93.parse(SEED_CALL), GroovingTool(3.0, 0.4)
+    settings_ = Settings(tool=tool)
+    geo = call.geometry(settings_)
+    moves = call.expand(MachineState(x=40.0, z=65.0), settings_)
+    axis, sign = PLUNGE_AXIS[call.plunge_direction()]
+    breaks = chip_breaks(moves, call.plunge_direction(), 1.0)
+    deep = list(moves)
+    for i in breaks:
+        deep[i + 2] = deep[i + 2]._replace(**{axis: getattr(moves[i], axis) + sign * 0.2})
+    stock = Polygon([(z, x) for x, z in geo.stock_world()])
+    result = sim.simulate(deep, tool, call.plunge_direction(), (40.0, 65.0), stock)
+    assert {c.index for c in result.rapid_collisions} == {i + 2 for i in breaks}
 
 
 def test_seed_example_with_a_sharp_tool_and_the_other_reference_corner():
@@ -129,8 +169,9 @@ def test_generated_grooves_are_cut_without_gouge_leftover_or_rapid_into_stock(ca
         call.validate(Settings(tool=tool))
     except CycleError:
         assume(False)  # validation's own tests cover refusals
-    verdict, _ = run(call, tool)
+    verdict, moves = run(call, tool)
     sim.assert_clean(verdict, allow_infeasible=True)
+    reentries_checked(call, tool, moves)
 
 
 @settings(suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow])

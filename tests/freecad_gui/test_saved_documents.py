@@ -20,7 +20,7 @@ from PySide import QtGui
 
 # isort: split
 # (gui_helpers has put tests/freecad on sys.path)
-from documents import DATA, opened, path_commands
+from documents import DATA, opened, path_commands, without_chip_break_reentries
 
 from freecad_groove.freecad import groove_op, toolbit
 from freecad_groove.gui import ICON, task_panel
@@ -61,7 +61,11 @@ def test_the_op_recomputes_to_the_path_it_saved(saved):
     doc.recompute()
     assert op.isValid(), op.getStatusString()
     assert any(name == "G1" for name, _words in path_commands(op))
-    assert path_commands(op) == path
+    # 2 deep in infeeds of 1: each plunge breaks the chip once and, since
+    # issue 9, rapids back down its slot after it; the rest is as saved.
+    now = path_commands(op)
+    assert without_chip_break_reentries(now) == path
+    assert len(now) > len(path)
 
 
 def test_the_tool_bit_still_gives_the_blade_size(saved):

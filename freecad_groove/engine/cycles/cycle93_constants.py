@@ -18,6 +18,11 @@ MAX_FLANK_ANGLE = 89.999
 WIDTH_STEP_FACTOR = 0.95  # seed: at most 95 % of (tool width - edge radii)
 DEFAULT_VRT_MM = 1.0  # seed: VRT = 0 means 1 mm
 DEFAULT_VRT_INCH = 0.04
+# After a chip-breaking retract the blade rapids back down its own slot to
+# this far above the depth it reached, then feeds on: only this gap is fed in
+# air, not VRT. Never more than VRT (with VRT below it, no rapid back down).
+REENTRY_CLEARANCE_MM = 0.1
+REENTRY_CLEARANCE_INCH = 0.004
 PATH_TOLERANCE = 0.0002  # chord error allowed on contour passes and arcs
 EPS = 1e-9
 # A plunge that ends this close to the roughing profile's base line is on the

@@ -25,6 +25,8 @@ from .cycle93_constants import (
     MAX_FLANK_ANGLE,
     NAME,
     PATH_TOLERANCE,
+    REENTRY_CLEARANCE_INCH,
+    REENTRY_CLEARANCE_MM,
     cycle93_error,
 )
 from .cycle93_size import ExpansionSize, plunge_count
@@ -475,11 +477,13 @@ class GrooveGeometry:
         return out
 
     def _plunges(self, positions, go, out):
-        """Steps 1 and 2: plunges in equal infeeds with chip-breaking retracts,
-        DWT at the bottom of those that reach the base; returns the u of the
-        plunges that reached the deepest bottom."""
+        """Steps 1 and 2: plunges in equal infeeds with chip-breaking retracts
+        (VRT up, then a rapid back down the blade's own slot to the re-entry
+        clearance), DWT at the bottom of those that reach the base; returns
+        the u of the plunges that reached the deepest bottom."""
         p = self.params
         vrt, idep, dwt = p["VRT"], p["IDEP"], p["DWT"]
+        reentry = min(vrt, REENTRY_CLEARANCE_MM if self.metric else REENTRY_CLEARANCE_INCH)
         bottoms = [self.rough_env.lowest(u) for u in positions]
         base = self._base_envelope()
         deepest = min(bottoms)
@@ -498,6 +502,7 @@ class GrooveGeometry:
                 go("f", u, level)
                 if k < n:
                     go("r", u, level + vrt)
+                    go("r", u, level + reentry)  # only through the slot just cut
             if dwt > 0 and bottom <= base.lowest(u) + BASE_TOLERANCE:
                 x, z = self.frame.blade(u, bottom)
                 out.append(dwell(x, z, dwt))

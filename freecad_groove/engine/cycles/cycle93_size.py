@@ -78,8 +78,9 @@ class ExpansionSize:
         top = max(geo.contour_top(lo), geo.contour_top(hi - tool.width))
         bottom = min(c.vertex[1] for c in rough)
         self.infeeds = infeed_count(top - bottom, p["IDEP"])
-        # Over, the infeeds, the chip-breaking retracts, the dwell, out.
-        self.plunge_moves = self.plunges * (2 * self.infeeds + 2)
+        # Over, the infeeds, the chip-breaking retracts and re-entries, the
+        # dwell, out: 1 + n + 2 (n - 1) + 2.
+        self.plunge_moves = self.plunges * (3 * self.infeeds + 1)
         # The blade's corner rolls at most once over every turn of the profile.
         turn = sum(c.turn for c in geo.final_corners)
         blade = arc_chords(tool.corner_radius, turn)

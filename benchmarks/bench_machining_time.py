@@ -1,0 +1,134 @@
+"""Machining time of six reference CYCLE93 grooves: prints figures, asserts nothing.
+
+    python3 benchmarks/bench_machining_time.py [--feed 100] [--rapid 10000]
+
+Rates: feed 0.1 mm/rev at 1000 rpm = 100 mm/min, rapid 10,000 mm/min; no
+dwell (DWT 0), no acceleration. Each groove is external and longitudinal
+(TYP 5) at radius 50 from Z0, VRT 0 (1 mm), cut with a 5 mm blade of corner
+radius 0.2 from X53 Z5 (radius X), back there at the end:
+
+  rect       W 25, DEPG 10, IDEP 2, square corners
+  R1 base    the same with R1 base corners (RCI1 = RCI2 = 1)
+  flanks 15  the same with both flanks at 15 degrees (ANG1 = ANG2 = 15)
+  ANGC 12    the same on an oblique contour (ANGC 12)
+  narrow     W 5 = the blade width, DEPG 10, IDEP 2
+  deep       W 25, DEPG 20, IDEP 2
+
+For each: feed and rapid length and time, the chip-breaking retracts, and
+lower bounds:
+- feed: the groove's area / (blade width x feed rate). A blade plunging
+  along its own axis removes at most its width in mm^2 per mm of feed (its
+  front edge is that wide), and CYCLE93 roughs by plunging; so no program
+  that plunges the groove out can feed for less. (A sideways pass can take
+  more per mm, but CYCLE93's only take the allowances and the plunges'
+  staircase.)
+- rapid: twice the straight distance from the start point to the nearest
+  blade position VRT above the groove's opening: the cycle must get there
+  and come back to where it started.
+
+Seconds (feed + rapid = total; feed bound), before (3d3117c: fed back in by
+VRT + the next infeed after each chip-break) and after (a rapid back down
+to 0.1 mm above the depth reached):
+
+  groove     breaks  before                  after                   feed >=
+  rect         24    54.00 + 0.92 =  54.92   41.04 + 1.05 = 42.09    30.00
+  R1 base      24    70.76 + 1.24 =  72.00   57.80 + 1.37 = 59.17    29.95
+  flanks 15    20    62.07 + 1.30 =  63.37   51.27 + 1.41 = 52.68    33.22
+  ANGC 12      30    83.39 + 1.24 =  84.62   67.19 + 1.40 = 68.58    30.00
+  narrow        4     9.00 + 0.23 =   9.23    6.84 + 0.26 =  7.10     6.00
+  deep         54   108.00 + 1.46 = 109.46   78.84 + 1.76 = 80.60    60.00
+"""
+
+import argparse
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+
+from freecad_groove.engine import GroovingTool, MachineState, Settings  # noqa: E402
+from freecad_groove.engine.cycles.cycle93 import Cycle93  # noqa: E402
+from freecad_groove.engine.moves import FEED, RAPID  # noqa: E402
+
+BLADE = GroovingTool(5.0, 0.2)
+START = (53.0, 5.0)  # radius X, Z
+BASE = dict(axfa=50.0, axsa=0.0, widg=25.0, depg=10.0, angc=0.0, ang1=0.0, ang2=0.0, rco1=0.0, rco2=0.0,
+            rci1=0.0, rci2=0.0, fal1=0.0, fal2=0.0, idep=2.0, dwt=0.0, typ=5, vrt=0.0)
+GROOVES = [
+    ("rect", dict()),
+    ("R1 base", dict(rci1=1.0, rci2=1.0)),
+    ("flanks 15", dict(ang1=15.0, ang2=15.0)),
+    ("ANGC 12", dict(angc=12.0)),
+    ("narrow", dict(widg=5.0)),
+    ("deep", dict(depg=20.0)),
+]
+
+
+def lengths(moves, start):
+    """Feed and rapid path lengths (mm) from ``start``, and the chip-breaking
+    retracts: a rapid straight out after a feed, the plunge going on at the
+    same Z (directly, or after a rapid back down)."""
+    feed = rapid = 0.0
+    here = start
+    for m in moves:
+        step = math.dist(here, (m.x, m.z))
+        if m.kind == FEED:
+            feed += step
+        elif m.kind == RAPID:
+            rapid += step
+        here = (m.x, m.z)
+    breaks = 0
+    for i in range(1, len(moves) - 2):
+        cut, out, on = moves[i - 1], moves[i], moves[i + 1]
+        if on.kind == RAPID and on.z == cut.z:
+            on = moves[i + 2]  # the rapid back down
+        breaks += cut.kind == FEED and out.kind == RAPID and out.z == on.z == cut.z and on.kind == FEED
+    return feed, rapid, breaks
+
+
+def area(points):
+    """Area of a closed polygon (shoelace)."""
+    return abs(sum(x0 * z1 - x1 * z0 for (x0, z0), (x1, z1) in zip(points, points[1:]))) / 2
+
+
+def rapid_bound(geo):
+    """Twice the distance from START to the nearest reference-corner position
+    VRT above the opening."""
+    lo, hi = geo.opening(geo.final_top)
+    best = math.inf
+    for k in range(201):
+        u = lo + (hi - BLADE.width - lo) * k / 200
+        best = min(best, math.dist(START, geo.frame.blade(u, geo.clearance(u))))
+    return 2 * best
+
+
+def measure(name, kw, feed_rate, rapid_rate):
+    call = Cycle93(**dict(BASE, **kw))
+    settings = Settings(tool=BLADE)
+    moves = call.expand(MachineState(x=START[0], z=START[1]), settings)
+    geo = call.geometry(settings)
+    feed, rapid, breaks = lengths(moves, START)
+    feed_min, rapid_min = feed / feed_rate, rapid / rapid_rate
+    bound_feed = area(geo.region_world()) / (BLADE.width * feed_rate)
+    bound_rapid = rapid_bound(geo) / rapid_rate
+    return (name, feed, rapid, breaks, 60 * feed_min, 60 * rapid_min, 60 * (feed_min + rapid_min),
+            60 * bound_feed, 60 * bound_rapid, bound_feed / feed_min)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--feed", type=float, default=100.0, help="feed rate, mm/min (default 100)")
+    ap.add_argument("--rapid", type=float, default=10000.0, help="rapid rate, mm/min (default 10000)")
+    args = ap.parse_args()
+    print("CYCLE93 machining time: feed %g mm/min, rapid %g mm/min, blade %g mm (r %g)"
+          % (args.feed, args.rapid, BLADE.width, BLADE.corner_radius))
+    print("%-10s %9s %9s %6s %9s %9s %9s | %9s %9s %7s"
+          % ("groove", "feed mm", "rapid mm", "breaks", "feed s", "rapid s", "total s",
+             "feed >= s", "rapid >=", "bound/feed"))
+    for name, kw in GROOVES:
+        row = measure(name, kw, args.feed, args.rapid)
+        print("%-10s %9.2f %9.2f %6d %9.2f %9.2f %9.2f | %9.2f %9.2f %6.0f %%" % (row[:9] + (100 * row[9],)))
+
+
+if __name__ == "__main__":
+    main()
