@@ -19,10 +19,15 @@ temporary file of OUT removed.
 """
 
 import argparse
+import codecs
+import contextlib
+import io
 import os
 import re
+import shutil
 import signal
 import sys
+import tempfile
 import threading
 from typing import Callable
 
@@ -41,11 +46,12 @@ from .cli_options import (
 )
 from .engine import registry
 from .engine.input_controls import DIALECTS, INPUT_CONTROLS
-from .engine.output import write_atomically
+from .engine.output import write_atomically, write_chunks_atomically
 from .engine.registry import CALL, CycleEntry, CycleWord
 from .engine.targets import TARGETS
 
 EXIT_ERROR = 2
+_CHUNK = 1 << 16  # characters or bytes read at a time
 
 DESCRIPTION = """\
 Expand the grooving cycles of a lathe program into plain G0/G1/G4 moves.
@@ -253,17 +259,23 @@ def _tool_table(args):
 
 
 def _expand(args):
-    from .engine.errors import ProgramError
-    from .engine.translator import translate_program
-
+    """Translate the program to OUT (or stdout), streaming: see _program_lines and _write_chunks."""
     tools = _tool_table(args)
-    name, text = _read_program(args.program)
-    settings = settings_from(args)
+    name = "<stdin>" if args.program == "-" else args.program
+    with _open_program(args.program, name) as source, contextlib.closing(_program_lines(source, name)) as lines:
+        _write_chunks(_translation(args, name, lines, tools), args.output)
+
+
+def _translation(args, name, lines, tools):
+    """The translated text chunk by chunk; a line it cannot translate as a _Failure."""
+    from .engine.errors import ProgramError
+    from .engine.translator import iter_translation
+
     try:
-        return translate_program(
-            text,
+        yield from iter_translation(
+            lines,
             args.dialect,
-            settings,
+            settings_from(args),
             target=args.to,
             source_name=os.path.basename(name) if name != "<stdin>" else "stdin",
             start=start_state(args),
@@ -273,10 +285,76 @@ def _expand(args):
         raise _Failure(name, exc.line if exc.line is not None else 0, str(exc)) from None
 
 
+@contextlib.contextmanager
+def _open_program(path, name):
+    """The program as a seekable binary file: the file itself, or standard input
+    (or a pipe given by name) copied to an anonymous temporary file first."""
+    with contextlib.ExitStack() as stack:
+        try:
+            source = sys.stdin.buffer if path == "-" else stack.enter_context(open(path, "rb"))
+            if not source.seekable():
+                spool = stack.enter_context(tempfile.TemporaryFile())
+                shutil.copyfileobj(source, spool, _CHUNK)
+                spool.seek(0)
+                source = spool
+        except OSError as exc:
+            raise _Failure(name, 0, "cannot read the program: %s" % (exc.strerror or exc)) from None
+        yield source
+
+
+def _program_lines(source, name):
+    """The program's lines, read one at a time: decoded as UTF-8 when the whole
+    file is valid UTF-8, else as Latin-1 (checked in a first pass over the
+    file, which holds one chunk at a time), ends of line as the engine reads
+    them (\\n, \\r\\n, \\r)."""
+    decoder = codecs.getincrementaldecoder("utf-8")()
+    encoding = "utf-8"
+    try:
+        for chunk in iter(lambda: source.read(_CHUNK), b""):
+            decoder.decode(chunk)
+        decoder.decode(b"", True)
+    except UnicodeDecodeError:
+        encoding = "latin-1"
+    source.seek(0)
+    text = io.TextIOWrapper(source, encoding=encoding, newline="")
+    try:
+        for line in text:  # not yield from, which would close the file when the generator is closed
+            yield line
+    except OSError as exc:
+        raise _Failure(name, 0, "cannot read the program: %s" % (exc.strerror or exc)) from None
+    finally:
+        text.detach()
+
+
+def _write_chunks(chunks, out):
+    """Write the chunks to ``out`` atomically ("-" or None: stdout). OUT: through
+    its temporary file, renamed over OUT after the last chunk. Stdout: through
+    an anonymous temporary file, copied to stdout after the last chunk, so that
+    a run that fails writes nothing there."""
+    if out not in (None, "-"):
+        try:
+            write_chunks_atomically(out, chunks, encoding="ascii", errors="replace")
+        except OSError as exc:
+            raise _Failure(out, 0, "cannot write the output: %s" % (exc.strerror or exc)) from None
+        return
+    try:
+        spool = tempfile.TemporaryFile("w+", encoding="utf-8", newline="")
+    except OSError as exc:
+        raise _Failure("<stdout>", 0, "cannot make the temporary file: %s" % (exc.strerror or exc)) from None
+    with spool:
+        try:
+            for chunk in chunks:
+                spool.write(chunk)
+            spool.seek(0)
+        except OSError as exc:
+            raise _Failure("<stdout>", 0, "cannot write the temporary file: %s" % (exc.strerror or exc)) from None
+        _write_stdout(iter(lambda: spool.read(_CHUNK), ""))
+
+
 def _write_output(text, out):
     """Write ``text`` to ``out`` atomically ("-" or None: stdout)."""
     if out in (None, "-"):
-        _write_stdout(text)
+        _write_stdout((text,))
         return
     try:
         write_atomically(out, text, encoding="ascii", errors="replace")
@@ -284,14 +362,15 @@ def _write_output(text, out):
         raise _Failure(out, 0, "cannot write the output: %s" % (exc.strerror or exc)) from None
 
 
-def _write_stdout(text):
-    """Write ``text`` to standard output; a closed or failing stdout (not a
+def _write_stdout(chunks):
+    """Write the text ``chunks`` to standard output; a closed or failing stdout (not a
     broken pipe, which main ends quietly) is a _Failure naming <stdout>."""
     stream = sys.stdout
     if stream is None:  # started with stdout closed (>&-)
         raise _Failure("<stdout>", 0, "cannot write the output: standard output is closed")
     try:
-        stream.write(text)
+        for chunk in chunks:
+            stream.write(chunk)
         stream.flush()
     except BrokenPipeError:
         raise
@@ -438,8 +517,7 @@ def _run_name(args):
 def _run(args, name):
     try:
         if args.command == "expand":
-            text = _expand(args)
-            _write_output(text, args.output)
+            _expand(args)
         else:
             text = _emit(args)
             _write_output(text, None)
