@@ -259,21 +259,19 @@ def _tool_table(args):
 
 
 def _expand(args):
-    """Translate the program to OUT (or stdout), streaming: see _program_lines and _write_chunks."""
-    tools = _tool_table(args)
-    name = "<stdin>" if args.program == "-" else args.program
-    with _open_program(args.program, name) as source, contextlib.closing(_program_lines(source, name)) as lines:
-        _write_chunks(_translation(args, name, lines, tools), args.output)
-
-
-def _translation(args, name, lines, tools):
-    """The translated text chunk by chunk; a line it cannot translate as a _Failure."""
+    """Translate the program to OUT (or stdout), streaming: the program is read
+    a line at a time (_open_program), each line's translation written as it is
+    made (_write_chunks). Everything the translation needs (modules, codecs) is
+    loaded before OUT's temporary file is made, so that a signal there is never
+    taken inside an import."""
     from .engine.errors import ProgramError
     from .engine.translator import iter_translation
 
-    try:
-        yield from iter_translation(
-            lines,
+    tools = _tool_table(args)
+    name = "<stdin>" if args.program == "-" else args.program
+    with _open_program(args.program, name) as text:
+        chunks = iter_translation(
+            _read_lines(text, name),
             args.dialect,
             settings_from(args),
             target=args.to,
@@ -281,14 +279,19 @@ def _translation(args, name, lines, tools):
             start=start_state(args),
             tools=tools,
         )
-    except ProgramError as exc:
-        raise _Failure(name, exc.line if exc.line is not None else 0, str(exc)) from None
+        try:
+            _write_chunks(chunks, args.output)
+        except ProgramError as exc:
+            raise _Failure(name, exc.line if exc.line is not None else 0, str(exc)) from None
 
 
 @contextlib.contextmanager
 def _open_program(path, name):
-    """The program as a seekable binary file: the file itself, or standard input
-    (or a pipe given by name) copied to an anonymous temporary file first."""
+    """The program as a text file to read line by line. Standard input (or a
+    pipe given by name) is first copied to an anonymous temporary file. The
+    text is UTF-8 when the whole file is valid UTF-8, else Latin-1, as when the
+    program was read whole: a first pass over the file decides, a chunk at a
+    time. Ends of line are kept for the engine (\\n, \\r\\n, \\r)."""
     with contextlib.ExitStack() as stack:
         try:
             source = sys.stdin.buffer if path == "-" else stack.enter_context(open(path, "rb"))
@@ -297,33 +300,38 @@ def _open_program(path, name):
                 shutil.copyfileobj(source, spool, _CHUNK)
                 spool.seek(0)
                 source = spool
+            begin = source.tell()  # standard input redirected from a file may be read from further on
+            encoding = _encoding(source)
+            source.seek(begin)
         except OSError as exc:
             raise _Failure(name, 0, "cannot read the program: %s" % (exc.strerror or exc)) from None
-        yield source
+        text = io.TextIOWrapper(source, encoding=encoding, newline="")
+        try:
+            yield text
+        finally:
+            text.detach()  # the file is closed by the stack (standard input is not closed)
 
 
-def _program_lines(source, name):
-    """The program's lines, read one at a time: decoded as UTF-8 when the whole
-    file is valid UTF-8, else as Latin-1 (checked in a first pass over the
-    file, which holds one chunk at a time), ends of line as the engine reads
-    them (\\n, \\r\\n, \\r)."""
+def _encoding(source):
+    """utf-8 when the whole binary file ``source`` decodes as UTF-8, else latin-1."""
     decoder = codecs.getincrementaldecoder("utf-8")()
-    encoding = "utf-8"
     try:
         for chunk in iter(lambda: source.read(_CHUNK), b""):
             decoder.decode(chunk)
         decoder.decode(b"", True)
     except UnicodeDecodeError:
-        encoding = "latin-1"
-    source.seek(0)
-    text = io.TextIOWrapper(source, encoding=encoding, newline="")
+        return "latin-1"
+    return "utf-8"
+
+
+def _read_lines(text, name):
+    """The lines of ``text`` one by one; a read error as a _Failure (not an
+    OSError, which the output would take for its own)."""
     try:
-        for line in text:  # not yield from, which would close the file when the generator is closed
+        for line in text:
             yield line
     except OSError as exc:
         raise _Failure(name, 0, "cannot read the program: %s" % (exc.strerror or exc)) from None
-    finally:
-        text.detach()
 
 
 def _write_chunks(chunks, out):
