@@ -4,7 +4,7 @@
     python3 -m freecad_groove emit cycle93 --tool-width 3 --axfa 35 --axsa 60 ...
 
 Thin layer: argument parsing and error reporting; the work is done by
-freecad_groove.engine (translator.translate_program, targets.write_program and
+freecad_groove.engine (translator.iter_translation, targets.write_program and
 the cycle classes).
 
 Errors: an invalid cycle or a line the reader cannot translate prints exactly
@@ -16,6 +16,20 @@ option values are reported by argparse (usage and message on stderr, status 2).
 A broken pipe on stdout ends quietly with status 1. SIGINT, SIGTERM and SIGHUP
 print ``PROGRAM:0: interrupted`` and exit with 128 + the signal's number, the
 temporary file of OUT removed.
+
+Memory: ``expand`` streams. The program is read a line at a time (standard
+input or a pipe is first copied to an anonymous temporary file; a first pass
+over the file decides its encoding: UTF-8 when the whole file is valid UTF-8,
+else Latin-1, as when it was read whole), translated block by block
+(translator.iter_translation), and each block's output written as it is made
+to a temporary file: with -o, OUT's own temporary file next to it
+(output.write_chunks_atomically), renamed over OUT after the last line; for
+stdout, an anonymous temporary file (tempfile.TemporaryFile, in TMPDIR, gone
+when closed, even on a kill) copied to stdout only when the whole run
+succeeded. So memory stays flat with the size of the program and the output,
+and a run that fails writes nothing to stdout or OUT. OUT is checked (what
+engine/output.py refuses) before the translation starts, after the program
+and tool table were opened.
 """
 
 import argparse
