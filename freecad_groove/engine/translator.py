@@ -368,15 +368,9 @@ def program_lines(program: Union[str, Iterable[str]]) -> Iterator[str]:
         yield ""
 
 
-def iter_translation(
-    program: Union[str, Iterable[str]],
-    dialect: str,
-    settings: Settings = DEFAULT_SETTINGS,
-    target: str = "linuxcnc",
-    source_name: str = "PROGRAM",
-    start: Optional[MachineState] = None,
-    tools: Optional[ToolTable] = None,
-) -> Iterator[str]:
+def iter_translation(program: Union[str, Iterable[str]], dialect: str, settings: Settings = DEFAULT_SETTINGS,
+                     target: str = "linuxcnc", source_name: str = "PROGRAM", start: Optional[MachineState] = None,
+                     tools: Optional[ToolTable] = None) -> Iterator[str]:
     """translate_program, block by block: yields the translated text in chunks
     of whole lines as ``program`` is read (a text, or lines read lazily, e.g. a
     text file object: see program_lines), so neither the input nor the output
