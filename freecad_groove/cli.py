@@ -4,7 +4,7 @@
     python3 -m freecad_groove emit cycle93 --tool-width 3 --axfa 35 --axsa 60 ...
 
 Thin layer: argument parsing and error reporting; the work is done by
-freecad_groove.engine (translator.translate_program, targets.write_program and
+freecad_groove.engine (translator.iter_translation, targets.write_program and
 the cycle classes).
 
 Errors: an invalid cycle or a line the reader cannot translate prints exactly
@@ -22,13 +22,32 @@ CycleWarning) prints one line each on stderr, ``PROGRAM:LINE: warning: CYCLE93:
 ...`` (``emit CYCLE:1: warning: ...`` for emit --expand), after the output is
 written; the status stays 0 and stdout and OUT are the same as without them.
 A run that fails prints its error alone.
+
+Memory: ``expand`` streams. The program is read a line at a time (standard
+input or a pipe is first copied to an anonymous temporary file; a first pass
+over the file decides its encoding: UTF-8 when the whole file is valid UTF-8,
+else Latin-1, as when it was read whole), translated block by block
+(translator.iter_translation), and each block's output written as it is made
+to a temporary file: with -o, OUT's own temporary file next to it
+(output.write_chunks_atomically), renamed over OUT after the last line; for
+stdout, an anonymous temporary file (tempfile.TemporaryFile, in TMPDIR, gone
+when closed, even on a kill) copied to stdout only when the whole run
+succeeded. So memory stays flat with the size of the program and the output,
+and a run that fails writes nothing to stdout or OUT. OUT is checked (what
+engine/output.py refuses) before the translation starts, after the program
+and tool table were opened.
 """
 
 import argparse
+import codecs
+import contextlib
+import io
 import os
 import re
+import shutil
 import signal
 import sys
+import tempfile
 import threading
 from typing import Callable, List, Tuple
 
@@ -47,12 +66,13 @@ from .cli_options import (
 )
 from .engine import registry
 from .engine.input_controls import DIALECTS, INPUT_CONTROLS
-from .engine.output import write_atomically
+from .engine.output import write_atomically, write_chunks_atomically
 from .engine.registry import CALL, CycleEntry, CycleWord
 from .engine.targets import TARGETS
 from .engine.warnings import CycleWarning, cycle_warnings
 
 EXIT_ERROR = 2
+_CHUNK = 1 << 16  # characters or bytes read at a time
 
 DESCRIPTION = """\
 Expand the grooving cycles of a lathe program into plain G0/G1/G4 moves.
@@ -263,31 +283,111 @@ def _tool_table(args):
 
 
 def _expand(args, warnings):
+    """Translate the program to OUT (or stdout), streaming: the program is read
+    a line at a time (_open_program), each line's translation written as it is
+    made (_write_chunks). Everything the translation needs (modules, codecs) is
+    loaded before OUT's temporary file is made, so that a signal there is never
+    taken inside an import. The cycles' warnings are appended to ``warnings``."""
     from .engine.errors import ProgramError
-    from .engine.translator import translate_program
+    from .engine.translator import iter_translation
 
     tools = _tool_table(args)
-    name, text = _read_program(args.program)
-    settings = settings_from(args)
-    try:
-        return translate_program(
-            text,
+    name = "<stdin>" if args.program == "-" else args.program
+    with _open_program(args.program, name) as text:
+        chunks = iter_translation(
+            _read_lines(text, name),
             args.dialect,
-            settings,
+            settings_from(args),
             target=args.to,
             source_name=os.path.basename(name) if name != "<stdin>" else "stdin",
             start=start_state(args),
             tools=tools,
             warnings=warnings,
         )
-    except ProgramError as exc:
-        raise _Failure(name, exc.line if exc.line is not None else 0, str(exc)) from None
+        try:
+            _write_chunks(chunks, args.output)
+        except ProgramError as exc:
+            raise _Failure(name, exc.line if exc.line is not None else 0, str(exc)) from None
+
+
+@contextlib.contextmanager
+def _open_program(path, name):
+    """The program as a text file to read line by line. Standard input (or a
+    pipe given by name) is first copied to an anonymous temporary file. The
+    text is UTF-8 when the whole file is valid UTF-8, else Latin-1, as when the
+    program was read whole: a first pass over the file decides, a chunk at a
+    time. Ends of line are kept for the engine (\\n, \\r\\n, \\r)."""
+    with contextlib.ExitStack() as stack:
+        try:
+            source = sys.stdin.buffer if path == "-" else stack.enter_context(open(path, "rb"))
+            if not source.seekable():
+                spool = stack.enter_context(tempfile.TemporaryFile())
+                shutil.copyfileobj(source, spool, _CHUNK)
+                spool.seek(0)
+                source = spool
+            begin = source.tell()  # standard input redirected from a file may be read from further on
+            encoding = _encoding(source)
+            source.seek(begin)
+        except OSError as exc:
+            raise _Failure(name, 0, "cannot read the program: %s" % (exc.strerror or exc)) from None
+        text = io.TextIOWrapper(source, encoding=encoding, newline="")
+        try:
+            yield text
+        finally:
+            text.detach()  # the file is closed by the stack (standard input is not closed)
+
+
+def _encoding(source):
+    """utf-8 when the whole binary file ``source`` decodes as UTF-8, else latin-1."""
+    decoder = codecs.getincrementaldecoder("utf-8")()
+    try:
+        for chunk in iter(lambda: source.read(_CHUNK), b""):
+            decoder.decode(chunk)
+        decoder.decode(b"", True)
+    except UnicodeDecodeError:
+        return "latin-1"
+    return "utf-8"
+
+
+def _read_lines(text, name):
+    """The lines of ``text`` one by one; a read error as a _Failure (not an
+    OSError, which the output would take for its own)."""
+    try:
+        for line in text:
+            yield line
+    except OSError as exc:
+        raise _Failure(name, 0, "cannot read the program: %s" % (exc.strerror or exc)) from None
+
+
+def _write_chunks(chunks, out):
+    """Write the chunks to ``out`` atomically ("-" or None: stdout). OUT: through
+    its temporary file, renamed over OUT after the last chunk. Stdout: through
+    an anonymous temporary file, copied to stdout after the last chunk, so that
+    a run that fails writes nothing there."""
+    if out not in (None, "-"):
+        try:
+            write_chunks_atomically(out, chunks, encoding="ascii", errors="replace")
+        except OSError as exc:
+            raise _Failure(out, 0, "cannot write the output: %s" % (exc.strerror or exc)) from None
+        return
+    try:
+        spool = tempfile.TemporaryFile("w+", encoding="utf-8", newline="")
+    except OSError as exc:
+        raise _Failure("<stdout>", 0, "cannot make the temporary file: %s" % (exc.strerror or exc)) from None
+    with spool:
+        try:
+            for chunk in chunks:
+                spool.write(chunk)
+            spool.seek(0)
+        except OSError as exc:
+            raise _Failure("<stdout>", 0, "cannot write the temporary file: %s" % (exc.strerror or exc)) from None
+        _write_stdout(iter(lambda: spool.read(_CHUNK), ""))
 
 
 def _write_output(text, out):
     """Write ``text`` to ``out`` atomically ("-" or None: stdout)."""
     if out in (None, "-"):
-        _write_stdout(text)
+        _write_stdout((text,))
         return
     try:
         write_atomically(out, text, encoding="ascii", errors="replace")
@@ -295,14 +395,15 @@ def _write_output(text, out):
         raise _Failure(out, 0, "cannot write the output: %s" % (exc.strerror or exc)) from None
 
 
-def _write_stdout(text):
-    """Write ``text`` to standard output; a closed or failing stdout (not a
+def _write_stdout(chunks):
+    """Write the text ``chunks`` to standard output; a closed or failing stdout (not a
     broken pipe, which main ends quietly) is a _Failure naming <stdout>."""
     stream = sys.stdout
     if stream is None:  # started with stdout closed (>&-)
         raise _Failure("<stdout>", 0, "cannot write the output: standard output is closed")
     try:
-        stream.write(text)
+        for chunk in chunks:
+            stream.write(chunk)
         stream.flush()
     except BrokenPipeError:
         raise
@@ -450,8 +551,7 @@ def _run(args, name):
     warnings: List[Tuple[int, CycleWarning]] = []
     try:
         if args.command == "expand":
-            text = _expand(args, warnings)
-            _write_output(text, args.output)
+            _expand(args, warnings)
         else:
             text = _emit(args, warnings)
             _write_output(text, None)

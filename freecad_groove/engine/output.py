@@ -14,7 +14,8 @@ nothing else is ever destroyed (the command line's ``-o`` and the posts).
 * the folder must exist and be writable by the same rules (the new text goes
   through a temporary file there);
 * the new text goes to a temporary file ``.NAME.XXXXXXXXXX.tmp`` next to the
-  target, is flushed to disk, gets the target's mode (and owner and group
+  target (chunk by chunk: nothing reaches the target before the last chunk),
+  is flushed to disk, gets the target's mode (and owner and group
   where the user may set them: root always) and is renamed over the target:
   the file is either the old one or the whole new one, never a mix. A file
   with other hard links is replaced at this name only.
@@ -22,18 +23,20 @@ nothing else is ever destroyed (the command line's ``-o`` and the posts).
 A refused path raises :class:`OutputRefused`, an ``OSError`` whose
 ``strerror`` says why in one line; other ``OSError`` propagate. The temporary
 file is removed on any error or exception, a ``KeyboardInterrupt`` or a signal
-handler's exception included: its name is chosen before the file is made
+handler's exception included, and an exception raised by the iterable of
+chunks (a translation error on a late line) too: its name is chosen before the file is made
 (``O_EXCL``), so an exception raised the instant after still finds it. Only a
 kill -9 or a crash during the final write can leave a ``.NAME.*.tmp`` behind.
 """
 
+import codecs
 import errno
 import os
 import secrets
 import stat
-from typing import Optional, Tuple
+from typing import Iterable, Optional, Tuple
 
-__all__ = ["OutputRefused", "write_atomically"]
+__all__ = ["OutputRefused", "write_atomically", "write_chunks_atomically"]
 
 _NOT_REGULAR = (
     (stat.S_ISDIR, "a directory"),
@@ -42,6 +45,9 @@ _NOT_REGULAR = (
     (stat.S_ISBLK, "a block device"),
     (stat.S_ISSOCK, "a socket"),
 )
+
+
+_BUFFER = 1 << 16  # bytes written to the temporary file at a time
 
 
 class OutputRefused(OSError):
@@ -114,10 +120,13 @@ def _create(path: str) -> int:
     return os.open(path, flags, 0o600)
 
 
-def _fill(fd: int, tmp: str, data: bytes, old: Optional[os.stat_result]) -> None:
-    """Write ``data`` to the temporary file and give it the old file's owner and mode."""
-    with os.fdopen(fd, "wb") as f:
-        f.write(data)
+def _fill(fd: int, tmp: str, chunks: Iterable[str], encoder: codecs.IncrementalEncoder,
+          old: Optional[os.stat_result]) -> None:
+    """Write the encoded ``chunks`` to the temporary file and give it the old file's owner and mode."""
+    with os.fdopen(fd, "wb", buffering=_BUFFER) as f:
+        for chunk in chunks:
+            f.write(encoder.encode(chunk))
+        f.write(encoder.encode("", True))
         f.flush()
         os.fsync(f.fileno())
     if old is None:
@@ -161,8 +170,19 @@ def write_atomically(filename: str, text: str, encoding: str = "utf-8", errors: 
     """Write ``text`` to the file ``filename`` means (see the module): the old
     file or the whole new one, nothing else touched, no temporary file left.
     Raises OutputRefused for a path it does not write, OSError on a failure."""
+    write_chunks_atomically(filename, (text,), encoding, errors)
+
+
+def write_chunks_atomically(filename: str, chunks: Iterable[str], encoding: str = "utf-8",
+                            errors: str = "strict") -> None:
+    """write_atomically for a text given in ``chunks`` (any iterable of str,
+    e.g. a generator making the text as it goes): the path is checked before
+    the first chunk is taken, each chunk is encoded and written to the
+    temporary file as it comes, and the target is replaced after the last.
+    An exception raised by ``chunks`` leaves the target untouched, removes the
+    temporary file and propagates unchanged."""
     target, old = _resolve(filename)
-    data = text.encode(encoding, errors)
+    encoder = codecs.getincrementalencoder(encoding)(errors)
     tmp = None
     try:
         for _attempt in range(100):
@@ -174,7 +194,7 @@ def write_atomically(filename: str, text: str, encoding: str = "utf-8", errors: 
                 tmp = None  # another file's name: not ours to remove
         else:
             raise FileExistsError(errno.EEXIST, "no free name for the temporary file", target)
-        _fill(fd, tmp, data, old)
+        _fill(fd, tmp, chunks, encoder, old)
         os.replace(tmp, target)
     except BaseException:
         if tmp is not None:

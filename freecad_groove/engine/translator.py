@@ -3,6 +3,7 @@ modal state, and translate them with every grooving cycle expanded.
 
     translate_program(text, dialect, settings, target="linuxcnc", source_name="PROGRAM", start=None,
                       tools=None, warnings=None) -> str
+    iter_translation(text or lines, dialect, ...) -> Iterator[str]   # the same text, chunk by chunk
 
 ``dialect`` is the input: "sinumerik" (CYCLE93), "ab9" (G77/G76), "fanuc"
 (two-block G75/G74), "haas" (one-block G75/G74). ``target`` is "linuxcnc" or
@@ -114,7 +115,7 @@ on translate_base.py's helpers.
 """
 
 import re
-from typing import List, Optional, Tuple
+from typing import Iterable, Iterator, List, Optional, Tuple, Union
 
 from .errors import CycleError, ProgramError
 from .input_controls import COMPENSATION, CYCLE, DWELL, OFFSET, PLANE, REFUSED, g_code_key, input_control
@@ -130,7 +131,7 @@ from .translate_machine import MachineTranslation
 from .translate_motion import MotionTranslation
 from .warnings import CycleWarning
 
-__all__ = ["Translator", "translate_program"]
+__all__ = ["Translator", "iter_translation", "program_lines", "translate_program"]
 
 MAX_FANUC_BLOCK_NUMBER = 99999  # N of at most 5 digits
 
@@ -139,7 +140,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
     """Reads a program block by block and writes the translation.
 
     ``line(text, number)`` reads one line; ``state`` is the ModalState after it;
-    ``result()`` is the translated program text; ``warnings`` the (line,
+    ``result()`` is the translated program text; ``translate(lines)`` reads
+    every line and yields the text as it is made; ``warnings`` the (line,
     CycleWarning) of the cycles read so far, in line order.
     """
 
@@ -299,8 +301,13 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
 
     # -- result -------------------------------------------------------------
 
-    def result(self) -> str:
-        """The translated program text."""
+    def header_known(self) -> bool:
+        """Whether the header is settled: it names the O number, which may only
+        come before the first block (or never, for a control without one)."""
+        return self.started or self.program_number is not None or not self.control.program_numbers
+
+    def header(self) -> List[str]:
+        """The lines that open the translation (modes at the start, the title)."""
         header_writer = Writer(self.target, self.start_metric, self.start_feed_per_rev)
         title = "%s: %s program%s, cycles expanded for %s by freecad-groove" % (
             self.source_name,
@@ -308,16 +315,80 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
             " O%d" % self.program_number if self.program_number is not None else "",
             self.target,
         )
-        lines = header_writer.header(title, self.program_number if self.fanuc_output else None)
-        lines.extend(self.body)
-        if not self.state.ended:
-            lines.append(self.writer.spec.end)
+        return header_writer.header(title, self.program_number if self.fanuc_output else None)
+
+    def footer(self) -> List[str]:
+        """The lines that close the translation (the end when the program has none)."""
+        lines = [] if self.state.ended else [self.writer.spec.end]
         if self.fanuc_output:
             lines.append("%")
-        return "\n".join(lines) + "\n"
+        return lines
+
+    def result(self) -> str:
+        """The translated program text (after ``line`` was called for every line)."""
+        return "\n".join(self.header() + self.body + self.footer()) + "\n"
+
+    def translate(self, lines: Iterable[str]) -> Iterator[str]:
+        """Read ``lines`` (without their ends of line) one by one and yield the
+        translation as it is made: the header once it is settled, then the
+        output of each line as soon as it is read (one chunk of whole lines,
+        each ending in a newline), then the footer. ``"".join`` of the chunks is
+        ``result()``; the output of the lines read is not kept."""
+        pending = True  # the header is not written yet
+        for number, text in enumerate(lines, 1):
+            self.line(text, number)
+            if pending and self.header_known():
+                pending = False
+                yield _chunk(self.header())
+            if not pending and self.body:
+                body, self.body = self.body, []
+                yield _chunk(body)
+        if pending:
+            yield _chunk(self.header())
+        yield _chunk(self.body + self.footer())
+        self.body = []
+
+
+def _chunk(lines: List[str]) -> str:
+    return "".join(line + "\n" for line in lines)
 
 
 _LINES = re.compile(r"\r\n|\r|\n")
+_END_OF_LINE = ("\r\n", "\n", "\r")
+
+
+def program_lines(program: Union[str, Iterable[str]]) -> Iterator[str]:
+    """The lines of a program without their ends of line, read lazily from an
+    iterable of lines as a text file yields them (each with its ``\n``,
+    ``\r\n`` or ``\r``), or split from a whole text. Either way the same lines
+    as ``re.split(r"\r\n|\r|\n", text)``: a text ending in a newline has an
+    empty last line."""
+    if isinstance(program, str):
+        yield from _LINES.split(program)
+        return
+    ended = True  # an empty program is one empty line
+    for line in program:
+        ended = line.endswith(_END_OF_LINE)
+        yield line[:-2] if line.endswith("\r\n") else line[:-1] if ended else line
+    if ended:
+        yield ""
+
+
+def iter_translation(program: Union[str, Iterable[str]], dialect: str, settings: Settings = DEFAULT_SETTINGS,
+                     target: str = "linuxcnc", source_name: str = "PROGRAM", start: Optional[MachineState] = None,
+                     tools: Optional[ToolTable] = None,
+                     warnings: Optional[List[Tuple[int, CycleWarning]]] = None) -> Iterator[str]:
+    """translate_program, block by block: yields the translated text in chunks
+    of whole lines as ``program`` is read (a text, or lines read lazily, e.g. a
+    text file object: see program_lines), so neither the input nor the output
+    need be held whole. ``"".join(iter_translation(...))`` is translate_program's
+    result; a line that cannot be translated raises ProgramError when the
+    translation reaches it, after the chunks of the lines before it.
+    ``warnings``: as for translate_program, appended to as the lines are read."""
+    translator = Translator(dialect, settings, target=target, source_name=source_name, start=start, tools=tools)
+    if warnings is not None:
+        translator.warnings = warnings  # appended to as the lines are read
+    return translator.translate(program_lines(program))
 
 
 def translate_program(
@@ -341,11 +412,6 @@ def translate_program(
     cannot be translated. ``warnings`` (a list, optional) gets a (line,
     warnings.CycleWarning) appended for each warning of a cycle, as the lines
     are read (so also those before a line that raises); they never change the
-    text returned.
+    text returned. (iter_translation gives the same text in chunks.)
     """
-    translator = Translator(dialect, settings, target=target, source_name=source_name, start=start, tools=tools)
-    if warnings is not None:
-        translator.warnings = warnings  # appended to as the lines are read
-    for number, line in enumerate(_LINES.split(text), 1):
-        translator.line(line, number)
-    return translator.result()
+    return "".join(iter_translation(text, dialect, settings, target, source_name, start, tools, warnings))
