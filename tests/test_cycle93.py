@@ -15,6 +15,8 @@ from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.cycles.cycle93_constants import (
     DEFAULT_VRT_INCH,
     DEFAULT_VRT_MM,
+    FREE_OFF_INCH,
+    FREE_OFF_MM,
     REENTRY_CLEARANCE_INCH,
     REENTRY_CLEARANCE_MM,
 )
@@ -332,14 +334,21 @@ def test_plain_groove_moves_by_hand():
     # VRT above the surface (X21), three infeeds of 1 (X19, X18, X17); after
     # the first two a chip-breaking retract of VRT (X20, X19), a rapid back
     # down the slot just cut to 0.1 above the depth reached (X19.1, X18.1),
-    # then the feed on. No contour pass (square flanks, no allowance), back to
-    # the start the way the approach came (along X, then along Z).
+    # then the feed on. At the bottom of the second and third plunge the
+    # free-off: a feed of 1 mm along Z back toward the previous plunge (1.5
+    # away), to Z-13.5 and Z-15; the first plunge has none. Out from there.
+    # No contour pass (square flanks, no allowance), back to the start the
+    # way the approach came (along X from the freed Z-15, then along Z).
     moves = call().expand(MachineState(x=25.0, z=0.0), TOOL)
     expected = [(RAPID, 25.0, -13.0)]
-    for z in (-13.0, -14.5, -16.0):
+    for z, freed in ((-13.0, None), (-14.5, -13.5), (-16.0, -15.0)):
         expected += [(RAPID, 21.0, z), (FEED, 19.0, z), (RAPID, 20.0, z), (RAPID, 19.1, z),
-                     (FEED, 18.0, z), (RAPID, 19.0, z), (RAPID, 18.1, z), (FEED, 17.0, z), (RAPID, 21.0, z)]
-    expected += [(RAPID, 25.0, -16.0), (RAPID, 25.0, 0.0)]
+                     (FEED, 18.0, z), (RAPID, 19.0, z), (RAPID, 18.1, z), (FEED, 17.0, z)]
+        if freed is None:
+            expected += [(RAPID, 21.0, z)]  # the first plunge: straight out
+        else:
+            expected += [(FEED, 17.0, freed), (RAPID, 21.0, freed)]  # free-off along the bottom, then out
+    expected += [(RAPID, 25.0, -15.0), (RAPID, 25.0, 0.0)]
     assert [(m.kind, round(m.x, 9), round(m.z, 9)) for m in moves] == expected
 
 
@@ -370,6 +379,72 @@ def test_after_each_chip_break_the_blade_rapids_back_down_its_slot(kw, start, me
     assert count == (breaks if breaks is not None else len(chip_breaks(moves, c.plunge_direction(), vrt))) > 0
 
 
+def free_offs(c, start, tool, metric=True):
+    """[(k, freed u or None)] of each plunge k: after its bottom (and dwell)
+    the next move, in the groove frame, checked to be a FEED along the bottom
+    followed by a RAPID straight out, or that RAPID alone (None)."""
+    geo = c.geometry(tool, metric=metric)
+    moves = [m for m in c.expand(start, tool) if m.kind != DWELL]
+    uv = [geo.frame.blade_of(m.x, m.z) for m in moves]
+    found = []
+    for k, u in enumerate(geo.plunge_positions()):
+        bottom = geo.rough_env.lowest(u)
+        i = next(j for j, (a, b) in enumerate(uv) if moves[j].kind == FEED
+                 and a == pytest.approx(u, abs=1e-9) and b == pytest.approx(bottom, abs=1e-9))
+        freed = None
+        if moves[i + 1].kind == FEED:
+            freed, level = uv[i + 1]
+            assert level == pytest.approx(bottom, abs=1e-9)  # along the bottom, nothing deeper
+            i += 1
+        assert moves[i + 1].kind == RAPID and uv[i + 1][0] == pytest.approx(uv[i][0], abs=1e-9)
+        assert uv[i + 1][1] > bottom  # straight out from where the blade stands
+        found.append((k, freed, u, bottom))
+    return found
+
+
+@pytest.mark.parametrize(
+    "kw, start, metric, tool, free",
+    [
+        # The plain groove: 3 plunges 1.5 apart, free-off 1 mm.
+        (dict(), MachineState(x=25.0, z=0.0), True, TOOL, 1.0),
+        # with a dwell at the base: the dwell first, then the free-off.
+        (dict(dwt=2.0), MachineState(x=25.0, z=0.0), True, TOOL, 1.0),
+        # A face groove and an internal one.
+        (dict(typ=2, angc=90, axfa=10.0, axsa=0.0, vrt=0.5), MachineState(x=5.0, z=2.0), True, TOOL, 1.0),
+        (dict(typ=7, idep=0.7), MachineState(x=10.0, z=5.0), True, TOOL, 1.0),
+        # 3.5 wide: 2 plunges 0.5 apart, so the free-off is 0.5 (less room).
+        (dict(widg=3.5), MachineState(x=25.0, z=0.0), True, TOOL, 0.5),
+        # Inch: 0.04 in.
+        (dict(axfa=1.0, axsa=0.0, widg=0.5, depg=0.1, idep=0.05), MachineState(x=1.2, z=0.5, metric=False), False,
+         Settings(tool=GroovingTool(0.12, 0.01)), 0.04),
+    ],
+)
+def test_from_the_second_plunge_on_the_blade_frees_off_toward_the_previous_one(kw, start, metric, tool, free):
+    found = free_offs(call(**kw), start, tool, metric)
+    assert len(found) >= 2 and found[0][1] is None  # the first plunge: straight out
+    for (_k, _f, u_prev, _b), (_k2, freed, u, _bottom) in zip(found, found[1:]):
+        step = min(free, abs(u - u_prev))
+        assert freed == pytest.approx(u - math.copysign(step, u - u_prev), abs=1e-9)
+
+
+def test_no_free_off_where_the_previous_plunge_stopped_higher():
+    # The seed example's base is oblique, deeper away from the start side:
+    # each plunge's predecessor stopped higher, its slot not cut this deep.
+    found = free_offs(Cycle93.parse(SEED_CALL), SEED_START, TOOL)
+    for (_k, _f, u_prev, bottom_prev), (_k2, freed, u, bottom) in zip(found, found[1:]):
+        if bottom_prev > bottom + 1e-6:
+            assert freed is None
+        else:
+            assert freed == pytest.approx(u - math.copysign(min(1.0, abs(u - u_prev)), u - u_prev), abs=1e-9)
+
+
+def test_free_off_is_the_one_in_the_readme():
+    assert (FREE_OFF_MM, FREE_OFF_INCH) == (1.0, 0.04)
+    readme = (Path(__file__).parent.parent / "README.md").read_text(encoding="utf-8")
+    row = next(line for line in readme.splitlines() if line.startswith("| free-off"))
+    assert "1 mm" in row and "0.04 in" in row and "FREE_OFF_MM" in row and "FEED" in row
+
+
 def test_reentry_clearance_is_the_one_in_the_readme_and_below_the_default_vrt():
     assert (REENTRY_CLEARANCE_MM, REENTRY_CLEARANCE_INCH) == (0.1, 0.004)
     assert REENTRY_CLEARANCE_MM < DEFAULT_VRT_MM and REENTRY_CLEARANCE_INCH < DEFAULT_VRT_INCH
@@ -381,11 +456,12 @@ def test_reentry_clearance_is_the_one_in_the_readme_and_below_the_default_vrt():
 def test_plain_groove_is_plunged_only_with_no_contour_pass():
     moves = call().expand(MachineState(x=25.0, z=0.0), TOOL)
     feeds = [m for m in moves if m.kind == FEED]
-    # every feed is a straight plunge (no Z motion while feeding)
+    # every feed is a straight plunge (no Z motion while feeding) but for the
+    # free-offs: along Z at the depth just reached
     prev = None
     for m in moves:
         if m.kind == FEED:
-            assert prev is not None and m.z == prev.z
+            assert prev is not None and (m.z == prev.z or (prev.kind == FEED and m.x == prev.x == 17.0))
         prev = m
     assert min(m.x for m in feeds) == pytest.approx(17.0)
     # plunge positions cover the groove from -16 to -10 with a 3 mm blade

@@ -51,11 +51,66 @@ def without_chip_break_reentries(commands):
     """``commands`` (path_commands) without the rapid back down its own slot
     that CYCLE93 makes after each chip-breaking retract since issue 9 (a G1
     into the part, a G0 back out along the same line, then a G0 back in along
-    it, short of where the G1 ended): the path an earlier release wrote."""
+    it, short of where the G1 ended), nor the free-off at the bottom of its
+    later plunges (see _without_free_offs): the path an earlier release wrote."""
     out = []
     for name, words in commands:
         if name == "G0" and len(out) >= 2 and out[-1][0] == "G0" and out[-2][0] == "G1" \
                 and _back_in(out[-2][1], out[-1][1], words):
             continue
         out.append((name, words))
+    return _without_free_offs(out)
+
+
+FREE_OFF_MM = 1.0  # the saved documents are metric
+
+
+def _moved(a, b):
+    """The axes along which ``b`` moves from ``a`` (words as in path_commands)."""
+    return [k for k in ("X", "Y", "Z") if k in b and a.get(k) != b[k]]
+
+
+def _without_free_offs(commands):
+    """``commands`` without CYCLE93's free-off (issue 9): at the bottom of a
+    plunge (a G0 then a G1 along one axis) a G1 of at most 1 mm along the
+    other axis, then G0s out from there. The free-off is dropped and the G0s
+    that follow it, up to the next G1, start from the plunge's position again
+    (the freed coordinate back to the plunge's), as an earlier release wrote
+    them; every other move is kept as it is."""
+    out, swap, held = [], None, None
+    for name, words in commands:
+        if held is not None:  # a G1 that looked like a free-off: one only if a rapid goes straight out next
+            held_words, free = held
+            held = None
+            if name == "G0" and words.get(free[0], free[1]) == free[1] and _moved(held_words, words):
+                swap = free
+            else:
+                out.append(("G1", held_words))
+        if name == "G1":
+            swap = None
+            free = _free_off(out, words)
+            if free is not None:
+                held = (words, free)
+                continue
+        elif name == "G0" and swap is not None and words.get(swap[0]) == swap[1]:
+            words = dict(words, **{swap[0]: swap[2]})
+        out.append((name, words))
+    if held is not None:
+        out.append(("G1", held[0]))
     return out
+
+
+def _free_off(out, words):
+    """(axis, freed value, plunge's value) when a G1 with ``words`` after
+    ``out`` is a free-off, else None."""
+    last = [(n, w) for n, w in out[-3:] if n != "G4"][-2:]  # a dwell may stand at the bottom
+    if [n for n, _w in last] != ["G0", "G1"]:
+        return None
+    before, bottom = last[0][1], last[1][1]
+    down, along = _moved(before, bottom), _moved(bottom, words)
+    if len(down) != 1 or len(along) != 1 or down == along:
+        return None
+    axis = along[0]
+    if not 0 < abs(words[axis] - bottom[axis]) <= FREE_OFF_MM + 1e-6:
+        return None
+    return axis, words[axis], bottom[axis]

@@ -23,6 +23,12 @@ DEFAULT_VRT_INCH = 0.04
 # air, not VRT. Never more than VRT (with VRT below it, no rapid back down).
 REENTRY_CLEARANCE_MM = 0.1
 REENTRY_CLEARANCE_INCH = 0.004
+# Seed: "From the second cut along the groove width onwards, the tool will
+# retract by 1 mm before each retraction": at the bottom of every plunge after
+# the first the blade feeds this far along the groove's axis back toward the
+# previous plunge (never further than it), then rapids out.
+FREE_OFF_MM = 1.0
+FREE_OFF_INCH = 0.04
 PATH_TOLERANCE = 0.0002  # chord error allowed on contour passes and arcs
 EPS = 1e-9
 # A plunge that ends this close to the roughing profile's base line is on the

@@ -11,13 +11,12 @@ import math
 from typing import TYPE_CHECKING, List, Optional, Tuple
 
 from ..envelope import Envelope, arc_points
-from ..moves import REFERENCE_PLUS, Move, dwell, feed, rapid
+from ..moves import REFERENCE_PLUS, Move, feed, rapid
 from ..numbers import MAX_WORD, format_given, format_value
 from ..settings import Settings
 from .cycle93_constants import (
     ALARM_FORM,
     ALARM_WIDTH,
-    BASE_TOLERANCE,
     DEFAULT_VRT_INCH,
     DEFAULT_VRT_MM,
     EPS,
@@ -25,10 +24,9 @@ from .cycle93_constants import (
     MAX_FLANK_ANGLE,
     NAME,
     PATH_TOLERANCE,
-    REENTRY_CLEARANCE_INCH,
-    REENTRY_CLEARANCE_MM,
     cycle93_error,
 )
+from .cycle93_plunges import plunges
 from .cycle93_size import ExpansionSize, plunge_count
 from .cycle93_warnings import NoRoom, no_room
 
@@ -468,57 +466,13 @@ class GrooveGeometry:
         for u, v in approach:
             go("r", u, v)
 
-        full_depth = self._plunges(positions, go, out)
+        full_depth = plunges(self, positions, go, out)
         self._profile_passes(full_depth, go)
 
         # Back to the start point the way the approach came.
         for u, v in self._retreat(us, vs, last[0], along_first):
             go("r", u, v)
         return out
-
-    def _plunges(self, positions, go, out):
-        """Steps 1 and 2: plunges in equal infeeds with chip-breaking retracts
-        (VRT up, then a rapid back down the blade's own slot to the re-entry
-        clearance), DWT at the bottom of those that reach the base; returns
-        the u of the plunges that reached the deepest bottom."""
-        p = self.params
-        vrt, idep, dwt = p["VRT"], p["IDEP"], p["DWT"]
-        reentry = min(vrt, REENTRY_CLEARANCE_MM if self.metric else REENTRY_CLEARANCE_INCH)
-        bottoms = [self.rough_env.lowest(u) for u in positions]
-        base = self._base_envelope()
-        deepest = min(bottoms)
-        full_depth = []
-        for u, bottom in zip(positions, bottoms):
-            top = self.contour_top(u)
-            clear = top + vrt
-            if bottom >= top - EPS:
-                continue  # the blade cannot enter here without cutting the allowance
-            go("r", u, clear)
-            total = top - bottom
-            n = max(1, int(math.ceil(total / idep - 1e-9)))
-            inc = total / n
-            for k in range(1, n + 1):
-                level = bottom if k == n else top - k * inc
-                go("f", u, level)
-                if k < n:
-                    go("r", u, level + vrt)
-                    go("r", u, level + reentry)  # only through the slot just cut
-            if dwt > 0 and bottom <= base.lowest(u) + BASE_TOLERANCE:
-                x, z = self.frame.blade(u, bottom)
-                out.append(dwell(x, z, dwt))
-            go("r", u, clear)
-            if bottom <= deepest + 1e-6:
-                full_depth.append(u)
-        return full_depth
-
-    def _base_envelope(self) -> Envelope:
-        """Where the blade stands on the roughing profile's base line alone
-        (extended past both flanks): a plunge whose bottom is there reached
-        the base, not a flank or a base corner above it."""
-        (u1, v1), (u2, v2) = self.rough_corners[1].vertex, self.rough_corners[2].vertex
-        lo, hi = self.rough_top[0][0], self.rough_top[-1][0]
-        line = [(lo, v1 + (lo - u1) * self.slope), (hi, v2 + (hi - u2) * self.slope)]
-        return Envelope(line, self.tool.width, self.tool.corner_radius)
 
     def _profile_passes(self, full_depth, go):
         """Step 3: take the plunges' staircase off flanks, base corners and an

@@ -79,8 +79,8 @@ class ExpansionSize:
         bottom = min(c.vertex[1] for c in rough)
         self.infeeds = infeed_count(top - bottom, p["IDEP"])
         # Over, the infeeds, the chip-breaking retracts and re-entries, the
-        # dwell, out: 1 + n + 2 (n - 1) + 2.
-        self.plunge_moves = self.plunges * (3 * self.infeeds + 1)
+        # dwell, the free-off, out: 1 + n + 2 (n - 1) + 3.
+        self.plunge_moves = self.plunges * (3 * self.infeeds + 2)
         # The blade's corner rolls at most once over every turn of the profile.
         turn = sum(c.turn for c in geo.final_corners)
         blade = arc_chords(tool.corner_radius, turn)
