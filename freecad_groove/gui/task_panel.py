@@ -14,7 +14,9 @@ While the panel is open every changed value re-plans the op from the panel's
 values (ObjectGroove.plan_with: the document is not touched) and redraws the
 preview (preview.py). An invalid value marks its field red, the engine's
 message (with the Siemens alarm number where there is one) shows on the
-pages, and OK and Apply are refused until it is fixed. OK writes the values
+pages, and OK and Apply are refused until it is fixed. Warnings of the plans
+(what the op cannot do as programmed but does anyway) show in amber under it,
+one a line, and mark their fields amber; OK stays enabled. OK writes the values
 into the op and recomputes; Cancel aborts the panel's transaction (and, for a
 new op, deletes it), so the document is as it was.
 
@@ -34,10 +36,12 @@ from PySide import QtCore, QtGui
 
 from ..freecad import faces as faces_mod
 from ..freecad import groove_op
+from ..freecad.groove_properties import cycle93_properties
 from . import ICON, PANELS, preview
 from .widgets import (
     CONTEXT,
     ERROR_LABEL,
+    WARNING_LABEL,
     QuantityFields,
     add_error_label,
     add_label,
@@ -46,8 +50,11 @@ from .widgets import (
     fill_combo,
     load_form,
     mark_invalid,
+    mark_warned,
+    new_warning_label,
     select_data,
     show_error,
+    show_warnings,
     svg_pixmap,
 )
 
@@ -217,6 +224,7 @@ class GroovePage(PathOpGui.TaskPanelPage):
         error.parentWidget().layout().removeWidget(error)
         form.layout().insertWidget(0, error)
         error.setVisible(False)
+        form.layout().insertWidget(1, new_warning_label(form))
         return form
 
     def taskPanelBaseGeometryPage(self, obj, features):
@@ -228,6 +236,8 @@ class GroovePage(PathOpGui.TaskPanelPage):
         self.preview = None
         self.error = None  # the message while the values make no groove
         self.invalid = ()  # properties marked
+        self.warnings = []  # the plans' warning texts shown
+        self.warned = ()  # properties the warnings name
         self.plans = []
         self.replans = 0
         self.on_validity_changed = None
@@ -343,6 +353,7 @@ class GroovePage(PathOpGui.TaskPanelPage):
             self.preview = preview.Preview(view if hasattr(view, "getSceneGraph") else None)
         self.preview.show(plans)
         self.set_error(error, invalid)
+        self.set_warnings(plans)
 
     def _show_angc(self, obj, plans):
         if plans:
@@ -363,16 +374,30 @@ class GroovePage(PathOpGui.TaskPanelPage):
         mark the fields of ``properties``."""
         was_valid = self.error is None
         self.error = message
-        for prop in self.invalid:
-            mark_invalid(self.field(prop), False)
-        self.invalid = tuple(properties) if message else ()
-        for prop in self.invalid:
-            mark_invalid(self.field(prop), True)
+        self.invalid = self._mark_fields(self.invalid, properties if message else (), mark_invalid)
         mark_invalid(self._base_list(), "Base" in self.invalid)
         for page in [self] + list(self.other_pages):
             show_error(child(page.form, ERROR_LABEL), message)
         if was_valid != (message is None) and self.on_validity_changed is not None:
             self.on_validity_changed()
+
+    def set_warnings(self, plans: list) -> None:
+        """Show the warnings of ``plans`` (GroovePlan.warning_texts) on every
+        page and mark the fields they name; none while an error stands."""
+        plans = [] if self.error else plans
+        self.warnings = [text for plan in plans for text in plan.warning_texts]
+        named = [prop for plan in plans for warning in plan.warnings for prop in cycle93_properties(warning.parameter)]
+        self.warned = self._mark_fields(self.warned, tuple(dict.fromkeys(named)), mark_warned)
+        for page in [self] + list(self.other_pages):
+            show_warnings(child(page.form, WARNING_LABEL), self.warnings)
+
+    def _mark_fields(self, old: tuple, new: tuple, mark: object) -> tuple:
+        """Unmark the fields of the properties ``old``, mark those of ``new``; returns ``new``."""
+        for prop in old:
+            mark(self.field(prop), False)
+        for prop in new:
+            mark(self.field(prop), True)
+        return tuple(new)
 
     def _base_list(self):
         for page in self.other_pages:

@@ -1,7 +1,9 @@
 """Small Qt helpers the Groove task panel's pages are built from: loading a
 page's .ui form, finding its widgets, filling and reading combo boxes,
 marking invalid fields, showing the engine's message, and the quantity fields
-bound to op properties.
+bound to op properties. Warnings (what the op cannot do as programmed but
+does anyway) show in amber under the error line and mark their fields in
+amber; they never block OK.
 
 GUI layer: Qt only through FreeCAD's ``PySide`` shim. Widgets and FreeCAD
 objects are typed ``object``.
@@ -22,6 +24,10 @@ INVALID_STYLE = "border: 2px solid #d00000;"
 ERROR_STYLE = "color: #b00000;"
 INVALID_PROPERTY = "grooveInvalid"  # the Qt property that marks a field invalid
 ERROR_LABEL = "errorLabel"  # object name of the label the engine's message shows in
+WARNED_STYLE = "border: 2px solid #e08000;"  # amber: the op runs, not as programmed
+WARNING_STYLE = "color: #b35c00;"
+WARNED_PROPERTY = "grooveWarned"  # the Qt property that marks a field a warning names
+WARNING_LABEL = "warningLabel"  # object name of the label the warnings show in
 
 
 def load_form(name: str) -> object:
@@ -72,26 +78,46 @@ def connect_changed(widget: object, slot: object) -> None:
         widget.valueChanged.connect(lambda *_a: slot())
 
 
+def _mark(widget: object, prop: str, on: bool) -> None:
+    """Set the Qt property ``prop`` of a field; its frame follows: red while
+    invalid, amber while only warned, none otherwise."""
+    if widget is None or (widget.property(prop) is True) == bool(on):
+        return
+    widget.setProperty(prop, bool(on))
+    if widget.property(INVALID_PROPERTY) is True:
+        widget.setStyleSheet(INVALID_STYLE)
+    else:
+        widget.setStyleSheet(WARNED_STYLE if widget.property(WARNED_PROPERTY) is True else "")
+
+
 def mark_invalid(widget: object, invalid: bool) -> None:
     """Frame a field red while its value is what makes the groove invalid."""
-    if widget is None:
+    _mark(widget, INVALID_PROPERTY, invalid)
+
+
+def mark_warned(widget: object, warned: bool) -> None:
+    """Frame a field amber while a warning names it (red wins while it is also invalid)."""
+    _mark(widget, WARNED_PROPERTY, warned)
+
+
+def _show(label: object, message: object, style: str) -> None:
+    if label is None:
         return
-    if invalid:
-        if widget.property(INVALID_PROPERTY) is not True:
-            widget.setProperty(INVALID_PROPERTY, True)
-            widget.setStyleSheet(INVALID_STYLE)
-    elif widget.property(INVALID_PROPERTY) is True:
-        widget.setProperty(INVALID_PROPERTY, False)
-        widget.setStyleSheet("")
+    label.setText(message or "")
+    label.setStyleSheet(style)
+    label.setVisible(bool(message))
 
 
 def show_error(label: object, message: object) -> None:
     """Show ``message`` in an error label, or hide the label (message None or "")."""
-    if label is None:
-        return
-    label.setText(message or "")
-    label.setStyleSheet(ERROR_STYLE)
-    label.setVisible(bool(message))
+    _show(label, message, ERROR_STYLE)
+
+
+def show_warnings(label: object, lines: list) -> None:
+    """Show the warning ``lines`` (the engine's texts), one a line, in a
+    warning label, or hide the label when there are none."""
+    text = "\n".join(translate(CONTEXT, "Warning: {0}").format(line) for line in lines)
+    _show(label, text, WARNING_STYLE)
 
 
 def add_to_layout(layout: object, widget: object) -> None:
@@ -117,10 +143,19 @@ def add_label(form: object, name: str) -> object:
 
 
 def add_error_label(form: object) -> object:
-    """The label the engine's message shows in (objectName errorLabel), hidden while all is well."""
+    """The label the engine's message shows in (objectName errorLabel) and,
+    under it, the warning label (warningLabel), hidden while all is well."""
     label = _new_label(form, ERROR_LABEL)
     label.setVisible(False)
     add_to_layout(form.layout(), label)
+    add_to_layout(form.layout(), new_warning_label(form))
+    return label
+
+
+def new_warning_label(form: object) -> object:
+    """A hidden label for the warnings (objectName warningLabel), not yet in a layout."""
+    label = _new_label(form, WARNING_LABEL)
+    label.setVisible(False)
     return label
 
 

@@ -216,6 +216,55 @@ def test_error_on_a_corner_names_the_alarm_and_marks_the_corner(shop):
     screenshot("%s-invalid-corners" % version())
 
 
+def test_allowances_that_leave_the_blade_no_room_warn_in_amber_and_ok_stays(shop):
+    doc, job, model = shop
+    op, panel, page = start_command(doc, model, "cylinder")
+    label = widgets.child(page.form, "warningLabel")
+    flank = page.field("FlankAllowance")
+    assert page.warnings == [] and not label.isVisible()
+    # The 3 mm blade in the 4 mm wide groove: flank allowances of 0.6 leave a 2.8 mm roughing base.
+    replan(page, flank, "0.6 mm")
+    assert page.error is None and len(page.warnings) == 1
+    text = page.warnings[0]
+    assert text.split(": ", 1)[0].endswith("." + face_name(model.Shape, "cylinder"))  # "Shaft.Face3"
+    assert text.split(": ", 1)[1].startswith("groove 1: CYCLE93: the allowances")
+    assert "FAL2=0.6" in text and "no room for the 3 mm blade" in text and "2.8 mm wide" in text
+    assert label.isVisible() and label.text() == "Warning: " + text
+    assert label.styleSheet() == widgets.WARNING_STYLE != widgets.ERROR_STYLE
+    assert not widgets.child(page.form, "errorLabel").isVisible()
+    assert flank.property("grooveWarned") is True and flank.property("grooveInvalid") is not True
+    assert flank.styleSheet() == widgets.WARNED_STYLE != widgets.INVALID_STYLE
+    assert page.field("BaseAllowance").property("grooveWarned") is not True
+    assert task_button(panel, Ok).isEnabled()
+    tool_page = next(p for p in panel.featurePages if isinstance(p, task_panel.ToolPage))
+    assert widgets.child(tool_page.form, "warningLabel").text() == label.text()
+    for area in FreeCADGui.getMainWindow().findChildren(QtGui.QScrollArea):  # the message, for the picture
+        if area.isAncestorOf(label):
+            area.ensureWidgetVisible(label)
+    screenshot("%s-allowance-warning" % version())
+
+    # An error replaces the warning while it stands.
+    replan(page, page.field("Width"), "2 mm")
+    assert page.error is not None and page.warnings == [] and not label.isVisible()
+    assert flank.property("grooveWarned") is not True and not task_button(panel, Ok).isEnabled()
+    replan(page, page.field("Width"), "4 mm")
+    assert page.error is None and len(page.warnings) == 1 and flank.property("grooveWarned") is True
+
+    # A value that leaves the blade room: the warning goes.
+    replan(page, flank, "0.2 mm")
+    assert page.warnings == [] and not label.isVisible()
+    assert flank.property("grooveWarned") is not True and flank.styleSheet() == ""
+
+    # Warnings never block: OK writes the values.
+    replan(page, flank, "0.6 mm")
+    assert len(page.warnings) == 1 and task_button(panel, Ok).isEnabled()
+    task_button(panel, Ok).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    process(0.1)
+    assert ops(job) == [op] and op.FlankAllowance.Value == pytest.approx(0.6)
+    assert [len(plan.warnings) for plan in op.Proxy.plan(op)] == [1]
+
+
 def test_cancel_leaves_no_op(shop):
     doc, job, model = shop
     before = sorted(o.Name for o in doc.Objects)
