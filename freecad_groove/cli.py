@@ -66,7 +66,7 @@ from .cli_options import (
 )
 from .engine import registry
 from .engine.input_controls import DIALECTS, INPUT_CONTROLS
-from .engine.output import write_atomically, write_chunks_atomically
+from .engine.output import write_chunks_atomically
 from .engine.registry import CALL, CycleEntry, CycleWord
 from .engine.targets import TARGETS
 from .engine.warnings import CycleWarning, cycle_warnings
@@ -241,13 +241,24 @@ class _Failure(Exception):
         self.line = line
         self.message = message
 
+    @classmethod
+    def of_program_error(cls, name, exc):
+        """``NAME:LINE: message`` for an engine ProgramError (line 0 when it has none)."""
+        return cls(name, exc.line if exc.line is not None else 0, str(exc))
+
+
+def _program_name(path):
+    """How messages name a file given on the command line ("-": standard input)."""
+    return "<stdin>" if path == "-" else path
+
 
 def _one_line(text):
     return " ".join(str(text).split())
 
 
-def _read_program(path, what="the program"):
-    name = "<stdin>" if path == "-" else path
+def _read_text(path, what):
+    """A small text file (the tool table) read whole: UTF-8, else Latin-1."""
+    name = _program_name(path)
     try:
         if path == "-":
             data = sys.stdin.buffer.read()
@@ -275,11 +286,11 @@ def _tool_table(args):
                        "given: the table gives each tool's own; give --tool-width too for the tools it does not list")
     if path == "-" and args.program == "-":
         raise _Failure("<stdin>", 0, "the program and the tool table cannot both be read from standard input")
-    name, text = _read_program(path, "the tool table")
+    name, text = _read_text(path, "the tool table")
     try:
         return read_tool_table(text, name)
     except ProgramError as exc:
-        raise _Failure(name, exc.line if exc.line is not None else 0, str(exc)) from None
+        raise _Failure.of_program_error(name, exc) from None
 
 
 def _expand(args, warnings):
@@ -292,7 +303,7 @@ def _expand(args, warnings):
     from .engine.translator import iter_translation
 
     tools = _tool_table(args)
-    name = "<stdin>" if args.program == "-" else args.program
+    name = _program_name(args.program)
     with _open_program(args.program, name) as text:
         chunks = iter_translation(
             _read_lines(text, name),
@@ -307,7 +318,7 @@ def _expand(args, warnings):
         try:
             _write_chunks(chunks, args.output)
         except ProgramError as exc:
-            raise _Failure(name, exc.line if exc.line is not None else 0, str(exc)) from None
+            raise _Failure.of_program_error(name, exc) from None
 
 
 @contextlib.contextmanager
@@ -384,17 +395,6 @@ def _write_chunks(chunks, out):
         _write_stdout(iter(lambda: spool.read(_CHUNK), ""))
 
 
-def _write_output(text, out):
-    """Write ``text`` to ``out`` atomically ("-" or None: stdout)."""
-    if out in (None, "-"):
-        _write_stdout((text,))
-        return
-    try:
-        write_atomically(out, text, encoding="ascii", errors="replace")
-    except OSError as exc:
-        raise _Failure(out, 0, "cannot write the output: %s" % (exc.strerror or exc)) from None
-
-
 def _write_stdout(chunks):
     """Write the text ``chunks`` to standard output; a closed or failing stdout (not a
     broken pipe, which main ends quietly) is a _Failure naming <stdout>."""
@@ -426,7 +426,7 @@ def _quiet_stdout():
 
 class _Interrupted(BaseException):
     """SIGINT, SIGTERM or SIGHUP arrived (a BaseException, so no ``except
-    Exception`` takes it for an error; write_atomically removes its temporary
+    Exception`` takes it for an error; write_chunks_atomically removes its temporary
     file on the way out)."""
 
     def __init__(self, signum):
@@ -543,7 +543,7 @@ def main(argv=None):
 def _run_name(args):
     """The name an error of this run starts with."""
     if args.command == "expand":
-        return "<stdin>" if args.program == "-" else args.program
+        return _program_name(args.program)
     return "emit %s" % args.cycle_name
 
 
@@ -553,8 +553,7 @@ def _run(args, name):
         if args.command == "expand":
             _expand(args, warnings)
         else:
-            text = _emit(args, warnings)
-            _write_output(text, None)
+            _write_stdout((_emit(args, warnings),))
         for line, warning in warnings:  # after the output: a failed run reports its error alone
             _report(name, line, "warning: " + warning.text)
         return 0
