@@ -26,6 +26,7 @@ from .cycle93_constants import (
     REENTRY_CLEARANCE_INCH,
     REENTRY_CLEARANCE_MM,
 )
+from .cycle93_size import infeed_count
 
 if TYPE_CHECKING:  # the geometry imports this module
     from .cycle93_geometry import GrooveGeometry
@@ -78,7 +79,7 @@ def plunges(geo: "GrooveGeometry", positions: List[float], go: Go, out: List[Mov
             continue  # the blade cannot enter here without cutting the allowance
         go("r", u, top + vrt)
         total = top - bottom
-        n = max(1, int(math.ceil(total / idep - 1e-9)))
+        n = int(infeed_count(total, idep))  # the count ExpansionSize checked before expanding
         inc = total / n
         for k in range(1, n + 1):
             level = bottom if k == n else top - k * inc
