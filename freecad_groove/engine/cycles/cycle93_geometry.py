@@ -261,11 +261,11 @@ class GrooveGeometry:
             slope = 0.0  # cos(90 degrees) is 6e-17 in floating point: keep faces exactly square
         tilt = math.degrees(math.atan(abs(slope)))
         limit = self.settings.cycle93_max_contour_tilt
-        if tilt > limit + 1e-9:
+        if limit is not None and tilt > limit + 1e-9:
             axis = "longitudinal" if self.longitudinal else "facing"
             raise cycle93_error(
                 "ANGC", angc,
-                "contour is %.3f degrees off the %s axis; paraxial roughing accepts at most %g "
+                "contour is %.3f degrees off the %s axis; the shop limit is %g "
                 "(setting cycle93_max_contour_tilt)"
                 % (tilt, axis, limit),
             )
