@@ -89,6 +89,8 @@ class ExpansionSize:
             TRACE_REFINEMENT * (sum(arc_chords(c.value, c.turn) + 2 for c in corners) + blade) + TRACE_BREAKPOINTS
             for corners in (rough, geo.final_corners)
         )
+        # Each of the (at most four) passes is split where it crosses a plunge position.
+        self.contour_moves += 4 * self.plunges
         self.moves = FRAME_MOVES + self.plunge_moves + self.contour_moves
 
     def check(self) -> None:
