@@ -29,6 +29,12 @@ def run(call, tool, start=None, interpreter=True):
     The moves are also written as a LinuxCNC program and read back by
     LinuxCNC's own interpreter: rs274 must accept it, and its canonical moves
     must be the moves the oracle simulates."""
+    result, target, _geo, moves = simulated(call, tool, start, interpreter)
+    return sim.check_groove(result, target, tool, tol=0.001, plunge=call.plunge_direction(), label=call.emit()), moves
+
+
+def simulated(call, tool, start=None, interpreter=True):
+    """Expand and simulate one groove: (SimulationResult, target, geometry, moves)."""
     settings = Settings(tool=tool)
     geo = call.geometry(settings)
     if start is None:
@@ -47,7 +53,7 @@ def run(call, tool, start=None, interpreter=True):
     stock = Polygon([(z, x) for x, z in geo.stock_world()])
     target = Polygon([(z, x) for x, z in geo.region_world()]).buffer(0)
     result = sim.simulate(moves, tool, call.plunge_direction(), start, stock)
-    return sim.check_groove(result, target, tool, tol=0.001, plunge=call.plunge_direction(), label=call.emit()), moves
+    return result, target, geo, moves
 
 
 def test_seed_example_cuts_the_groove_exactly():
