@@ -104,6 +104,7 @@ from typing import Any, Iterable, Optional, Sequence, Union
 import FreeCAD
 
 from ...engine.output import write_atomically
+from .command_post import command_post_class, report_help
 from .controls import CONTROLS, Control, control_named
 from .errors import PostError
 from .objects import groove_op_of, job_of, label_of
@@ -113,7 +114,7 @@ from .program import Program
 from .writer import LatheWriter
 
 __all__ = ["CONTROLS", "PostError", "export", "build", "parse_options", "make_parser", "tooltip", "groove_op_of",
-           "Control", "LatheWriter", "Options", "PECKING_PROPERTIES"]
+           "Control", "LatheWriter", "Options", "PECKING_PROPERTIES", "command_post_class"]
 
 
 def build(name: str, objectslist: Optional[Iterable[Any]], options: Options) -> str:
@@ -129,14 +130,18 @@ def build(name: str, objectslist: Optional[Iterable[Any]], options: Options) -> 
 
 
 def export(name: str, objectslist: Optional[Iterable[Any]], filename: Optional[str],
-           argstring: Union[None, str, Sequence[str]]) -> str:
+           argstring: Union[None, str, Sequence[str]]) -> Optional[str]:
     """A FreeCAD script post's export(): the program for ``objectslist``;
     ``filename`` "-" returns the text only, else it is also written (atomically).
-    Raises PostError (also printed on FreeCAD's report view) on any problem."""
+    Raises PostError (also printed on FreeCAD's report view) on any problem.
+    ``--help`` shows the options in the report view and returns None (no
+    program, no file), as FreeCAD's own script posts return None when they
+    write nothing."""
     try:
         options, parser = parse_options(name, argstring)
         if options.help:
-            return parser.format_help()
+            report_help(name, parser.format_help())
+            return None
         text = build(name, objectslist, options)
         if filename and filename != "-":
             try:
