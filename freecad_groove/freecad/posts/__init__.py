@@ -36,9 +36,15 @@ in order:
     refused with an error naming the op and the command;
 * the end: M9 when coolant was on, M5 when the spindle ran, the program end.
 
-Feeds: FreeCAD's Path F words are mm/s; every post writes mm/min in the
-control's feed-per-minute mode (G94, Fanuc/Haas G98); feed per revolution is
-not modelled. Lengths are mm (G21, Siemens G71): FreeCAD models are metric.
+Feeds and speeds: a Groove op's own (``freecad/cutting.py``: FeedPerRev,
+SurfaceSpeed with MaxSpindleSpeed, SpindleSpeed; else the tool controller's;
+else 0.05 mm/rev and 500 rpm), written the control's way (``Control.
+feed_mode``, ``surface_speed``, ``spindle``; README, "Feeds and speeds");
+other objects' Path F words are mm/s, written per minute (G94, Fanuc/Haas
+G98), the mode switched back where a groove fed per revolution. Lengths are
+mm (G21, Siemens G71), or inches with ``--inches`` (G20, Siemens G700: the
+writer divides every length and feed by 25.4; native calls get their words
+in inches). ``--help`` reports the options and returns None.
 Numbers: the target writer's (a decimal point always, no ``-0``), with the
 control's decimals (3; LinuxCNC 4; ``--precision``). Dwell: Siemens
 ``G4 F<s>``, Fanuc ``G04 P<ms>``, Haas ``G04 P<s>``, LinuxCNC ``G4 P<s>``;
