@@ -36,8 +36,10 @@ the face) and each of ``GrooveCount`` grooves:
 
 The Path: a comment with the op's label (the base class), G18, then per
 groove a comment naming the face and the call, the link rapids (G0), and the
-engine's expansion: G0, G1 with F = the tool controller's HorizFeed (FreeCAD's
-internal mm/s like every CAM op; posts write it as mm/min), G4 P<seconds>.
+engine's expansion: G0, G1 with F = the op's feed (cutting.py: FeedPerRev, the
+tool controller's HorizFeed, the default) in FreeCAD's internal mm/s like every
+CAM op (a feed per revolution at the first groove's spindle speed; the posts
+write the op's own feed and spindle, cutting.py), G4 P<seconds>.
 
 Errors (a face that takes no groove, a CycleError from the engine, no room to
 approach) are raised from opExecute with the engine's message: FreeCAD marks
@@ -63,6 +65,7 @@ from ..engine import GroovingTool, Settings
 from ..engine.cycles.cycle93 import DEFAULT_VRT_MM, Cycle93
 from ..engine.moves import DWELL, FEED, RAPID
 from ..engine.numbers import format_value
+from .cutting import CuttingData, cutting_data
 from .faces import GrooveFace, analyse_face, element_name
 from .groove_plan import GroovePlan, plan_groove
 from .groove_properties import (  # noqa: F401 - this module's API too
@@ -197,12 +200,15 @@ class ObjectGroove(PathOp.ObjectOp):
             faces = self.groove_faces(obj)
             self._write_derived(obj, faces)
             plans = self.plan(obj, faces)
+            cutting = cutting_data(obj)
         except Exception as e:  # CycleError and face errors are ValueErrors; anything else too:
             if faces is None:  # never leave a stale Path behind an invalid op
                 self._write_derived(obj, [])
             obj.Path = Path.Path([Path.Command(_comment("%s: %s" % (obj.Label, e)))])
             raise
-        self.commandlist.extend(self.commands(obj, plans))
+        self.commandlist.extend(self.commands(obj, plans, cutting))
+        if obj.FeedsAndSpeeds != cutting.describe():
+            obj.FeedsAndSpeeds = cutting.describe()
         self._plans = plans  # the posts reuse it while the op stays up to date
         for plan in plans:  # what the cycles cannot do as programmed: once per recompute
             for text in plan.warning_texts:
@@ -379,11 +385,13 @@ class ObjectGroove(PathOp.ObjectOp):
         got there)."""
         return [(plan.cycle, plan.settings, plan.start) for plan in self.current_plan(obj)]
 
-    def commands(self, obj: object, plans: list[GroovePlan]) -> list:
-        """Path commands for ``plans`` (path_commands), feeds at the tool
-        controller's HorizFeed."""
-        tool_controller = getattr(obj, "ToolController", None)
-        return path_commands(plans, tool_controller.HorizFeed.Value if tool_controller is not None else 0.0)
+    def commands(self, obj: object, plans: list[GroovePlan], cutting: Optional[CuttingData] = None) -> list:
+        """Path commands for ``plans`` (path_commands), feeds at the op's
+        feed (cutting.py) in mm/s: a feed per revolution at the spindle speed
+        of the first groove's start radius."""
+        cutting = cutting or cutting_data(obj)
+        radius = plans[0].cycle.axfa if plans else 0.0
+        return path_commands(plans, cutting.feed_mm_per_s(radius))
 
 
 def Create(name: str, obj: object = None, parentJob: object = None, tool_controller: object = None) -> object:

@@ -27,6 +27,7 @@ from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.moves import DWELL, FEED, RAPID
 from freecad_groove.freecad import faces as faces_mod
 from freecad_groove.freecad import groove_op
+from freecad_groove.freecad.cutting import DEFAULT_FEED_PER_REV, DEFAULT_RPM
 from freecad_groove.freecad.groove_plan import rapids_clear
 from freecad_groove.freecad.links import SafeEnvelope
 
@@ -126,6 +127,8 @@ def first_link(start, on="side"):
 
 TOOL = GroovingTool(BLADE, 0.2)  # tool_width 3, tool_corner_radius 0.2, the minus reference corner
 FEED_MM_S = FEED_MM_MIN / 60.0  # the tool controller's feed as the Path holds it (FreeCAD's mm/s)
+# A tool controller without feed or speed (a new Job's): the op's defaults, 0.05 mm/rev at 500 rpm, in mm/s
+DEFAULT_FEED_MM_S = DEFAULT_FEED_PER_REV * DEFAULT_RPM / 60.0
 
 # The Path's form of each kind of engine move, spelled out: (command, words).
 PATH_FORM = {
@@ -392,7 +395,8 @@ def test_bore_open_toward_minus_z_is_entered_from_below(doc):
     _rapids_outside(op, part)
     # out to the safe radius R21, below the part, in to the start point; the Job's own tool controller feeds at 0
     start = (5.0, -4.0)
-    expected = groove_path([(21.0, None), (21.0, -4.0), start], cycle93(6.0, 30.0, 7, depg=1.0), start, feed=0.0)
+    expected = groove_path([(21.0, None), (21.0, -4.0), start], cycle93(6.0, 30.0, 7, depg=1.0), start,
+                           feed=DEFAULT_FEED_MM_S)
     assert_same_moves(path_moves(op), expected)
 
 
@@ -411,7 +415,8 @@ def test_face_groove_inside_a_recess_is_approached_along_z(doc):
     _rapids_outside(op, part)
     # a column over the first plunge (the blade's minus corner 3 inside the groove's outer edge R14.5)
     start = (14.5 - BLADE, 31.0)
-    expected = groove_path(first_link(start, "top"), cycle93(14.5, 25.0, 6, 90.0, widg=3.5), start, feed=0.0)
+    expected = groove_path(first_link(start, "top"), cycle93(14.5, 25.0, 6, 90.0, widg=3.5), start,
+                           feed=DEFAULT_FEED_MM_S)
     assert_same_moves(path_moves(op), expected)
     # the shoulder-like outer end face (R15..R20 at Z30) is reached radially
     rim = _find(part, lambda f: f.surface == "plane" and abs(f.z_min - 30) < 1e-9 and f.r_min > 14)
@@ -437,7 +442,7 @@ def test_steep_cone_takes_a_face_groove(doc):
     _rapids_outside(op, part)
     # on the safe cylinder R31, 1 mm above the cone where the blade (R23..26) plunges first: at R23
     start = (31.0, 10 + (30 - 23) * TAN_30 + 1.0)
-    expected = groove_path(first_link(start), cycle93(26.0, 10 + 4 * TAN_30, 6, 120.0), start, feed=0.0)
+    expected = groove_path(first_link(start), cycle93(26.0, 10 + 4 * TAN_30, 6, 120.0), start, feed=DEFAULT_FEED_MM_S)
     assert_same_moves(path_moves(op), expected)
 
 
@@ -494,7 +499,7 @@ def test_a_job_without_tool_controller_gets_one(shop):
     assert op.ToolController.Label == "TC: Grooving tool"
     assert op.isValid(), op.getStatusString()
     assert op.ToolController.HorizFeed.Value == 0.0  # a new tool controller's feed
-    assert_same_moves(path_moves(op), case_path("cylinder", feed=0.0))
+    assert_same_moves(path_moves(op), case_path("cylinder", feed=DEFAULT_FEED_MM_S))
 
 
 def test_make_groove_rejects_unknown_keywords(shop):

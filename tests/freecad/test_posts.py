@@ -226,7 +226,6 @@ def test_every_post_is_a_freecad_script_post(name):
     assert ("--native-cycles" in module.TOOLTIP_ARGS) == (name != "linuxcnc")
     assert ("--retract" in module.TOOLTIP_ARGS) == (name in PECKING)
     assert ("--x-mode" in module.TOOLTIP_ARGS) == (name in ("sinumerik", "ab9", "linuxcnc"))
-    assert export(name, [], "--help") == module.TOOLTIP_ARGS
     text = export(name, [])
     assert text.endswith(("M30\n", "M2\n", "%\n"))
 
@@ -699,9 +698,9 @@ def test_other_invalid_op_properties_are_named(shop):
                 export(name, [op])
             assert str(info.value).startswith(op.Label + ": ") and text in str(info.value), (name, str(info.value))
         doc_.removeObject(op.Name)
-    op = groove(shop, "cylinder")
-    tc.HorizFeed = 0
-    with pytest.raises(posts.PostError, match="^%s: ToolController HorizFeed: is 0" % op.Label):
+    op = groove(shop, "cylinder", surface_speed="100 m/min")  # constant surface speed without its limit
+    assert not op.isValid() and "MaxSpindleSpeed=0" in op.getStatusString()
+    with pytest.raises(posts.PostError, match="^%s: MaxSpindleSpeed=0: constant surface speed" % op.Label):
         export("fanuc", [op])
 
 
