@@ -157,7 +157,9 @@ class ObjectGroove(PathOp.ObjectOp):
             tool_controller = group[0] if group else None
         self._tc_hint = tool_controller
         try:
-            super().__init__(obj, name, parentJob)
+            # FreeCAD uses the name only to look the op up in CAM's SetupSheet
+            # registry (register_with_setup_sheet): the op's kind, not the object's name.
+            super().__init__(obj, OP_NAME, parentJob)
         finally:
             self._tc_hint = None
         if tool_controller is not None and getattr(obj, "ToolController", None) is None:
@@ -386,6 +388,30 @@ class ObjectGroove(PathOp.ObjectOp):
         return path_commands(plans, tool_controller.HorizFeed.Value if tool_controller is not None else 0.0)
 
 
+OP_NAME = "Groove"  # the op's kind in CAM's SetupSheet registry
+
+
+def SetupProperties() -> list:
+    """The op properties a Job's SetupSheet may hold defaults for: none (a
+    groove's size belongs to its face, the blade's to the tool controller)."""
+    return []
+
+
+def register_with_setup_sheet() -> None:
+    """Register the op with CAM's SetupSheet, as FreeCAD's own ops are: a Job
+    applies its SetupSheet to every new op by kind and logs "SetupSheet has
+    no support for Groove" for an unregistered one. The SetupSheet editor
+    builds a prototype of each registered op for its properties; with none
+    to offer the prototype stays empty (Create cannot build on one)."""
+    import Path.Base.SetupSheet as PathSetupSheet
+
+    PathSetupSheet.RegisterOperation(OP_NAME, _setup_sheet_prototype, SetupProperties)
+
+
+def _setup_sheet_prototype(name: str, prototype: object) -> object:
+    return prototype
+
+
 def Create(name: str, obj: object = None, parentJob: object = None, tool_controller: object = None) -> object:
     """Create(name, obj=None, parentJob=None) ... a Groove operation
     (Path::FeaturePython with an ObjectGroove proxy), added to ``parentJob``
@@ -398,3 +424,6 @@ def Create(name: str, obj: object = None, parentJob: object = None, tool_control
     if hooks.view_provider_factory is not None and getattr(obj, "ViewObject", None) is not None:
         hooks.view_provider_factory(obj)
     return obj
+
+
+register_with_setup_sheet()
