@@ -530,7 +530,7 @@ def resources() -> object:
     """The op's command resources (PathOpGui.CommandResources)."""
     return PathOpGui.CommandResources(
         "Groove", groove_op.Create, GroovePage, ICON,
-        FreeCAD.Qt.QT_TRANSLATE_NOOP("FreeCADGroove_Groove", "Groove"), None,
+        FreeCAD.Qt.QT_TRANSLATE_NOOP("FreeCADGroove_Groove", "Turning Groove"), None,
         FreeCAD.Qt.QT_TRANSLATE_NOOP("FreeCADGroove_Groove", "Cut a groove into a turned face"),
     )
 

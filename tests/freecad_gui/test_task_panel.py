@@ -80,12 +80,33 @@ def extent(polyline, axis):
     return min(values), max(values)
 
 
-def test_command_sits_in_cams_toolbar_and_menu(shop):
+def menu_text(command):
+    return FreeCADGui.Command.get(command).getInfo()["menuText"].replace("&", "")
+
+
+def cam_menu():
+    """CAM's top-level menu (the one holding the V-carve action)."""
+    vcarve = menu_text("CAM_Vcarve")
+    for menu in FreeCADGui.getMainWindow().menuBar().findChildren(QtGui.QMenu):
+        if vcarve in [a.text().replace("&", "") for a in menu.actions()]:
+            return menu
+    raise AssertionError("no CAM menu with %s" % vcarve)
+
+
+def test_command_sits_with_cams_operations_as_turning_groove(shop):
     mw = FreeCADGui.getMainWindow()
-    toolbar_texts = [a.text() for tb in mw.findChildren(QtGui.QToolBar) for a in tb.actions() if tb.isVisible()]
-    menu_texts = [a.text() for m in mw.findChildren(QtGui.QMenu) for a in m.actions()]
-    assert "Groove" in toolbar_texts
-    assert "Groove" in menu_texts
+    toolbars = [tb for tb in mw.findChildren(QtGui.QToolBar) if tb.isVisible()]
+    toolbar_texts = [a.text() for tb in toolbars for a in tb.actions()]
+    assert "Turning Groove" in toolbar_texts and "Groove" not in toolbar_texts  # PartDesign's Groove is "Groove"
+    operations = next(tb for tb in toolbars if tb.objectName() == "New Operations")
+    assert "Turning Groove" in [a.text() for a in operations.actions()]
+    # In the CAM menu: right after V-Carve (the engraving operations), before the separator and the 3D ops.
+    actions = [a for a in cam_menu().actions()]
+    texts = [a.text().replace("&", "") for a in actions]
+    at = texts.index("Turning Groove")
+    assert texts[at - 1] == menu_text("CAM_Vcarve"), texts
+    assert actions[at + 1].isSeparator(), texts
+    assert at < len(texts) - 4, "not at the bottom of the menu: %s" % texts
     from freecad_groove.gui.command import CommandGroove
 
     assert CommandGroove().IsActive()  # the document has a Job
