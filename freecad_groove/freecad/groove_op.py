@@ -288,6 +288,11 @@ class ObjectGroove(PathOp.ObjectOp):
                 width = length_mm(bit.Width)
             if getattr(bit, "CornerRadius", None) is not None:
                 radius = length_mm(bit.CornerRadius)
+        if not width > 0:  # no default blade: a wrong width cuts a wrong groove
+            raise GrooveInputError(
+                "ToolWidth: the blade's width is unknown: the tool controller %s has no grooving blade (its tool "
+                "bit has no Width). Create a grooving tool controller (task panel: Tool and coolant) or set "
+                "ToolWidth" % getattr(tool_controller, "Label", "(none)"), ("ToolWidth",))
         return Settings(tool=GroovingTool(width=width, corner_radius=radius, reference=str(obj.ReferenceCorner)))
 
     def position(self, obj: object, index: int) -> float:
