@@ -160,7 +160,9 @@ class ObjectGroove(PathOp.ObjectOp):
             tool_controller = group[0] if group else None
         self._tc_hint = tool_controller
         try:
-            super().__init__(obj, name, parentJob)
+            # FreeCAD uses the name only to look the op up in CAM's SetupSheet
+            # registry (register_with_setup_sheet): the op's kind, not the object's name.
+            super().__init__(obj, OP_NAME, parentJob)
         finally:
             self._tc_hint = None
         if tool_controller is not None and getattr(obj, "ToolController", None) is None:
@@ -292,6 +294,11 @@ class ObjectGroove(PathOp.ObjectOp):
                 width = length_mm(bit.Width)
             if getattr(bit, "CornerRadius", None) is not None:
                 radius = length_mm(bit.CornerRadius)
+        if not width > 0:  # no default blade: a wrong width cuts a wrong groove
+            raise GrooveInputError(
+                "ToolWidth: the blade's width is unknown: the tool controller %s has no grooving blade (its tool "
+                "bit has no Width). Create a grooving tool controller (task panel: Tool and coolant) or set "
+                "ToolWidth" % getattr(tool_controller, "Label", "(none)"), ("ToolWidth",))
         return Settings(tool=GroovingTool(width=width, corner_radius=radius, reference=str(obj.ReferenceCorner)))
 
     def position(self, obj: object, index: int) -> float:
@@ -394,6 +401,30 @@ class ObjectGroove(PathOp.ObjectOp):
         return path_commands(plans, cutting.feed_mm_per_s(radius))
 
 
+OP_NAME = "Groove"  # the op's kind in CAM's SetupSheet registry
+
+
+def SetupProperties() -> list:
+    """The op properties a Job's SetupSheet may hold defaults for: none (a
+    groove's size belongs to its face, the blade's to the tool controller)."""
+    return []
+
+
+def register_with_setup_sheet() -> None:
+    """Register the op with CAM's SetupSheet, as FreeCAD's own ops are: a Job
+    applies its SetupSheet to every new op by kind and logs "SetupSheet has
+    no support for Groove" for an unregistered one. The SetupSheet editor
+    builds a prototype of each registered op for its properties; with none
+    to offer the prototype stays empty (Create cannot build on one)."""
+    import Path.Base.SetupSheet as PathSetupSheet
+
+    PathSetupSheet.RegisterOperation(OP_NAME, _setup_sheet_prototype, SetupProperties)
+
+
+def _setup_sheet_prototype(name: str, prototype: object) -> object:
+    return prototype
+
+
 def Create(name: str, obj: object = None, parentJob: object = None, tool_controller: object = None) -> object:
     """Create(name, obj=None, parentJob=None) ... a Groove operation
     (Path::FeaturePython with an ObjectGroove proxy), added to ``parentJob``
@@ -406,3 +437,6 @@ def Create(name: str, obj: object = None, parentJob: object = None, tool_control
     if hooks.view_provider_factory is not None and getattr(obj, "ViewObject", None) is not None:
         hooks.view_provider_factory(obj)
     return obj
+
+
+register_with_setup_sheet()

@@ -82,7 +82,8 @@ PROPERTIES = (
         "Distance from one groove to the next: toward -Z for longitudinal grooves, toward the axis for "
         "face grooves. Must be greater than 0 when GrooveCount is more than 1."), 0.0),
     ("App::PropertyLength", "ToolWidth", "Tool", _tip(
-        "Width of the blade's cutting edge; used when the tool controller's tool bit has no Width."), 3.0),
+        "Width of the blade's cutting edge; used when the tool controller's tool bit has no Width. "
+        "0 = unknown: the op then asks for a grooving tool controller or a width."), 0.0),
     ("App::PropertyLength", "ToolCornerRadius", "Tool", _tip(
         "Radius of the blade's two front corners; used when the tool bit has no CornerRadius."), 0.2),
     ("App::PropertyEnumeration", "ReferenceCorner", "Tool", _tip(

@@ -115,3 +115,24 @@ def test_save_and_reopen_keeps_the_blade(shop, tmp_path):
         assert all(o.isValid() for o in doc2.Objects), [o.Name for o in doc2.Objects if not o.isValid()]
     finally:
         FreeCAD.closeDocument(doc2.Name)
+
+
+def test_no_blade_width_is_an_error_not_a_default(shop):
+    doc, shaft, job, first = shop  # the Job's tool controller: FreeCAD's end mill, no Width
+    op = make_groove(job, (shaft, face_name(shaft.Shape, "cylinder")), position=5, width=4, depth=2)
+    assert op.ToolWidth.Value == 0  # unknown, not a made-up 3 mm
+    assert not op.isValid()
+    status = op.getStatusString()
+    assert "ToolWidth: the blade's width is unknown" in status and first.Label in status
+    assert not [c for c in op.Path.Commands if c.Name in ("G0", "G1")]
+    # A grooving tool controller gives the width...
+    op.ToolController = toolbit.make_grooving_tool_controller(job, 3, 0.2)
+    doc.recompute()
+    assert op.isValid(), op.getStatusString()
+    assert _tool(op) == (pytest.approx(3), pytest.approx(0.2))
+    # ... and so does a width typed into the op, with the end mill.
+    op.ToolController = first
+    op.ToolWidth = 2.5
+    doc.recompute()
+    assert op.isValid(), op.getStatusString()
+    assert _tool(op)[0] == pytest.approx(2.5)
