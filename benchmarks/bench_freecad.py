@@ -57,6 +57,7 @@ def _freecad_groove_bench():
     import parts  # tests/freecad/parts.py: the stepped shaft and its Job
 
     from freecad_groove import demo, make_groove
+    from freecad_groove.freecad.groove_op import op_error
 
     share = os.environ.get("FREECAD_GROOVE_SHARE", "")
     out_path = os.environ.get("FREECAD_GROOVE_BENCH_OUT") or os.path.join(share or os.getcwd(), "bench_freecad.txt")
@@ -100,8 +101,8 @@ def _freecad_groove_bench():
         values = dict(position=5, width=4, depth=2, infeed=1, tool_width=3, tool_corner_radius=0.2)
         values.update(extra)
         op = make_groove(job, (shaft, parts.face_name(shaft.Shape, key)), name="Groove_" + key, **values)
-        if not op.isValid():
-            emit("  %-9s op invalid: %s" % (key, op.getStatusString()))
+        if op_error(op):
+            emit("  %-9s op invalid: %s" % (key, op_error(op)))
             continue
         base = op.Position.Value
         times = []
@@ -112,7 +113,7 @@ def _freecad_groove_bench():
             times.append(time.perf_counter() - t0)
         op.Position = base
         doc.recompute()
-        valid = op.isValid()
+        valid = op_error(op) is None
         plan_times, plans = timed(lambda op=op: op.Proxy.plan(op), 20)
         moves = sum(len(p.moves) for p in plans)
         med = statistics.median(times)
@@ -147,9 +148,9 @@ def _freecad_groove_bench():
                                pitch=pitch, tool_width=3, tool_corner_radius=0.2))
     doc.recompute()
     build = time.perf_counter() - t0
-    bad = [op.Label for op in ops if not op.isValid()]
+    bad = ["%s: %s" % (op.Label, op_error(op)) for op in ops if op_error(op)]
     if bad:
-        emit("  ops invalid: %s" % ", ".join("%s: %s" % (o.Label, o.getStatusString()) for o in ops if not o.isValid()))
+        emit("  ops invalid: %s" % ", ".join(bad))
         return
     commands = sum(len(op.Path.Commands) for op in ops)
     grooves = sum(len(op.Proxy.plan(op)) for op in ops)

@@ -27,6 +27,7 @@ from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.moves import DWELL, FEED, RAPID
 from freecad_groove.freecad import faces as faces_mod
 from freecad_groove.freecad import groove_op
+from freecad_groove.freecad.groove_op import op_error
 from freecad_groove.freecad.groove_plan import rapids_clear
 from freecad_groove.freecad.links import SafeEnvelope
 
@@ -264,42 +265,92 @@ def test_tool_size_comes_from_the_bit_when_it_has_one(shop):
 # -- errors -----------------------------------------------------------------------
 
 
-def test_engine_error_marks_the_op_invalid_and_a_fix_recovers(shop):
+def test_engine_error_is_reported_on_the_op_and_a_fix_recovers(shop):
     doc, shaft, job, tc = shop
     other = groove(shop, "shoulder")
     op = groove(shop, "cylinder")
-    assert op.isValid()
+    assert op_error(op) is None
     op.Width = 2  # narrower than the 3 mm tool
     doc.recompute()
-    assert not op.isValid()
-    status = op.getStatusString()
+    status = op_error(op)
     assert "WIDG=2" in status and "narrower than the tool width 3" in status and "(alarm 61602)" in status
-    # the stale moves are gone: one comment repeats the message
-    assert [c.Name for c in op.Path.Commands] == ["(%s: %s)" % (op.Label, status.replace("(", "[").replace(")", "]"))]
+    # the stale moves are gone: the Path ends with a comment repeating the message, no moves
+    assert path_moves(op) == []
+    assert op.Path.Commands[-1].Name == "(%s: %s)" % (op.Label, status.replace("(", "[").replace(")", "]"))
     for o in (shaft, job, tc, other):
         assert o.isValid(), o.Name
-    assert other.Path.Commands and "Invalid" not in other.State
+    assert other.Path.Commands and op_error(other) is None
     op.Width = 4
     doc.recompute()
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None
     assert "Invalid" not in op.State
     assert_same_moves(path_moves(op), case_path("cylinder"))
+
+
+def test_an_error_does_not_escape_execute(shop):
+    """An exception escaping execute makes FreeCAD print a Python traceback
+    before the message (the property editor's recompute): the op reports
+    one clean line instead."""
+    doc, shaft, job, tc = shop
+    op = groove(shop, "cylinder")
+    op.Width = 2
+    op.Proxy.execute(op)  # raised the CycleError before
+    assert "(alarm 61602)" in op_error(op)
+    assert path_moves(op) == []
+
+
+# (FreeCAD itself clips an infinite length to the largest float or to 0)
+@pytest.mark.parametrize("name, value", [("Dwell", float("nan")), ("Dwell", float("inf")), ("Width", float("nan")),
+                                         ("Depth", float("nan")), ("Position", float("nan")),
+                                         ("FlankAngle1", float("nan"))])
+def test_nan_and_infinite_values_are_refused_naming_the_property(shop, name, value):
+    doc, shaft, job, tc = shop
+    op = groove(shop, "cylinder")
+    assert path_moves(op)
+    setattr(op, name, value)
+    doc.recompute()
+    assert op_error(op) == "%s=%s: must be a finite number" % (name, float(value))
+    assert path_moves(op) == []  # no stale toolpath in the 3D view
+    with pytest.raises(ValueError, match="^%s=" % name):  # nor from a post
+        op.Proxy.cycles(op)
 
 
 def test_groove_past_the_face_is_refused(shop):
     doc, shaft, job, tc = shop
     op = groove(shop, "cylinder", position=18)  # 18 + 4 > the 20 mm long face
-    assert not op.isValid()
-    assert "past the face" in op.getStatusString() and "Shaft.Face" in op.getStatusString()
+    assert "past the face" in op_error(op) and "Shaft.Face" in op_error(op)
     op.Position = 15
     doc.recompute()
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None
 
 
 def test_pitch_is_required_for_several_grooves(shop):
     op = groove(shop, "cylinder", groove_count=2)
-    assert not op.isValid()
-    assert "Pitch" in op.getStatusString()
+    assert "Pitch" in op_error(op)
+
+
+def ball_ended_shaft():
+    """A shaft R20 from Z0 to Z50 with a ball end (a sphere R20 at Z50) and a
+    torus-shaped bead at Z10: faces no groove can be cut into, with the
+    sphere's degenerated edge at its pole."""
+    shape = Part.makeCylinder(20, 50).fuse(Part.makeSphere(20, V(0, 0, 50)))
+    return shape.fuse(Part.makeTorus(20, 2, V(0, 0, 10))).removeSplitter()
+
+
+def test_spherical_and_toroidal_faces_do_not_break_grooves_elsewhere(doc):
+    shape = ball_ended_shaft()
+    cylinders = [i + 1 for i, f in enumerate(shape.Faces) if isinstance(f.Surface, Part.Cylinder)]
+    _doc, shaft, job, tc = make_shop(doc, shape=shape)
+    op = make_groove(job, (shaft, "Face%d" % max(cylinders, key=lambda i: shape.Faces[i - 1].BoundBox.ZMax)),
+                     position=5, width=4, depth=2, infeed=1, tool_width=3, tool_corner_radius=0.2)
+    assert op_error(op) is None
+    assert path_moves(op)
+    # the ball's top is Z70: the op's rapids stay out of it
+    assert max(words["Z"] for _n, words in path_moves(op) if "Z" in words) < 71.0 + 1e-9
+    sphere = next(i + 1 for i, f in enumerate(shape.Faces) if isinstance(f.Surface, Part.Sphere))
+    bad = make_groove(job, (shaft, "Face%d" % sphere))
+    assert op_error(bad) == "Shaft.Face%d: a sphere face; grooves go on a cylinder, a cone or a plane square " \
+                            "to the Z axis" % sphere
 
 
 def test_unsupported_faces_name_the_face(doc):
@@ -323,8 +374,7 @@ def test_unsupported_faces_name_the_face(doc):
     job = PathJob.Create("Job", [box])
     doc.recompute()
     op = make_groove(job, (box, "Face1"))
-    assert not op.isValid()
-    assert op.getStatusString().startswith("Block.Face1: a plane whose normal")
+    assert op_error(op).startswith("Block.Face1: a plane whose normal")
     assert job.isValid()
 
 

@@ -12,6 +12,7 @@ from parts import face_name
 
 from freecad_groove import make_groove
 from freecad_groove.freecad import toolbit
+from freecad_groove.freecad.groove_op import op_error
 
 # The Groove op tests' document and shop fixtures.
 doc, shop = tg.doc, tg.shop
@@ -76,8 +77,7 @@ def test_the_op_reads_the_blades_width_and_corner_radius(shop):
     # a groove narrower than the blade is refused
     op.Width = 2
     doc.recompute()
-    assert not op.isValid()
-    assert "(alarm 61602)" in op.getStatusString() and "tool width 2.5" in op.getStatusString()
+    assert "(alarm 61602)" in op_error(op) and "tool width 2.5" in op_error(op)
     op.Width = 4
     doc.recompute()
     assert op.isValid(), op.getStatusString()
