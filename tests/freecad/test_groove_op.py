@@ -329,6 +329,41 @@ def test_pitch_is_required_for_several_grooves(shop):
     assert "Pitch" in op_error(op)
 
 
+@pytest.mark.parametrize("faces, values, message", [
+    ("cylinder", dict(width="abc"), r"^make_groove\(\): width='abc': not a value for Width"),
+    ("cylinder", dict(width="4 s"), r"^make_groove\(\): width='4 s': not a value for Width"),
+    (("notanobject", "Face1"), {}, r"'notanobject' is not a FreeCAD object with a shape"),
+    ((None, "Face1"), {}, r"None is not a FreeCAD object with a shape"),
+    ([], {}, r"^make_groove\(\): faces=\[\]: give \(part, "),
+    ("outsider", {}, r"^make_groove\(\): Outsider is not in the model of the Job Job$"),
+    ("no_face", {}, r"^make_groove\(\): Shaft has no Face99$"),
+])
+def test_make_groove_refuses_bad_input_leaving_nothing_behind(shop, faces, values, message):
+    doc, shaft, job, tc = shop
+    if faces == "outsider":
+        outsider = doc.addObject("Part::Feature", "Outsider")
+        outsider.Shape = Part.makeCylinder(5, 5)
+        faces = (outsider, "Face1")
+    elif faces == "no_face":
+        faces = (shaft, "Face99")
+    elif faces == "cylinder":
+        faces = (shaft, face_name(shaft.Shape, "cylinder"))
+    names = sorted(o.Name for o in doc.Objects)
+    with pytest.raises(ValueError, match=message):
+        make_groove(job, faces, **values)
+    assert sorted(o.Name for o in doc.Objects) == names
+    assert job.Operations.Group == [] and job.Tools.Group == [tc]
+
+
+def test_make_groove_in_a_job_without_tool_controller_leaves_none_behind_on_failure(shop):
+    doc, shaft, job, tc = shop
+    job.Tools.Group = []  # make_groove then makes "TC: Grooving tool" (and its tool bit)
+    names = sorted(o.Name for o in doc.Objects)
+    with pytest.raises(ValueError, match="^make_groove\\(\\): dwell='long': not a value for Dwell"):
+        make_groove(job, (shaft, face_name(shaft.Shape, "cylinder")), dwell="long")
+    assert sorted(o.Name for o in doc.Objects) == names and job.Tools.Group == []
+
+
 def ball_ended_shaft():
     """A shaft R20 from Z0 to Z50 with a ball end (a sphere R20 at Z50) and a
     torus-shaped bead at Z10: faces no groove can be cut into, with the
