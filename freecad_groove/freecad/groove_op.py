@@ -42,17 +42,22 @@ CAM op (a feed per revolution at the first groove's spindle speed; the posts
 write the op's own feed and spindle, cutting.py), G4 P<seconds>.
 
 Errors (a face that takes no groove, a CycleError from the engine, no room to
-approach) are raised from opExecute with the engine's message: FreeCAD marks
-the op invalid with that message as its status (``obj.getStatusString()``),
-the document and the other objects stay valid, the op's Path is replaced by
-one comment that repeats the message, and the next recompute after a fix
-clears it. FreeCAD 1.0 and 1.1 behave the same; both also print the
-traceback and "<Label>: <message>" on the report view / console.
+approach, a NaN or infinite value) never escape execute: FreeCAD would print
+a Python traceback before the message (for a value typed in the property
+editor too), and a Python feature of FreeCAD 1.0/1.1 cannot become "Invalid"
+without one. As FreeCAD CAM's own ops do, the op reports one error line
+"<Label>: <message>" in the report view instead, its Path is replaced by a
+comment that repeats the message (no stale toolpath in the 3D view), the
+message is kept (op_error(obj)), the posts refuse the op with it, and the
+next recompute after a fix clears it. The document and the other objects
+stay valid.
 
 FreeCAD objects (the op's document object ``obj``, jobs, tool controllers)
 are typed ``object`` below.
 """
 
+import math
+import traceback
 from typing import Optional
 
 import FreeCAD
@@ -124,6 +129,26 @@ def _corner(obj: object, name: str) -> float:
     return 0.0
 
 
+NUMBER_TYPES = ("App::PropertyLength", "App::PropertyDistance", "App::PropertyAngle", "App::PropertyFloat")
+
+
+def check_finite(obj: object) -> None:
+    """GrooveInputError naming the first numeric op property that is NaN or
+    infinite (FreeCAD accepts both from a script or an expression)."""
+    for type_id, name, _group, _tip, _default in PROPERTIES:
+        if type_id in NUMBER_TYPES and name not in DERIVED:
+            value = length_mm(getattr(obj, name))
+            if not math.isfinite(value):
+                raise GrooveInputError("%s=%s: must be a finite number" % (name, value), (name,))
+
+
+def finite_or_error(value: float, what: str, properties: tuple) -> float:
+    """``value`` when finite, else GrooveInputError naming ``what``."""
+    if not math.isfinite(value):
+        raise GrooveInputError("%s=%s: must be a finite number" % (what, value), properties)
+    return value
+
+
 def path_commands(plans: list[GroovePlan], feed_mm_per_s: float) -> list:
     """Path commands (Path.Command) for ``plans``: G18, then per groove a
     comment, the link rapids and the expanded moves, feeds at ``feed_mm_per_s``."""
@@ -146,6 +171,15 @@ def path_commands(plans: list[GroovePlan], feed_mm_per_s: float) -> list:
             elif move.kind == DWELL:
                 commands.append(Path.Command("G4", {"P": move.p}))
     return commands
+
+
+def op_error(obj: object) -> Optional[str]:
+    """Why the Groove op ``obj`` cut nothing at its last recompute (None: it
+    is fine): the message it reported, or FreeCAD's status of an invalid object."""
+    error = getattr(getattr(obj, "Proxy", None), "error", None)
+    if error:
+        return error
+    return None if obj.isValid() else obj.getStatusString()
 
 
 class ObjectGroove(PathOp.ObjectOp):
@@ -197,17 +231,17 @@ class ObjectGroove(PathOp.ObjectOp):
 
     def opExecute(self, obj: object) -> None:
         self._plans = None
+        self.error = None
         faces = None
         try:
+            check_finite(obj)
             faces = self.groove_faces(obj)
             self._write_derived(obj, faces)
             plans = self.plan(obj, faces)
             cutting = cutting_data(obj)
-        except Exception as e:  # CycleError and face errors are ValueErrors; anything else too:
-            if faces is None:  # never leave a stale Path behind an invalid op
-                self._write_derived(obj, [])
-            obj.Path = Path.Path([Path.Command(_comment("%s: %s" % (obj.Label, e)))])
-            raise
+        except Exception as e:  # CycleError and input errors are ValueErrors; anything else too
+            self._report_error(obj, e, faces is None)
+            return
         self.commandlist.extend(self.commands(obj, plans, cutting))
         if obj.FeedsAndSpeeds != cutting.describe():
             obj.FeedsAndSpeeds = cutting.describe()
@@ -216,12 +250,26 @@ class ObjectGroove(PathOp.ObjectOp):
             for text in plan.warning_texts:
                 FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, text))
 
+    def _report_error(self, obj: object, error: Exception, clear_derived: bool) -> None:
+        """An op that cannot cut: one error line "<Label>: <message>" in the
+        report view (an exception escaping execute would print a Python
+        traceback too), a Path of one comment repeating it (never a stale
+        toolpath), the message kept in ``self.error``."""
+        message = str(error) if isinstance(error, ValueError) else "%s: %s" % (type(error).__name__, error)
+        if not isinstance(error, ValueError):  # a bug, not an input: its traceback for the log level
+            FreeCAD.Console.PrintLog(traceback.format_exc())
+        if clear_derived:
+            self._write_derived(obj, [])
+        self.error = message
+        self.commandlist.append(Path.Command(_comment("%s: %s" % (obj.Label, message))))
+        FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, message))
+
     def current_plan(self, obj: object) -> list[GroovePlan]:
         """plan(obj) as the last recompute made it, while nothing has touched
         the op since (planning checks every link rapid against the model, the
         costly part of posting); otherwise a fresh plan."""
         plans = getattr(self, "_plans", None)
-        if plans is not None and not ({"Touched", "Invalid"} & set(obj.State)):
+        if plans is not None and getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)):
             return plans
         return self.plan(obj)
 
@@ -291,9 +339,10 @@ class ObjectGroove(PathOp.ObjectOp):
         radius = obj.ToolCornerRadius.Value
         if bit is not None:
             if getattr(bit, "Width", None) is not None:
-                width = length_mm(bit.Width)
+                width = finite_or_error(length_mm(bit.Width), "the tool bit's Width", ("ToolWidth",))
             if getattr(bit, "CornerRadius", None) is not None:
-                radius = length_mm(bit.CornerRadius)
+                radius = finite_or_error(length_mm(bit.CornerRadius), "the tool bit's CornerRadius",
+                                         ("ToolCornerRadius",))
         if not width > 0:  # no default blade: a wrong width cuts a wrong groove
             raise GrooveInputError(
                 "ToolWidth: the blade's width is unknown: the tool controller %s has no grooving blade (its tool "
@@ -324,7 +373,10 @@ class ObjectGroove(PathOp.ObjectOp):
     def feed_mm_per_min(self, obj: object) -> Optional[float]:
         """The tool controller's HorizFeed in mm/min (None without a tool controller)."""
         tool_controller = getattr(obj, "ToolController", None)
-        return feed_mm_per_min(tool_controller.HorizFeed.Value) if tool_controller is not None else None
+        if tool_controller is None:
+            return None
+        feed = finite_or_error(tool_controller.HorizFeed.Value, "%s HorizFeed" % tool_controller.Label, ())
+        return feed_mm_per_min(feed)
 
     def _check_count(self, obj: object) -> int:
         """GrooveCount, refused when below 1 or when Pitch cannot space the grooves."""
@@ -354,6 +406,7 @@ class ObjectGroove(PathOp.ObjectOp):
         """Every groove the op cuts, in order: [GroovePlan]. Raises ValueError
         (CycleError from the engine) when one cannot be cut."""
         if faces is None:
+            check_finite(obj)
             faces = self.groove_faces(obj)
         if not faces:
             return []

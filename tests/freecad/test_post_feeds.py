@@ -25,6 +25,7 @@ from test_posts import NAMES, calls, export, positions, post, read, strip_commen
 
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.freecad import posts
+from freecad_groove.freecad.groove_op import op_error
 
 doc, shop, groove = tg.doc, tg.shop, tg.groove
 MM = 25.4
@@ -69,7 +70,7 @@ DEFAULT_BLOCKS = {  # the spindle, then the feed mode, before the grooves
 def test_a_new_jobs_tool_controller_posts_at_the_default_feed_and_speed(shop, name):
     new_job_tool_controller(shop[3])
     op = groove(shop, "cylinder")
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     assert op.FeedsAndSpeeds == (
         "feed 0.05 mm/rev (default: the op's FeedPerRev and the tool controller's HorizFeed are 0); "
         "spindle 500 rpm (default: the op's and the tool controller's SpindleSpeed are 0)")
@@ -91,7 +92,7 @@ CSS_BLOCKS = {
 @pytest.mark.parametrize("name", NAMES)
 def test_constant_surface_speed_and_feed_per_revolution_the_controls_way(shop, name):
     op = groove(shop, "cylinder", feed_per_rev=0.08, surface_speed="120 m/min", max_spindle_speed=2500)
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     if name == "ab9":
         with pytest.raises(posts.PostError, match="constant surface speed cannot be written for the Allen-Bradley"):
             export(name, [op])

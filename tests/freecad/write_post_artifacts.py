@@ -129,6 +129,8 @@ def _write_artifacts(folder):
     from test_groove_op import groove
     from test_posts import read
 
+    from freecad_groove.freecad.groove_op import op_error
+
     os.makedirs(folder, exist_ok=True)
     doc = FreeCAD.newDocument("PostArtifacts")
     shop = make_shop(doc)
@@ -137,7 +139,7 @@ def _write_artifacts(folder):
     written = []
     for case, (key, values, args) in sorted(ARTIFACT_CASES.items()):
         op = groove(shop, key, **values)
-        assert op.isValid(), (case, op.getStatusString())
+        assert op_error(op) is None, (case, op_error(op))
         data = _artifact(op, case, args)
         assert data["programs"]["linuxcnc"]["text"], case
         # the expected moves are what the LinuxCNC program holds

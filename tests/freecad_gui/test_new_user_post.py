@@ -17,8 +17,13 @@ import pytest
 from gui_helpers import make_gui_shop, open_panel, process, start_groove_command, task_button, wait_for
 from PySide import QtGui
 
+from freecad_groove.freecad.groove_op import op_error
+from freecad_groove.gui import tool_page as tool_page_module
+from freecad_groove.gui.tool_page import ToolPage
+
 NAMES = ["sinumerik", "ab9", "fanuc", "haas", "linuxcnc"]
 SUFFIX = {"sinumerik": "mpf", "ab9": "nc", "fanuc": "nc", "haas": "nc", "linuxcnc": "ngc"}
+BLADE_WIDTH = 3.0  # typed into the width dialog the one-click tool controller asks
 POSTED = os.path.join(os.environ.get("FREECAD_GROOVE_SHARE") or os.getcwd(), "posted")
 
 
@@ -66,7 +71,7 @@ def post_with_cam_post(doc, job, name, path, args=""):
     process(0.1)
 
 
-def test_a_new_job_grooves_and_posts_with_cams_post_command(new_job):
+def test_a_new_job_grooves_and_posts_with_cams_post_command(new_job, monkeypatch):
     doc, job, model = new_job
     tc = job.Tools.Group[0]
     assert tc.HorizFeed.Value == 0 and tc.SpindleSpeed == 0  # what a new Job gives
@@ -74,10 +79,19 @@ def test_a_new_job_grooves_and_posts_with_cams_post_command(new_job):
     panel = start_groove_command(doc, model, "cylinder")
     no_traceback("the Groove command")
     op = panel.obj
-    task_button(panel, QtGui.QDialogButtonBox.Ok).click()
+    # The default tool is an end mill: no blade width, so OK waits for one (none is made up).
+    ok = task_button(panel, QtGui.QDialogButtonBox.Ok)
+    assert not ok.isEnabled()
+    tool_page = next(p for p in panel.featurePages if isinstance(p, ToolPage))
+    monkeypatch.setattr(tool_page_module, "ask_blade_width", lambda parent: BLADE_WIDTH)  # the modal dialog
+    tool_page.form.newGroovingTool.click()  # the one click the panel offers
+    wait_for(ok.isEnabled, what="OK enabled by the grooving tool controller")
+    assert op.ToolController.Tool.Width.Value == BLADE_WIDTH
+    no_traceback("Create grooving tool controller")
+    ok.click()
     wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
     process(0.1)
-    assert open_panel(doc) is None and op.isValid(), op.getStatusString()
+    assert open_panel(doc) is None and op_error(op) is None, op_error(op)
     assert "0.05 mm/rev" in op.FeedsAndSpeeds and "500 rpm" in op.FeedsAndSpeeds
     no_traceback("OK")
     os.makedirs(POSTED, exist_ok=True)
