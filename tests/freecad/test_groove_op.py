@@ -659,7 +659,10 @@ def test_a_recompute_reports_the_cycles_warnings_once(shop, monkeypatch):
     printed = []
     monkeypatch.setattr(FreeCAD.Console, "PrintWarning", printed.append)
     doc = shop[0]
-    op = groove(shop, "cylinder")  # width 4, the 3 mm blade: room for it
+    # width 4, the 3 mm r0.2 blade: room for it; base radii of the blade's own
+    # radius, so that it reaches every corner (no unreachable-material warning)
+    op = groove(shop, "cylinder", base_corner1=0.2, base_corner1_type="Radius", base_corner2=0.2,
+                base_corner2_type="Radius")
     assert op_error(op) is None, op_error(op)
     assert not [m for m in printed if "CYCLE93" in m] and all(plan.warnings == [] for plan in op.Proxy.plan(op))
     op.FlankAllowance = 0.6  # 4 - 2 x 0.6 = 2.8 < 3: roughing runs on the final profile

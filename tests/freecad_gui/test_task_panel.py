@@ -250,6 +250,8 @@ def test_allowances_that_leave_the_blade_no_room_warn_in_amber_and_ok_stays(shop
     op, panel, page = start_command(doc, model, "cylinder")
     label = widgets.child(page.form, "warningLabel")
     flank = page.field("FlankAllowance")
+    # A sharp blade reaches the sharp base corners: only the allowances can warn here.
+    replan(page, page.field("ToolCornerRadius"), "0 mm")
     assert page.warnings == [] and not label.isVisible()
     # The 3 mm blade in the 4 mm wide groove: flank allowances of 0.6 leave a 2.8 mm roughing base.
     replan(page, flank, "0.6 mm")
