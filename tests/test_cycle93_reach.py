@@ -106,7 +106,10 @@ def assert_left_is_what_is_warned(call, tool, tol=0.001):
             region, label)
         # Just inside: at a wall's own column the line would run along the wall.
         at = min(max(region.at, region.u_from + 1e-6), region.u_to - 1e-6)
-        assert _thickness(geo, left, at) == pytest.approx(region.depth, abs=0.003), (region, label)
+        # Deepest at a wall, under the blade's corner: there the gap falls with the square root of the distance
+        # from the wall, which the simulated blade's polygon (chords of its corners) does not resolve.
+        slack = 0.003 if at == region.at else 0.01
+        assert _thickness(geo, left, at) == pytest.approx(region.depth, abs=slack), (region, label)
     rest = left
     for region in regions:
         rest = rest.difference(_band(geo, region.u_from - tol, region.u_to + tol))
