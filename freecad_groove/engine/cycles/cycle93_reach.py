@@ -245,6 +245,7 @@ class _Levels:
         self.pieces = [(u1, v1, u2, v2, (v2 - v1) / (u2 - u1) if u2 > u1 else None)
                        for (u1, v1), (u2, v2) in zip(top, top[1:])]
         self._ends = [piece[2] for piece in self.pieces]
+        self._tops = [max(piece[1], piece[3]) for piece in self.pieces]
         self.element = _elements(geometry, self.pieces)
 
     def bottom(self, s: float) -> float:
@@ -285,6 +286,8 @@ class _Levels:
         for index in range(bisect_left(self._ends, u - EDGE), len(self.pieces)):
             if self.pieces[index][0] > u + self.width + EDGE:
                 break
+            if self._tops[index] <= best:
+                continue  # the blade never sits above a piece's top: it cannot raise it
             level = self.level(index, u)
             if level > best:
                 best, which = level, index
