@@ -106,7 +106,10 @@ def assert_left_is_what_is_warned(call, tool, tol=0.001):
             region, label)
         # Just inside: at a wall's own column the line would run along the wall.
         at = min(max(region.at, region.u_from + 1e-6), region.u_to - 1e-6)
-        assert _thickness(geo, left, at) == pytest.approx(region.depth, abs=0.003), (region, label)
+        # Deepest at a wall, under the blade's corner: there the gap falls with the square root of the distance
+        # from the wall, which the simulated blade's polygon (chords of its corners) does not resolve.
+        slack = 0.003 if at == region.at else 0.01
+        assert _thickness(geo, left, at) == pytest.approx(region.depth, abs=slack), (region, label)
     rest = left
     for region in regions:
         rest = rest.difference(_band(geo, region.u_from - tol, region.u_to + tol))
@@ -125,3 +128,20 @@ def test_face_groove_at_angc_45_leaves_exactly_what_is_reported():
                 if r.area > 1]
     assert (wedge.corner, round(wedge.depth, 2), round(wedge.area, 2)) == (1, 2.27, 6.9)
     assert_left_is_what_is_warned(call, GroovingTool(5.0, 0.4))
+
+
+@pytest.mark.parametrize("call, tool", [
+    # A chamfer at base corner 2 running straight into an edge radius: the blade's corner leaves a sliver.
+    ("CYCLE93(15, 0, 3.42, 0.8, 0, 0, 19.9, 0, 1, 0, -0.1, 0, 0, 0.3, 0, 13, 0)", GroovingTool(3.42, 0.4)),
+    # As wide as a sharp blade, with a base chamfer: the blade cannot get past it and leaves the whole floor.
+    ("CYCLE93(15, 0, 1.5, 0.8, 0, 0, 0, 0.1, 0.7, -0.39, 0, 0, 0, 0.3, 0, 3, 0)", GroovingTool(1.5, 0.0)),
+    # Steep contours (ANGC 152, 88.8): the corner's material stops at the contour line, the stock's top.
+    ("CYCLE93(30.31, 9.26, 4.57, 2.12, 152, 0, 23.6, 0.1, 0.1, 1.15, 0, 0, 0.12, 0.34, 0, 12, 2)",
+     GroovingTool(3.0, 0.0, reference="plus")),
+    ("CYCLE93(23.55, 0.15, 2.3, 7.83, 88.8, 0, 0, 0.32, -0.1, 0, 0, 0, 0, 0.3, 0, 15, 0)",
+     GroovingTool(1.8, 0.05, reference="plus")),
+    # Exactly the blade's width between two walls: only the blade flush with both reaches the floor.
+    ("CYCLE93(15, 0, 3.57, 0.8, 0, 0, 0, 0.1, 0, 0, 0, 0, 0, 0.3, 0, 11, 0)", GroovingTool(3.57, 0.05)),
+])
+def test_found_by_generated_grooves_leaves_exactly_what_is_reported(call, tool):
+    assert_left_is_what_is_warned(Cycle93.parse(call), tool)

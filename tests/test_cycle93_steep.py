@@ -14,6 +14,7 @@ import math
 import pytest
 from shapely.geometry import Point as ShapelyPoint
 from shapely.ops import unary_union
+from test_cycle93_reach import assert_left_is_what_is_warned
 from test_cycle93_simulation import run
 
 from freecad_groove import verify as sim
@@ -77,6 +78,11 @@ def test_steep_contours_are_cut_without_gouge_and_completely_outside_the_acute_c
     elsewhere = difference(verdict.unreachable, zone)
     assert area(elsewhere) <= 4 * TOOL.corner_radius ** 2, verdict.describe()
     assert area(verdict.unreachable) <= bound + 0.05, (area(verdict.unreachable), bound)
+    if features == "plain":
+        # And what is left is exactly what the unreachable-material warning reports (cycle93_reach). Open: the
+        # featured ones leave slivers under 0.0001 mm² beside the edge chamfer that the warning's average-thickness
+        # threshold drops.
+        assert_left_is_what_is_warned(call, TOOL)
 
 
 def test_the_acute_corner_leaves_the_flat_blade_triangle():
