@@ -80,6 +80,11 @@ def test_a_new_job_grooves_and_posts_with_cams_post_command(new_job, monkeypatch
     no_traceback("the Groove command")
     op = panel.obj
     # The default tool is an end mill: no blade width, so OK waits for one (none is made up).
+    def ok_shown():
+        button = panel.buttonBox.button(QtGui.QDialogButtonBox.Ok)
+        return button is not None and button.isVisible()
+
+    wait_for(ok_shown, what="the panel's OK button")
     ok = task_button(panel, QtGui.QDialogButtonBox.Ok)
     assert not ok.isEnabled()
     tool_page = next(p for p in panel.featurePages if isinstance(p, ToolPage))
