@@ -93,7 +93,10 @@ def _canonical(value: object) -> object:
         return ["P", _canonical(tuple(value.Base)), _canonical(tuple(value.Rotation.Q))]
     if hasattr(value, "x") and hasattr(value, "y") and hasattr(value, "z"):  # a Vector
         return ["V", repr(value.x), repr(value.y), repr(value.z)]
-    return [type(value).__name__, repr(value)]
+    text = repr(value)
+    if " at 0x" in text:  # a repr naming an address (a Material) changes with every session: not a planning input
+        return [type(value).__name__]
+    return [type(value).__name__, text]
 
 
 def _shape_digest(shape: object) -> Optional[str]:
