@@ -299,9 +299,10 @@ class ObjectGroove(PathOp.ObjectOp):
             return None
         try:
             stamp = plan_cache.fingerprint(obj, self._parent_job(obj))
-            if plan_cache.saved_fingerprint(saved) != stamp:
+            plans = plan_cache.unpack(saved, stamp)
+            if plans is None:
                 return None
-            self._plans, self._fingerprint = plan_cache.unpack(saved), stamp
+            self._plans, self._fingerprint = plans, stamp
         except Exception as e:  # plan again
             FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
             return None

@@ -181,9 +181,12 @@ def _settings(data: dict) -> Settings:
     return Settings(**dict(data, tool=GroovingTool(**tool) if tool else None))
 
 
-def unpack(text: str) -> list[GroovePlan]:
-    """The plans of a pack() text (their ``geometry`` None)."""
+def unpack(text: str, stamp: Optional[str] = None) -> Optional[list[GroovePlan]]:
+    """The plans of a pack() text (their ``geometry`` None); None when it is
+    not one, or when ``stamp`` is given and is not its fingerprint."""
     data = _unpacked(text)
+    if data is None or (stamp is not None and data["fingerprint"] != stamp):
+        return None
     faces = [GrooveFace(**dict(face, start=tuple(face["start"]), end=tuple(face["end"]))) for face in data["faces"]]
     settings = [_settings(s) for s in data["settings"]]
     plans = []
