@@ -203,13 +203,15 @@ def _freecad_groove_bench():
             mine / theirs, "met" if mine <= theirs else "NOT met"))
         emit("  a post of touched (not recomputed) ops plans them again: about %s" % ms(mine + plan_med).strip())
     if mine is not None and reopened is not None:
-        emit("  after saving and reopening the document: %.2f x the post before saving" % (reopened / mine))
+        emit("  target: the first post after saving and reopening as fast as before saving -> %.2f x: %s" % (
+            reopened / mine, "met" if reopened <= 1.25 * mine else "NOT met"))
 
 
 def _post_after_reopening(doc, post, emit, timed, ms):
     """Save ``doc``, close it, open it again (FreeCAD does not recompute) and
-    time ``post`` of its tool controller and Groove ops, median of 3; the
-    document is closed after. Returns the median (None when it does not run)."""
+    time ``post`` of its tool controller and Groove ops: the first post, then
+    the median of 3 more; the document is closed after. Returns the first
+    post's time (None when it does not run)."""
     import os
     import statistics
     import tempfile
@@ -218,11 +220,14 @@ def _post_after_reopening(doc, post, emit, timed, ms):
 
     path = os.path.join(tempfile.mkdtemp(), "bench_post.FCStd")
     doc.saveAs(path)
+    size = os.path.getsize(path)
     FreeCAD.closeDocument(doc.Name)
     again = FreeCAD.openDocument(path)
     try:
         ops = [o for o in again.Objects if hasattr(o, "GrooveCount")]
         objects = [ops[0].ToolController] + ops
+        # the first post checks the saved plans' fingerprints and reads them (plan_cache.py); later ones reuse them
+        first, _text = timed(lambda: post.export(objects, "-", ""), 1)
         times, text = timed(lambda: post.export(objects, "-", ""), 3)
     except Exception as e:  # shown, not fatal
         emit("  %-58s does not run: %s: %s" % ("ours after reopening", type(e).__name__, e))
@@ -231,7 +236,10 @@ def _post_after_reopening(doc, post, emit, timed, ms):
         FreeCAD.closeDocument(again.Name)
         os.remove(path)
     med = statistics.median(times)
-    emit("  %-58s %s  (%d lines)" % ("ours after saving and reopening the document", ms(med), text.count("\n")))
+    emit("  %-58s %s  (%d lines; %.0f kB saved)" % ("ours after saving and reopening: the first post", ms(first[0]),
+                                                   text.count("\n"), size / 1000.0))
+    emit("  %-58s %s" % ("ours after saving and reopening: the next ones", ms(med)))
+    med = first[0]
     return med
 
 

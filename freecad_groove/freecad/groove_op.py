@@ -70,6 +70,7 @@ from ..engine import GroovingTool, Settings
 from ..engine.cycles.cycle93 import DEFAULT_VRT_MM, Cycle93
 from ..engine.moves import DWELL, FEED, RAPID
 from ..engine.numbers import format_value
+from . import plan_cache
 from .cutting import CuttingData, cutting_data
 from .faces import GrooveFace, analyse_face, element_name
 from .groove_plan import GroovePlan, plan_groove
@@ -231,6 +232,7 @@ class ObjectGroove(PathOp.ObjectOp):
 
     def opExecute(self, obj: object) -> None:
         self._plans = None
+        self._saved_plans = None  # what the document held: superseded by this recompute
         self.error = None
         faces = None
         try:
@@ -245,7 +247,7 @@ class ObjectGroove(PathOp.ObjectOp):
         self.commandlist.extend(self.commands(obj, plans, cutting))
         if obj.FeedsAndSpeeds != cutting.describe():
             obj.FeedsAndSpeeds = cutting.describe()
-        self._plans = plans  # the posts reuse it while the op stays up to date
+        self._keep_plans(obj, plans)
         for plan in plans:  # what the cycles cannot do as programmed: once per recompute
             for text in plan.warning_texts:
                 FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, text))
@@ -267,11 +269,57 @@ class ObjectGroove(PathOp.ObjectOp):
     def current_plan(self, obj: object) -> list[GroovePlan]:
         """plan(obj) as the last recompute made it, while nothing has touched
         the op since (planning checks every link rapid against the model, the
-        costly part of posting); otherwise a fresh plan."""
-        plans = getattr(self, "_plans", None)
-        if plans is not None and getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)):
-            return plans
+        costly part of posting); after reopening the document, the plans it
+        saved while their fingerprint still matches (plan_cache.py); otherwise
+        a fresh plan."""
+        if getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)):
+            plans = getattr(self, "_plans", None)
+            if plans is None:
+                plans = self._restored_plans(obj)
+            if plans is not None:
+                return plans
         return self.plan(obj)
+
+    # -- the plans kept in the document (plan_cache.py) ---------------------------
+    def _keep_plans(self, obj: object, plans: list[GroovePlan]) -> None:
+        """Keep ``plans`` for the posts, with the fingerprint of their inputs
+        for the saved document (none when it cannot be taken: then nothing is saved)."""
+        self._plans = plans
+        try:
+            self._fingerprint = plan_cache.fingerprint(obj, self._parent_job(obj))
+        except Exception as e:  # never a reason to fail the op: the next post after reopening plans again
+            self._fingerprint = None
+            FreeCAD.Console.PrintLog("%s: plans not kept for the saved document: %s\n" % (obj.Label, e))
+
+    def _restored_plans(self, obj: object) -> Optional[list[GroovePlan]]:
+        """The plans the opened document saved, when their fingerprint is that
+        of the op's inputs now (kept from then on); None otherwise."""
+        saved, self._saved_plans = getattr(self, "_saved_plans", None), None
+        if not saved:
+            return None
+        try:
+            stamp = plan_cache.fingerprint(obj, self._parent_job(obj))
+            plans = plan_cache.unpack(saved, stamp)
+            if plans is None:
+                return None
+            self._plans, self._fingerprint = plans, stamp
+        except Exception as e:  # plan again
+            FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
+            return None
+        return self._plans
+
+    def dumps(self) -> Optional[dict]:
+        """The proxy's saved state: the op's plans with their fingerprint
+        (plan_cache.py), or what the opened document held when they were not
+        needed yet."""
+        plans, stamp = getattr(self, "_plans", None), getattr(self, "_fingerprint", None)
+        if plans is not None and stamp and getattr(self, "error", None) is None:
+            return {"plans": plan_cache.pack(plans, stamp)}
+        saved = getattr(self, "_saved_plans", None)
+        return {"plans": saved} if saved else None
+
+    def loads(self, state: object) -> None:
+        self._saved_plans = state.get("plans") if isinstance(state, dict) else None
 
     # -- properties -------------------------------------------------------------
     def _add_missing_properties(self, obj: object) -> None:

@@ -1,0 +1,143 @@
+"""A post after reopening a document reuses the plans the op saved
+(freecad_groove/freecad/plan_cache.py) while their fingerprint matches, and
+plans again when any input changed while the document was closed (here: the
+saved document's values changed without a recompute, as an edit of the file
+or an older add-on leaves them) or the add-on's planning code changed. Run by
+tests/freecad/run_suite.py in FreeCAD 1.1 and 1.0.
+"""
+
+import dataclasses
+
+import FreeCAD
+import pytest
+import test_groove_op as tg
+from documents import DATA, opened, reopened
+from parts import PROFILE, shaft_shape
+
+from freecad_groove import demo
+from freecad_groove.freecad import groove_op, plan_cache
+from freecad_groove.freecad.groove_op import op_error
+
+doc, shop = tg.doc, tg.shop
+
+
+@pytest.fixture
+def plan_calls(monkeypatch):
+    """The ops' plan() calls, counted: [count]."""
+    calls = [0]
+    plan = groove_op.ObjectGroove.plan
+
+    def counted(self, obj, faces=None):
+        calls[0] += 1
+        return plan(self, obj, faces)
+
+    monkeypatch.setattr(groove_op.ObjectGroove, "plan", counted)
+    return calls
+
+
+def _grooves(shop):
+    """Two grooves on the cylinder, one with radii (it has more moves)."""
+    op = tg.groove(shop, "cylinder", groove_count=2, pitch=6, base_corner1=0.5, base_corner1_type="Radius")
+    assert op_error(op) is None, op_error(op)
+    return op
+
+
+def _post(op):
+    return demo.load_post("linuxcnc").export([op.ToolController, op], "-", "")
+
+
+def _fresh_post(op):
+    """What the post writes from a fresh plan of ``op``."""
+    op.Proxy._plans, op.Proxy._saved_plans = None, None
+    return _post(op)
+
+
+def test_a_post_after_reopening_does_not_plan_again(shop, tmp_path, plan_calls):
+    doc = shop[0]
+    op = _grooves(shop)
+    name, before = op.Name, _post(op)
+    with reopened(doc, tmp_path / "a.FCStd") as doc2:
+        calls = plan_calls[0]
+        assert _post(doc2.getObject(name)) == before
+        assert plan_calls[0] == calls
+        doc2.saveAs(str(tmp_path / "b.FCStd"))  # saved with the plans it reused
+    with opened(str(tmp_path / "a.FCStd")) as doc3:
+        doc3.saveAs(str(tmp_path / "c.FCStd"))  # saved before any post
+    for again in ("b.FCStd", "c.FCStd"):
+        with opened(str(tmp_path / again)) as doc4:
+            assert _post(doc4.getObject(name)) == before, again
+            assert plan_calls[0] == calls, again
+
+
+def _change_width(op, model):
+    op.Width = 3.5
+
+
+def _change_model_shape(op, model):
+    # the same faces, the cylinder 0.5 mm larger (20 -> 20.5); Base names the same face again
+    # (FreeCAD's element map marks it "?Face3" when the shape is replaced)
+    base = [(obj, [sub.lstrip("?") for sub in subs]) for obj, subs in op.Base]
+    model.Shape = shaft_shape([(r + 0.5 if r == 20 else r, z) for r, z in PROFILE])
+    op.Base = base
+
+
+def _change_model_placement(op, model):
+    model.Placement = FreeCAD.Placement(FreeCAD.Vector(0, 0, 1), FreeCAD.Rotation())
+
+
+def _change_tool_controller(op, model):
+    op.ToolController.HorizFeed = "50 mm/min"
+
+
+def _change_tool_bit(op, model):
+    bit = op.ToolController.Tool
+    name = next(n for n in bit.PropertiesList if hasattr(getattr(bit, n), "Value"))
+    setattr(bit, name, getattr(bit, name).Value + 1.0)
+
+
+def _change_engine(op, model, monkeypatch):
+    monkeypatch.setattr(plan_cache, "engine_stamp", lambda: "another version")
+
+
+CHANGES = [_change_width, _change_model_shape, _change_model_placement, _change_tool_controller, _change_tool_bit]
+
+
+@pytest.mark.parametrize("change", CHANGES + [_change_engine], ids=lambda f: f.__name__)
+def test_a_changed_input_makes_the_post_plan_again(shop, tmp_path, plan_calls, monkeypatch, change):
+    doc = shop[0]
+    op = _grooves(shop)
+    name, job_name = op.Name, shop[2].Name
+    with reopened(doc, tmp_path / "a.FCStd") as doc2:
+        op2 = doc2.getObject(name)
+        model = doc2.getObject(job_name).Model.Group[0]
+        if change is _change_engine:
+            change(op2, model, monkeypatch)
+        else:
+            change(op2, model)
+        for obj in doc2.Objects:  # as a document saved with the new value and not recomputed opens
+            obj.purgeTouched()
+        calls = plan_calls[0]
+        text = _post(op2)
+        assert plan_calls[0] > calls
+        assert text == _fresh_post(op2)
+
+
+def test_restored_plans_are_the_saved_ones(shop):
+    op = _grooves(shop)
+    plans = op.Proxy.current_plan(op)
+    stamp = plan_cache.fingerprint(op, shop[2])
+    restored = plan_cache.unpack(plan_cache.pack(plans, stamp))
+    assert restored == [dataclasses.replace(plan, geometry=None) for plan in plans]
+    assert plan_cache.saved_fingerprint(plan_cache.pack(plans, stamp)) == stamp
+    assert plan_cache.saved_fingerprint("not saved plans") is None
+
+
+@pytest.mark.parametrize("path", ["demo_part_saved_at_bfb45ff.FCStd", "groove_gui_saved_at_bfb45ff.FCStd"])
+def test_documents_saved_before_open_and_post(path, plan_calls):
+    with opened(DATA + "/" + path) as saved:
+        ops = [obj for obj in saved.Objects if isinstance(getattr(obj, "Proxy", None), groove_op.ObjectGroove)]
+        assert ops
+        for op in ops:
+            text = _post(op)
+            assert "G1" in text, op.Label
+        assert plan_calls[0] >= len(ops)  # they saved no plans
