@@ -14,11 +14,13 @@ contour and chamfers, cut with a round-cornered and a sharp blade."""
 import math
 
 import pytest
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
 from shapely.affinity import translate
 from shapely.geometry import Polygon, box
 from shapely.prepared import prep
 
-from freecad_groove.engine import GroovingTool, Settings
+from freecad_groove.engine import CycleError, GroovingTool, Settings
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.envelope import Envelope, arc_points
 
@@ -198,3 +200,26 @@ def _arc(center, radius, bump):
     from freecad_groove.engine.envelope import Arc
 
     return Arc(center, radius, bump)
+
+
+corner = st.one_of(st.just(0.0), st.decimals("0.05", "2", places=2).map(float),
+                   st.decimals("-1", "-0.1", places=2).map(float))
+
+
+@settings(max_examples=25, suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow])
+@given(typ=st.sampled_from([1, 5, 11]), angc=st.sampled_from([0.0, 8.0, 172.0]), ang1=st.sampled_from([0.0, 12.0]),
+       ang2=st.sampled_from([0.0, 25.0]), rco1=corner, rco2=corner, rci1=corner, rci2=corner,
+       radius=st.sampled_from([0.0, 0.1, 0.4, 0.8]))
+def test_on_generated_grooves_a_blade_at_the_lowest_level_touches_without_cutting(
+        typ, angc, ang1, ang2, rco1, rco2, rci1, rci2, radius):
+    call = Cycle93(axfa=30.0, axsa=0.0, widg=11.0, depg=5.0, angc=angc, ang1=ang1, ang2=ang2, rco1=rco1, rco2=rco2,
+                   rci1=rci1, rci2=rci2, idep=1.0, typ=typ)
+    try:
+        env = call.geometry(Settings(tool=GroovingTool(4.0, radius))).final_env
+    except CycleError:
+        assume(False)
+    judge = Judge(env)
+    for u in positions(env)[::3]:
+        v = env.lowest(u)
+        assert not judge.cuts(u, v + LIFT), (u, v)
+        assert judge.cuts(u, v - DROP), (u, v)
