@@ -124,8 +124,8 @@ def add_settings_options(parser: argparse.ArgumentParser) -> None:
         "--max-contour-tilt",
         type=finite,
         metavar="DEG",
-        help="CYCLE93: steepest contour (degrees from the groove's own axis) the paraxial roughing accepts "
-        "(default 45).",
+        help="CYCLE93: refuse contours tilted more than DEG degrees from the groove's own axis (a shop "
+        "limit; default: none, the whole ANGC range 0..180 is machined).",
     )
 
 

@@ -4,7 +4,7 @@
 A FreeCAD CAM script post of freecad-groove: this file is the argument parser
 and a call into the shared post logic, freecad_groove/freecad/posts/ (which
 documents the output, the options and every choice). `--help` in the Job's
-post-processor arguments returns the options instead of a program.
+post-processor arguments shows the options in the report view and writes no program.
 """
 
 import os
@@ -23,6 +23,10 @@ UNITS = "G21"  # metric (FreeCAD's WrapperPost reads this)
 parser = _posts.make_parser(CONTROL)
 TOOLTIP = _posts.tooltip(CONTROL)
 TOOLTIP_ARGS = parser.format_help()
+
+
+# CAM's Post Process command takes this class (named after the post) and reports a failed post in one line
+Linuxcnc_Lathe = _posts.command_post_class(CONTROL)
 
 
 def export(objectslist, filename, argstring):

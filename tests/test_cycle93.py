@@ -134,8 +134,6 @@ def test_a_parameter_with_too_many_digits_is_named_and_shortened():
         (dict(typ=2, angc=0), "ANGC", 61603, "face groove on a contour element parallel"),
         (dict(typ=6, angc=180), "ANGC", 61603, "face groove on a contour element parallel"),
         (dict(typ=5, angc=90), "ANGC", 61603, "not perpendicular"),
-        (dict(angc=50), "ANGC", None, "cycle93_max_contour_tilt"),
-        (dict(typ=2, angc=40), "ANGC", None, "cycle93_max_contour_tilt"),
         (dict(rco1=2, rci1=1.5), "RCO1/RCI1", 61603, "overlap"),
         (dict(typ=1, angc=40, ang2=70), "ANG2", 61603, "does not reach the groove base"),
     ],

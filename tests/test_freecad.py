@@ -17,10 +17,12 @@ fails. (A host FreeCAD used instead of a root needs `freecad` and
 import ast
 import json
 import os
+import re
 import shutil
 import sys
 
 import pytest
+import rs274
 from conftest import ROOT
 from freecad_roots import FREECADCMD, LABELS, available, describe, exec_code, run
 
@@ -123,3 +125,11 @@ def test_freecad_gui_suite(label, tmp_path):
     publish_screenshots(tmp_path / "screenshots", label)
     check_result(result, summary, returncode, output)
     assert not result["skipped"], "%s: skipped %s" % (summary, result["skipped"])
+    # the LinuxCNC program CAM's Post Process command wrote for a new Job (test_new_user_post.py)
+    posted = tmp_path / "posted" / "new_job_linuxcnc.ngc"
+    assert posted.exists(), "%s: CAM_Post wrote no LinuxCNC program" % summary
+    rs274.require_rs274()
+    text = posted.read_text()
+    tools = {int(t) for t in re.findall(r"^T(\d+) M6", text, re.M)}
+    canon = rs274.run_rs274(text, timeout=120, tool_table=tools)  # RS274Error when rs274 refuses it
+    assert any(move[0] == "G1" for move in canon), text

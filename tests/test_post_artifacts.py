@@ -24,6 +24,7 @@ run that writes no programs fails them.
 """
 
 import json
+import math
 import re
 
 import pytest
@@ -96,8 +97,9 @@ def linuxcnc_text(case, post):
     if post == "linuxcnc":
         return text
     tool = case["tool"]
-    settings = Settings(tool=GroovingTool(tool["width"], tool["corner_radius"], reference=tool["reference"]),
-                        peck_retract=case["retract"])
+    unit = 25.4 if case.get("inches") else 1.0  # the translator takes the blade in the program's units
+    settings = Settings(tool=GroovingTool(tool["width"] / unit, tool["corner_radius"] / unit,
+                                          reference=tool["reference"]), peck_retract=case["retract"] / unit)
     return translate_program(text, post, settings, source_name="%s %s" % (case["case"], post))
 
 
@@ -126,6 +128,19 @@ def judge(case, canon, index, label):
     return verdict
 
 
+def check_inch_moves(case, canon, post, name):
+    """An --inches program: rs274 reports inches to 4 decimals (0.00254 mm), coarser than the oracle's
+    0.001 mm; the LinuxCNC program's moves, in mm, must still be the engine's to that resolution."""
+    if post != "linuxcnc":
+        return
+    canon = [(k, x * 25.4, z * 25.4, None, d) for k, x, z, _f, d in canon]
+    index = next(i for i, c in enumerate(canon) if c[0] in ("G0", "G1") and
+                 math.dist(c[1:3], case["start"]) <= 0.003)
+    expected = [Move(k, x, z, None, p) for k, x, z, _f, p in case["expected"]]
+    problems = canonical_matches(written_moves(expected), canon, start=index, tol=0.003)
+    assert not problems, "%s:\n%s" % (name, "\n".join(problems[:8]))
+
+
 @pytest.mark.parametrize("post", POSTS)
 @pytest.mark.parametrize("label", LABELS)
 def test_posted_grooves_run_in_rs274_and_cut_cleanly(posted, label, post):
@@ -135,8 +150,9 @@ def test_posted_grooves_run_in_rs274_and_cut_cleanly(posted, label, post):
         name = "FreeCAD %s %s %s_lathe %s" % (case["freecad"], case["case"], post, case["programs"][post]["args"])
         program = case["programs"][post]
         if program["text"] is None:
-            # the one refusal the FreeCAD tests expect: a dwell on the Allen-Bradley 9/Series
-            assert post == "ab9" and "Dwell" in program["error"], "%s: %s" % (name, program["error"])
+            # the refusals the FreeCAD tests expect on the Allen-Bradley 9/Series: a dwell, constant surface speed
+            assert post == "ab9" and ("Dwell" in program["error"] or "constant surface speed" in program["error"]), \
+                "%s: %s" % (name, program["error"])
             continue
         text = linuxcnc_text(case, post)
         tools = {int(t) for t in re.findall(r"^T(\d+) M6", text, re.M)}
@@ -144,6 +160,10 @@ def test_posted_grooves_run_in_rs274_and_cut_cleanly(posted, label, post):
             canon = run_rs274(text, tools)
         except RS274Error as e:
             raise AssertionError("%s: rs274 refused the program: %s\n%s" % (name, e, text)) from None
+        if case.get("inches"):
+            check_inch_moves(case, canon, post, name)
+            checked += 1
+            continue
         index = arrival(canon, case["start"])
         if post == "linuxcnc":
             expected = [Move(k, x, z, f, p) for k, x, z, f, p in case["expected"]]

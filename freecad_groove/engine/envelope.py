@@ -19,7 +19,7 @@ and circles, each chorded directly to the tolerance when traced.
 
 import math
 from bisect import bisect_right
-from typing import Dict, List, Optional, Tuple
+from typing import Dict, List, Optional, Set, Tuple
 
 from .envelope_contacts import EDGE_EPS, Arc, top_curves
 from .envelope_curves import Curve, chords, upper_envelope, value
@@ -91,6 +91,33 @@ class Envelope:
         if abs(end - out[-1][1]) > JUMP:
             out.append((hi, end))
         return _drop_collinear(_without_slivers(out))
+
+    def walls(self, lo: float, hi: float) -> Set[float]:
+        """Blade positions in (lo, hi) where a side edge passes a vertical step of the top."""
+        out = set()
+        for (u1, _v1), (u2, _v2) in zip(self.points, self.points[1:]):
+            if u2 - u1 <= 1e-12:
+                out.update(c for c in (u1, u1 - self.width) if lo < c < hi)
+        return out
+
+    def breakpoints(self, lo: float, hi: float) -> List[float]:
+        """Blade positions in [lo, hi] where a side edge, a corner or the flat
+        front passes a vertex of the top, or a corner starts rolling along one
+        of its lines: where the piece of the top that holds the blade up may
+        change (``cycle93_reach`` searches between them)."""
+        r, w = self.radius, self.width
+        offsets = (0.0, r, w - r, w) if r > 0 else (0.0, w)
+        out = {lo, hi}
+        for pu, _pv in self.points:
+            out.update(c for c in (pu - off for off in offsets) if lo < c < hi)
+        if r > 0:
+            for index, ((u1, v1), (u2, v2)) in enumerate(zip(self.points, self.points[1:])):
+                if u2 - u1 <= 1e-12 or v1 == v2 or index in self.arcs:
+                    continue
+                q = (v2 - v1) / (u2 - u1)
+                s = r - r * (-q) / math.sqrt(1 + q * q) if q < 0 else w - r + r * q / math.sqrt(1 + q * q)
+                out.update(c for c in (u1 - s, u2 - s) if lo < c < hi)
+        return sorted(out)
 
 
 def _without_slivers(pts: List[Point]) -> List[Point]:

@@ -31,10 +31,10 @@ class Settings:
     # instead of radius values (the seed manual).
     cycle93_diameter_input: bool = False
 
-    # CYCLE93: steepest contour (degrees away from the groove's own axis) the
-    # paraxial roughing accepts; beyond it the finishing chip would not be
-    # bounded by the allowances.
-    cycle93_max_contour_tilt: float = 45.0
+    # CYCLE93: an optional shop limit on the contour's tilt (degrees away from
+    # the groove's own axis); None: the seed's whole ANGC range 0..180 (only a
+    # contour square to the groove's axis is refused, alarm 61603).
+    cycle93_max_contour_tilt: Optional[float] = None
 
     # Allen-Bradley: True when G07 selects diameter mode and G08 radius mode;
     # the 9/Series manual uses both readings.

@@ -17,16 +17,69 @@ def snake_case(name):
 KEYWORDS = {snake_case(n): n for n in SETTABLE}
 
 
-def _faces(job, faces):
-    """[(obj, [sub, ...])] from (obj, "Face3"), (obj, ["Face3", ...]) or a list of those."""
-    if isinstance(faces, tuple) and len(faces) == 2 and not isinstance(faces[0], tuple):
-        faces = [faces]
+def _pairs(faces: object) -> list:
+    """The (part, subs) pairs of make_groove's ``faces`` argument."""
+    if isinstance(faces, tuple) and len(faces) == 2 and not isinstance(faces[0], (tuple, list)):
+        return [faces]
+    if not isinstance(faces, (list, tuple)) or not faces:
+        raise ValueError("make_groove(): faces=%r: give (part, \"Face3\"), (part, [\"Face3\", ...]) "
+                         "or a list of those" % (faces,))
+    return list(faces)
+
+
+def _model(job: object, part: object) -> object:
+    """The Job's model clone of ``part`` (``part`` itself when it is one);
+    ValueError when ``part`` is no object of the Job's model."""
+    if not (hasattr(part, "Shape") and hasattr(part, "Document") and hasattr(part, "Name")):
+        raise ValueError("make_groove(): faces: %r is not a FreeCAD object with a shape" % (part,))
+    model = job.Proxy.resourceClone(job, part)
+    if model is None and part in job.Model.Group:
+        model = part
+    if model is None:
+        raise ValueError("make_groove(): %s is not in the model of the Job %s" % (part.Label, job.Label))
+    return model
+
+
+def _faces(job: object, faces: object) -> list:
+    """[(model clone, [sub, ...])] from (obj, "Face3"), (obj, ["Face3", ...]) or a
+    list of those, every face checked: ValueError before anything is made."""
     out = []
-    for obj, subs in faces:
-        if isinstance(subs, str):
-            subs = [subs]
-        out.append((obj, list(subs)))
+    for pair in _pairs(faces):
+        if not isinstance(pair, (tuple, list)) or len(pair) != 2:
+            raise ValueError("make_groove(): faces: %r is not a (part, \"FaceN\") pair" % (pair,))
+        part, subs = pair
+        model = _model(job, part)
+        subs = [subs] if isinstance(subs, str) else list(subs or [])
+        if not subs:
+            raise ValueError("make_groove(): faces: no face named for %s" % part.Label)
+        for sub in subs:
+            if not isinstance(sub, str) or not sub.startswith("Face"):
+                raise ValueError("make_groove(): faces: %s.%s is not a face name (\"FaceN\")" % (part.Label, sub))
+            try:
+                model.Shape.getElement(sub)
+            except Exception:
+                raise ValueError("make_groove(): %s has no %s" % (part.Label, sub)) from None
+        out.append((model, subs))
     return out
+
+
+def _remove_new_objects(doc: object, before: set) -> None:
+    """Remove the objects of ``doc`` not named in ``before`` (newest first)."""
+    new = [o.Name for o in doc.Objects if o.Name not in before]
+    for name in reversed(new):  # removing a tool controller removes its tool bit too
+        if doc.getObject(name) is not None:
+            doc.removeObject(name)
+
+
+def _set_values(obj: object, values: dict) -> None:
+    """The op's properties from make_groove's keywords; ValueError naming the
+    keyword whose value FreeCAD refuses."""
+    for key, value in values.items():
+        try:
+            setattr(obj, KEYWORDS[key], value)
+        except Exception as e:
+            raise ValueError("make_groove(): %s=%r: not a value for %s (%s: %s)"
+                             % (key, value, KEYWORDS[key], type(e).__name__, e)) from None
 
 
 def _tool_controller(job):
@@ -40,6 +93,25 @@ def _tool_controller(job):
     return tc
 
 
+def _create(job: object, faces: list, name: str, tool_controller: object, values: dict) -> object:
+    """The op in ``job`` on the checked ``faces`` with ``values``; on any
+    failure every object made here is removed before the error goes on."""
+    doc = job.Document
+    before = {o.Name for o in doc.Objects}
+    try:
+        tc = tool_controller or _tool_controller(job)
+        obj = groove_op.Create(name, parentJob=job, tool_controller=tc)
+        obj.ToolController = tc
+        for model, subs in faces:
+            for sub in subs:
+                obj.Proxy.addBase(obj, model, sub)
+        _set_values(obj, values)
+    except BaseException:  # nothing half-made stays in the Job
+        _remove_new_objects(doc, before)
+        raise
+    return obj
+
+
 def make_groove(job, faces, name="Groove", tool_controller=None, recompute=True, **values):
     """Create a Groove operation in ``job`` and return it.
 
@@ -49,8 +121,13 @@ def make_groove(job, faces, name="Groove", tool_controller=None, recompute=True,
     ``tool_controller``: defaults to the job's first tool controller; a job
     without one gets a new "TC: Grooving tool" (FreeCAD's default bit: the
     blade's size then comes from tool_width/tool_corner_radius).
-    ``recompute``: recompute the document at the end (an invalid groove then
-    marks the op invalid with the engine's message instead of raising).
+    ``recompute``: recompute the document at the end (a groove that cannot
+    be cut then reports the engine's message, see groove_op.op_error,
+    instead of raising).
+
+    Raises TypeError (an unknown keyword) or ValueError (no faces, an object
+    that is not in the Job's model, a name that is not one of its faces, a
+    value the property refuses) with nothing left behind in the Job.
 
     Every other keyword is an op property in snake_case, in mm, degrees and
     seconds (or a FreeCAD quantity string such as "4 mm"):
@@ -83,18 +160,11 @@ def make_groove(job, faces, name="Groove", tool_controller=None, recompute=True,
         raise TypeError(
             "make_groove() got unknown keyword(s) %s; valid: %s" % (", ".join(unknown), ", ".join(sorted(KEYWORDS)))
         )
+    faces = _faces(job, faces)
     doc = job.Document
     if FreeCAD.ActiveDocument is None or FreeCAD.ActiveDocument.Name != doc.Name:
         FreeCAD.setActiveDocument(doc.Name)
-    tc = tool_controller or _tool_controller(job)
-    obj = groove_op.Create(name, parentJob=job, tool_controller=tc)
-    obj.ToolController = tc
-    for part, subs in _faces(job, faces):
-        model = job.Proxy.resourceClone(job, part) or part
-        for sub in subs:
-            obj.Proxy.addBase(obj, model, sub)
-    for key, value in values.items():
-        setattr(obj, KEYWORDS[key], value)
+    obj = _create(job, faces, name, tool_controller, values)
     if recompute:
         doc.recompute()
     return obj

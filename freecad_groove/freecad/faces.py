@@ -31,6 +31,7 @@ from dataclasses import dataclass
 import Part
 
 from ..engine.numbers import format_decimal
+from .links import edge_curve
 
 AXIS_TOLERANCE = 1e-7  # |sin| of the angle between a surface axis and Z
 ON_AXIS_TOLERANCE = 1e-6  # mm: how far an axis may pass from the origin's Z axis
@@ -118,7 +119,10 @@ def _check_axis(name, surface):
 
 def _edge_radial_range(edge):
     """(min, max) distance from the Z axis of an edge's points."""
-    curve = getattr(edge, "Curve", None)
+    curve = edge_curve(edge)
+    if curve is None:  # degenerated: a point
+        radii = [_radial(v.Point) for v in edge.Vertexes]
+        return min(radii), max(radii)
     if isinstance(curve, Part.Circle):
         axis, center = curve.Axis, curve.Center
         if math.hypot(axis.x, axis.y) <= AXIS_TOLERANCE and math.hypot(center.x, center.y) <= ON_AXIS_TOLERANCE:

@@ -36,21 +36,28 @@ the face) and each of ``GrooveCount`` grooves:
 
 The Path: a comment with the op's label (the base class), G18, then per
 groove a comment naming the face and the call, the link rapids (G0), and the
-engine's expansion: G0, G1 with F = the tool controller's HorizFeed (FreeCAD's
-internal mm/s like every CAM op; posts write it as mm/min), G4 P<seconds>.
+engine's expansion: G0, G1 with F = the op's feed (cutting.py: FeedPerRev, the
+tool controller's HorizFeed, the default) in FreeCAD's internal mm/s like every
+CAM op (a feed per revolution at the first groove's spindle speed; the posts
+write the op's own feed and spindle, cutting.py), G4 P<seconds>.
 
 Errors (a face that takes no groove, a CycleError from the engine, no room to
-approach) are raised from opExecute with the engine's message: FreeCAD marks
-the op invalid with that message as its status (``obj.getStatusString()``),
-the document and the other objects stay valid, the op's Path is replaced by
-one comment that repeats the message, and the next recompute after a fix
-clears it. FreeCAD 1.0 and 1.1 behave the same; both also print the
-traceback and "<Label>: <message>" on the report view / console.
+approach, a NaN or infinite value) never escape execute: FreeCAD would print
+a Python traceback before the message (for a value typed in the property
+editor too), and a Python feature of FreeCAD 1.0/1.1 cannot become "Invalid"
+without one. As FreeCAD CAM's own ops do, the op reports one error line
+"<Label>: <message>" in the report view instead, its Path is replaced by a
+comment that repeats the message (no stale toolpath in the 3D view), the
+message is kept (op_error(obj)), the posts refuse the op with it, and the
+next recompute after a fix clears it. The document and the other objects
+stay valid.
 
 FreeCAD objects (the op's document object ``obj``, jobs, tool controllers)
 are typed ``object`` below.
 """
 
+import math
+import traceback
 from typing import Optional
 
 import FreeCAD
@@ -63,6 +70,7 @@ from ..engine import GroovingTool, Settings
 from ..engine.cycles.cycle93 import DEFAULT_VRT_MM, Cycle93
 from ..engine.moves import DWELL, FEED, RAPID
 from ..engine.numbers import format_value
+from .cutting import CuttingData, cutting_data
 from .faces import GrooveFace, analyse_face, element_name
 from .groove_plan import GroovePlan, plan_groove
 from .groove_properties import (  # noqa: F401 - this module's API too
@@ -121,6 +129,26 @@ def _corner(obj: object, name: str) -> float:
     return 0.0
 
 
+NUMBER_TYPES = ("App::PropertyLength", "App::PropertyDistance", "App::PropertyAngle", "App::PropertyFloat")
+
+
+def check_finite(obj: object) -> None:
+    """GrooveInputError naming the first numeric op property that is NaN or
+    infinite (FreeCAD accepts both from a script or an expression)."""
+    for type_id, name, _group, _tip, _default in PROPERTIES:
+        if type_id in NUMBER_TYPES and name not in DERIVED:
+            value = length_mm(getattr(obj, name))
+            if not math.isfinite(value):
+                raise GrooveInputError("%s=%s: must be a finite number" % (name, value), (name,))
+
+
+def finite_or_error(value: float, what: str, properties: tuple) -> float:
+    """``value`` when finite, else GrooveInputError naming ``what``."""
+    if not math.isfinite(value):
+        raise GrooveInputError("%s=%s: must be a finite number" % (what, value), properties)
+    return value
+
+
 def path_commands(plans: list[GroovePlan], feed_mm_per_s: float) -> list:
     """Path commands (Path.Command) for ``plans``: G18, then per groove a
     comment, the link rapids and the expanded moves, feeds at ``feed_mm_per_s``."""
@@ -145,6 +173,15 @@ def path_commands(plans: list[GroovePlan], feed_mm_per_s: float) -> list:
     return commands
 
 
+def op_error(obj: object) -> Optional[str]:
+    """Why the Groove op ``obj`` cut nothing at its last recompute (None: it
+    is fine): the message it reported, or FreeCAD's status of an invalid object."""
+    error = getattr(getattr(obj, "Proxy", None), "error", None)
+    if error:
+        return error
+    return None if obj.isValid() else obj.getStatusString()
+
+
 class ObjectGroove(PathOp.ObjectOp):
     """Proxy of a Groove operation (Path::FeaturePython)."""
 
@@ -157,7 +194,9 @@ class ObjectGroove(PathOp.ObjectOp):
             tool_controller = group[0] if group else None
         self._tc_hint = tool_controller
         try:
-            super().__init__(obj, name, parentJob)
+            # FreeCAD uses the name only to look the op up in CAM's SetupSheet
+            # registry (register_with_setup_sheet): the op's kind, not the object's name.
+            super().__init__(obj, OP_NAME, parentJob)
         finally:
             self._tc_hint = None
         if tool_controller is not None and getattr(obj, "ToolController", None) is None:
@@ -192,28 +231,45 @@ class ObjectGroove(PathOp.ObjectOp):
 
     def opExecute(self, obj: object) -> None:
         self._plans = None
+        self.error = None
         faces = None
         try:
+            check_finite(obj)
             faces = self.groove_faces(obj)
             self._write_derived(obj, faces)
             plans = self.plan(obj, faces)
-        except Exception as e:  # CycleError and face errors are ValueErrors; anything else too:
-            if faces is None:  # never leave a stale Path behind an invalid op
-                self._write_derived(obj, [])
-            obj.Path = Path.Path([Path.Command(_comment("%s: %s" % (obj.Label, e)))])
-            raise
-        self.commandlist.extend(self.commands(obj, plans))
+            cutting = cutting_data(obj)
+        except Exception as e:  # CycleError and input errors are ValueErrors; anything else too
+            self._report_error(obj, e, faces is None)
+            return
+        self.commandlist.extend(self.commands(obj, plans, cutting))
+        if obj.FeedsAndSpeeds != cutting.describe():
+            obj.FeedsAndSpeeds = cutting.describe()
         self._plans = plans  # the posts reuse it while the op stays up to date
         for plan in plans:  # what the cycles cannot do as programmed: once per recompute
             for text in plan.warning_texts:
                 FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, text))
+
+    def _report_error(self, obj: object, error: Exception, clear_derived: bool) -> None:
+        """An op that cannot cut: one error line "<Label>: <message>" in the
+        report view (an exception escaping execute would print a Python
+        traceback too), a Path of one comment repeating it (never a stale
+        toolpath), the message kept in ``self.error``."""
+        message = str(error) if isinstance(error, ValueError) else "%s: %s" % (type(error).__name__, error)
+        if not isinstance(error, ValueError):  # a bug, not an input: its traceback for the log level
+            FreeCAD.Console.PrintLog(traceback.format_exc())
+        if clear_derived:
+            self._write_derived(obj, [])
+        self.error = message
+        self.commandlist.append(Path.Command(_comment("%s: %s" % (obj.Label, message))))
+        FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, message))
 
     def current_plan(self, obj: object) -> list[GroovePlan]:
         """plan(obj) as the last recompute made it, while nothing has touched
         the op since (planning checks every link rapid against the model, the
         costly part of posting); otherwise a fresh plan."""
         plans = getattr(self, "_plans", None)
-        if plans is not None and not ({"Touched", "Invalid"} & set(obj.State)):
+        if plans is not None and getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)):
             return plans
         return self.plan(obj)
 
@@ -283,9 +339,15 @@ class ObjectGroove(PathOp.ObjectOp):
         radius = obj.ToolCornerRadius.Value
         if bit is not None:
             if getattr(bit, "Width", None) is not None:
-                width = length_mm(bit.Width)
+                width = finite_or_error(length_mm(bit.Width), "the tool bit's Width", ("ToolWidth",))
             if getattr(bit, "CornerRadius", None) is not None:
-                radius = length_mm(bit.CornerRadius)
+                radius = finite_or_error(length_mm(bit.CornerRadius), "the tool bit's CornerRadius",
+                                         ("ToolCornerRadius",))
+        if not width > 0:  # no default blade: a wrong width cuts a wrong groove
+            raise GrooveInputError(
+                "ToolWidth: the blade's width is unknown: the tool controller %s has no grooving blade (its tool "
+                "bit has no Width). Create a grooving tool controller (task panel: Tool and coolant) or set "
+                "ToolWidth" % getattr(tool_controller, "Label", "(none)"), ("ToolWidth",))
         return Settings(tool=GroovingTool(width=width, corner_radius=radius, reference=str(obj.ReferenceCorner)))
 
     def position(self, obj: object, index: int) -> float:
@@ -311,7 +373,10 @@ class ObjectGroove(PathOp.ObjectOp):
     def feed_mm_per_min(self, obj: object) -> Optional[float]:
         """The tool controller's HorizFeed in mm/min (None without a tool controller)."""
         tool_controller = getattr(obj, "ToolController", None)
-        return feed_mm_per_min(tool_controller.HorizFeed.Value) if tool_controller is not None else None
+        if tool_controller is None:
+            return None
+        feed = finite_or_error(tool_controller.HorizFeed.Value, "%s HorizFeed" % tool_controller.Label, ())
+        return feed_mm_per_min(feed)
 
     def _check_count(self, obj: object) -> int:
         """GrooveCount, refused when below 1 or when Pitch cannot space the grooves."""
@@ -341,6 +406,7 @@ class ObjectGroove(PathOp.ObjectOp):
         """Every groove the op cuts, in order: [GroovePlan]. Raises ValueError
         (CycleError from the engine) when one cannot be cut."""
         if faces is None:
+            check_finite(obj)
             faces = self.groove_faces(obj)
         if not faces:
             return []
@@ -379,11 +445,37 @@ class ObjectGroove(PathOp.ObjectOp):
         got there)."""
         return [(plan.cycle, plan.settings, plan.start) for plan in self.current_plan(obj)]
 
-    def commands(self, obj: object, plans: list[GroovePlan]) -> list:
-        """Path commands for ``plans`` (path_commands), feeds at the tool
-        controller's HorizFeed."""
-        tool_controller = getattr(obj, "ToolController", None)
-        return path_commands(plans, tool_controller.HorizFeed.Value if tool_controller is not None else 0.0)
+    def commands(self, obj: object, plans: list[GroovePlan], cutting: Optional[CuttingData] = None) -> list:
+        """Path commands for ``plans`` (path_commands), feeds at the op's
+        feed (cutting.py) in mm/s: a feed per revolution at the spindle speed
+        of the first groove's start radius."""
+        cutting = cutting or cutting_data(obj)
+        radius = plans[0].cycle.axfa if plans else 0.0
+        return path_commands(plans, cutting.feed_mm_per_s(radius))
+
+
+OP_NAME = "Groove"  # the op's kind in CAM's SetupSheet registry
+
+
+def SetupProperties() -> list:
+    """The op properties a Job's SetupSheet may hold defaults for: none (a
+    groove's size belongs to its face, the blade's to the tool controller)."""
+    return []
+
+
+def register_with_setup_sheet() -> None:
+    """Register the op with CAM's SetupSheet, as FreeCAD's own ops are: a Job
+    applies its SetupSheet to every new op by kind and logs "SetupSheet has
+    no support for Groove" for an unregistered one. The SetupSheet editor
+    builds a prototype of each registered op for its properties; with none
+    to offer the prototype stays empty (Create cannot build on one)."""
+    import Path.Base.SetupSheet as PathSetupSheet
+
+    PathSetupSheet.RegisterOperation(OP_NAME, _setup_sheet_prototype, SetupProperties)
+
+
+def _setup_sheet_prototype(name: str, prototype: object) -> object:
+    return prototype
 
 
 def Create(name: str, obj: object = None, parentJob: object = None, tool_controller: object = None) -> object:
@@ -398,3 +490,6 @@ def Create(name: str, obj: object = None, parentJob: object = None, tool_control
     if hooks.view_provider_factory is not None and getattr(obj, "ViewObject", None) is not None:
         hooks.view_provider_factory(obj)
     return obj
+
+
+register_with_setup_sheet()

@@ -82,14 +82,30 @@ PROPERTIES = (
         "Distance from one groove to the next: toward -Z for longitudinal grooves, toward the axis for "
         "face grooves. Must be greater than 0 when GrooveCount is more than 1."), 0.0),
     ("App::PropertyLength", "ToolWidth", "Tool", _tip(
-        "Width of the blade's cutting edge; used when the tool controller's tool bit has no Width."), 3.0),
+        "Width of the blade's cutting edge; used when the tool controller's tool bit has no Width. "
+        "0 = unknown: the op then asks for a grooving tool controller or a width."), 0.0),
     ("App::PropertyLength", "ToolCornerRadius", "Tool", _tip(
         "Radius of the blade's two front corners; used when the tool bit has no CornerRadius."), 0.2),
     ("App::PropertyEnumeration", "ReferenceCorner", "Tool", _tip(
         "The blade corner the Path drives: minus = on the blade's -Z side (X plunges) or -X side "
         "(Z plunges), plus = the other one."), REFERENCE_CORNERS),
+    # Lathe feeds and speeds (cutting.py): 0 = unset, the tool controller's value, else the documented default.
+    ("App::PropertyLength", "FeedPerRev", "Feeds and speeds", _tip(
+        "Feed per revolution of the grooves (mm/rev, in/rev: G95/G99). 0 = the tool controller's HorizFeed "
+        "(per minute); when that is 0 too, 0.05 mm/rev."), 0.0),
+    ("App::PropertySpeed", "SurfaceSpeed", "Feeds and speeds", _tip(
+        "Constant surface speed (G96, e.g. 120 m/min), limited to MaxSpindleSpeed. 0 = a fixed spindle "
+        "speed: SpindleSpeed."), 0.0),
+    ("App::PropertyFloat", "MaxSpindleSpeed", "Feeds and speeds", _tip(
+        "Spindle limit of the constant surface speed, rpm (Siemens LIMS, Fanuc/Haas G50 S, LinuxCNC G96 D); "
+        "needed with SurfaceSpeed."), 0.0),
+    ("App::PropertyFloat", "SpindleSpeed", "Feeds and speeds", _tip(
+        "Fixed spindle speed of the grooves, rpm (G97), when SurfaceSpeed is 0. 0 = the tool controller's "
+        "SpindleSpeed; when that is 0 too, 500 rpm."), 0.0),
     ("App::PropertyString", "GrooveKind", "Derived", _tip(
         "What the op made of the face(s): longitudinal/oblique/face, external/internal."), ""),
+    ("App::PropertyString", "FeedsAndSpeeds", "Derived", _tip(
+        "The feed and spindle speed the grooves are cut with, and where each comes from."), ""),
     ("App::PropertyDistance", "AXFA", "Derived", _tip(
         "CYCLE93 AXFA of the first groove: the start point's radius (X)."), 0.0),
     ("App::PropertyDistance", "AXSA", "Derived", _tip(

@@ -43,14 +43,26 @@ def _coaxial(surface: object) -> bool:
     return math.hypot(axis.x, axis.y) <= 1e-9 * axis.Length and math.hypot(center.x, center.y) <= 1e-9
 
 
+def edge_curve(edge: object) -> Optional[object]:
+    """A Part edge's curve, None for a degenerated edge (the pole of a sphere
+    or torus), whose Curve raises "undefined curve type"."""
+    if getattr(edge, "Degenerated", False):
+        return None
+    try:
+        return edge.Curve
+    except (TypeError, RuntimeError, AttributeError):  # Part reports an unknown curve as TypeError
+        return None
+
+
 def _edge_radius(edge: object) -> float:
     """Largest distance of a Part edge from the Z axis (exact for coaxial
-    circles and lines, else from points 0.001 mm apart in deflection, plus that)."""
-    curve = getattr(edge, "Curve", None)
+    circles and lines, else from points 0.001 mm apart in deflection, plus that;
+    a degenerated edge: its vertex)."""
+    curve = edge_curve(edge)
     if isinstance(curve, Part.Circle) and _coaxial(curve):
         return curve.Radius
     points = [vertex.Point for vertex in edge.Vertexes]
-    if not isinstance(curve, (Part.Line, Part.LineSegment)) and edge.Length > 0:
+    if curve is not None and not isinstance(curve, (Part.Line, Part.LineSegment)) and edge.Length > 0:
         return max(math.hypot(p.x, p.y) for p in edge.discretize(Deflection=0.001)) + 0.001
     return max(math.hypot(p.x, p.y) for p in points) if points else 0.0
 

@@ -1,5 +1,12 @@
 """Make FreeCAD's CAM workbench find the posts in this add-on's postprocessors/.
 
+FreeCAD's development version has a route for add-ons: it reads the
+``<Postprocessor>`` entry of an installed add-on's package.xml, and
+``Path.Preferences.addAddonPostPath(folder)`` adds a folder (for an add-on
+loaded from elsewhere, e.g. ``-M``). Where that function exists
+:func:`register` calls it (unless the folder is already searched) and wraps
+nothing. The rest of this text is about FreeCAD 1.0 and 1.1, which lack it.
+
 FreeCAD 1.0 and 1.1 list and load script posts by globbing ``*_post.py`` in
 ``Path.Preferences.searchPathsPost()``: the user's DefaultFilePath preference
 (one folder, also used for job templates and output files), the Macro folder
@@ -38,6 +45,7 @@ POSTS_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path
                          "postprocessors")
 TARGET = "Path.Preferences"
 FUNCTION = "searchPathsPost"
+ADD_FUNCTION = "addAddonPostPath"  # FreeCAD's development version (after 1.1)
 _MARK = "_freecad_groove_post_dirs"  # on the wrapper: the list of folders it appends
 _HOOK = "_freecad_groove_post_hook"  # on the finder
 
@@ -58,6 +66,11 @@ def _wrapper_of(function):
 
 
 def _wrap(module, folder):
+    add = getattr(module, ADD_FUNCTION, None)
+    if callable(add):  # FreeCAD's own route for add-on posts
+        if not any(p and _same(p, folder) for p in getattr(module, FUNCTION)()):
+            add(folder)
+        return
     current = getattr(module, FUNCTION)
     wrapper = _wrapper_of(current)
     if wrapper is not None:
@@ -166,7 +179,9 @@ def register(folder=POSTS_DIR):
 
 
 def unregister(folder=POSTS_DIR):
-    """Undo :func:`register`: FreeCAD's post search path is its own again."""
+    """Undo :func:`register`: FreeCAD's post search path is its own again.
+    (Where FreeCAD has addAddonPostPath it has no way to take a folder out:
+    only a pending registration is dropped.)"""
     _remove_hooks()
     module = sys.modules.get(TARGET)
     if module is None:

@@ -7,8 +7,9 @@ modules are imported only when the command is first used. Module and class
 names in task_panel.py are stored in documents (the view provider's class,
 the page class): keep them stable.
 
-    command.py     the Groove command and its place in CAM's toolbar and menu
+    command.py     the Turning Groove command and its place in CAM's toolbar and menu
     task_panel.py  view provider, task panel pages, OK/Cancel handling
+    tool_page.py   the panel's "Tool and coolant" page (grooving tool controller button)
     widgets.py     the Qt helpers the pages are built from (forms, fields, error labels)
     preview.py     the groove cross-section and toolpath drawn while editing
 """

@@ -1,5 +1,7 @@
-"""The Groove command: a button in CAM's "New Operations" toolbar and an
-entry in the CAM menu (after the engraving operations).
+"""The Turning Groove command: a button at the end of CAM's "New
+Operations" toolbar and an entry in the CAM menu right after the engraving
+operations (CAM_Vcarve), before the 3D operations. Named "Turning Groove":
+PartDesign already has a "Groove" command.
 
 Enabled when the active document holds a CAM Job. With a face of a Job's
 model selected it makes the op in that Job on that face (the task panel's
@@ -16,7 +18,8 @@ translate = FreeCAD.Qt.translate
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
 TOOLBAR = "New Operations"  # CAM's toolbar of operations (1.0 and 1.1)
-MENU_AFTER = "CAM_Vcarve"  # the last operation of CAM's menu before its separator (1.0 and 1.1)
+MENU_AFTER = "CAM_Vcarve"  # the last engraving operation of CAM's menu, before its separator (1.0 and 1.1)
+MENU_TEXT = QT_TRANSLATE_NOOP("FreeCADGroove_Groove", "Turning Groove")
 WORKBENCH = "CAMWorkbench"
 
 
@@ -38,7 +41,7 @@ class CommandGroove:
     def GetResources(self):
         return {
             "Pixmap": ICON,
-            "MenuText": QT_TRANSLATE_NOOP("FreeCADGroove_Groove", "Groove"),
+            "MenuText": MENU_TEXT,
             "ToolTip": QT_TRANSLATE_NOOP(
                 "FreeCADGroove_Groove",
                 "Cut a groove (CYCLE93) into a turned face: select a cylinder, cone or plane face of "
@@ -77,7 +80,9 @@ class Manipulator:
         return [{"append": COMMAND, "toolBar": TOOLBAR}]
 
     def modifyMenuBar(self):
-        return [{"append": COMMAND, "menuItem": MENU_AFTER}]
+        # "insert" with "after" puts it right after MENU_AFTER; "append" would
+        # put it at the very end of the menu that holds MENU_AFTER.
+        return [{"insert": COMMAND, "menuItem": MENU_AFTER, "after": ""}]
 
 
 _manipulator = None

@@ -5,8 +5,9 @@ tool controller handling as FreeCAD's operations.
 Pages:
 - Base Geometry: FreeCAD's list of picked faces, plus the groove kind in
   words (longitudinal/face/oblique, external/internal) for the faces.
-- Tool and coolant: tool controller (with FreeCAD 1.1's editor), coolant
-  mode, and the blade's width/corner radius used when the tool bit has none.
+- Tool and coolant (tool_page.py): tool controller, coolant mode, the
+  blade's width/corner radius used when the tool bit has none, and a button
+  that makes a grooving tool controller for the Job.
 - Groove: the groove's size (resources/panels/PageGrooveEdit.ui) with a
   labelled cross-section picture.
 
@@ -14,7 +15,8 @@ While the panel is open every changed value re-plans the op from the panel's
 values (ObjectGroove.plan_with: the document is not touched) and redraws the
 preview (preview.py). An invalid value marks its field red, the engine's
 message (with the Siemens alarm number where there is one) shows on the
-pages, and OK and Apply are refused until it is fixed. Warnings of the plans
+pages, and OK and Apply are refused until it is fixed; so is a panel with
+no face picked (OK would make an op that cuts nothing). Warnings of the plans
 (what the op cannot do as programmed but does anyway) show in amber under it,
 one a line, and mark their fields amber; OK stays enabled. OK writes the values
 into the op and recomputes; Cancel aborts the panel's transaction (and, for a
@@ -38,6 +40,7 @@ from ..freecad import faces as faces_mod
 from ..freecad import groove_op
 from ..freecad.groove_properties import cycle93_properties
 from . import ICON, PANELS, preview
+from .tool_page import ToolPage
 from .widgets import (
     CONTEXT,
     ERROR_LABEL,
@@ -60,6 +63,7 @@ from .widgets import (
 
 translate = FreeCAD.Qt.translate
 
+DIAGRAM_SIZE = (320, 151)  # px: the groove picture (groove_section.svg is 360 x 170)
 PREVIEW_DELAY_MS = 20  # coalesces the signals of one edit into one re-plan
 
 # (widget name, op property): quantity fields (Gui::QuantitySpinBox)
@@ -72,7 +76,6 @@ GROOVE_QUANTITIES = (
     ("infeed", "Infeed"), ("retract", "Retract"), ("pitch", "Pitch"),
 )
 CORNERS = ("EdgeCorner1", "EdgeCorner2", "BaseCorner1", "BaseCorner2")
-TOOL_QUANTITIES = (("toolWidth", "ToolWidth"), ("toolCornerRadius", "ToolCornerRadius"))
 
 # Enumeration texts as shown (translated); the op stores the untranslated value.
 CORNER_TYPE_TEXT = {
@@ -83,10 +86,6 @@ CORNER_TYPE_TEXT = {
 CHAMFER_MEASURE_TEXT = {
     groove_op.CHAMFER_MEASURES[0]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Chamfer length (CHF)"),
     groove_op.CHAMFER_MEASURES[1]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Leg length (CHR)"),
-}
-REFERENCE_CORNER_TEXT = {
-    "minus": FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "minus"),
-    "plus": FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "plus"),
 }
 
 
@@ -130,86 +129,6 @@ class BaseGeometryPage(PathOpGui.TaskPanelBaseGeometryPage):
             self.show_kind(obj)
 
 
-class ToolPage(PathOpGui.TaskPanelPage):
-    """Tool controller, coolant, and the blade's size when the tool bit has none."""
-
-    def getForm(self):
-        form = load_form("PageGrooveToolEdit.ui")
-        fill_combo(form.referenceCorner, REFERENCE_CORNER_TEXT)
-        add_error_label(form)
-        return form
-
-    def initPage(self, obj):
-        self.fields = QuantityFields(self.form, TOOL_QUANTITIES)
-        self.groove_page = None  # set by GrooveTaskPanel
-
-    def getTitle(self, obj):
-        return translate(CONTEXT, "Tool and coolant")
-
-    def getIcon(self, obj):
-        return None
-
-    def setFields(self, obj):
-        self.setupToolController(obj, self.form.toolController)
-        self.setupCoolant(obj, self.form.coolantController)
-        self.fields.set_from(obj)
-        select_data(self.form.referenceCorner, str(obj.ReferenceCorner))
-        self.show_tool_source(obj)
-
-    def getFields(self, obj):
-        self.updateToolController(obj, self.form.toolController)
-        self.updateCoolant(obj, self.form.coolantController)
-        self.fields.write_to(obj)
-        value = self.form.referenceCorner.currentData()
-        if value and obj.ReferenceCorner != value:
-            obj.ReferenceCorner = value
-
-    def values(self) -> dict:
-        """{op property: value} as this page shows them."""
-        values = self.fields.values()
-        values["ReferenceCorner"] = self.form.referenceCorner.currentData()
-        return values
-
-    def registerSignalHandlers(self, obj):
-        for widget in list(self.fields.widgets.values()) + [self.form.referenceCorner, self.form.coolantController]:
-            connect_changed(widget, self.changed)
-        if not hasattr(self, "tcEditor"):  # FreeCAD 1.0: the base class does not follow the combo
-            self.form.toolController.currentIndexChanged.connect(self._tool_controller_changed)
-
-    def _tool_controller_changed(self, *_args):
-        self.updateToolController(self.obj, self.form.toolController)
-        self.changed()
-
-    def changed(self) -> None:
-        """A value changed: the panel is dirty, the preview follows."""
-        self.setDirty()
-        if self.groove_page is not None:
-            self.groove_page.schedule_preview()
-
-    def show_tool_source(self, obj: object) -> None:
-        """Say where the blade's size comes from; the op's own size fields are
-        enabled only for what the tool bit does not give."""
-        tool_controller = getattr(obj, "ToolController", None)
-        bit = getattr(tool_controller, "Tool", None)
-        given = [name for name in ("Width", "CornerRadius")
-                 if bit is not None and getattr(bit, name, None) is not None]
-        if given:
-            text = translate(
-                CONTEXT, "The tool bit {0} gives the blade's {1}: the fields below are not used for it."
-            ).format(bit.Label, " and ".join(given))
-        else:
-            text = translate(CONTEXT, "The tool bit has no Width or CornerRadius: the blade size below is used.")
-        self.form.toolSourceLabel.setText(text)
-        self.form.toolWidth.setEnabled("Width" not in given)
-        self.form.toolCornerRadius.setEnabled("CornerRadius" not in given)
-
-    def updateData(self, obj, prop):
-        if prop == "ToolController":
-            self.show_tool_source(obj)
-            if self.groove_page is not None:
-                self.groove_page.schedule_preview()
-
-
 class GroovePage(PathOpGui.TaskPanelPage):
     """The groove's size; owns the live preview and the validity state."""
 
@@ -218,7 +137,11 @@ class GroovePage(PathOpGui.TaskPanelPage):
         for name in ("edgeCorner1Type", "edgeCorner2Type", "baseCorner1Type", "baseCorner2Type"):
             fill_combo(child(form, name), CORNER_TYPE_TEXT)
         fill_combo(form.chamferMeasure, CHAMFER_MEASURE_TEXT)
-        child(form, "diagram").setPixmap(svg_pixmap(os.path.join(PANELS, "groove_section.svg"), 360, 170))
+        diagram = child(form, "diagram")
+        diagram.setPixmap(svg_pixmap(os.path.join(PANELS, "groove_section.svg"), DIAGRAM_SIZE[0], DIAGRAM_SIZE[1]))
+        # The picture never sets the page's width: in a narrow task dock its sides are cut, not the fields.
+        diagram.setSizePolicy(QtGui.QSizePolicy.Ignored, QtGui.QSizePolicy.Fixed)
+        diagram.setAlignment(QtCore.Qt.AlignCenter)
         # The message goes first: the page is taller than the task view.
         error = child(form, ERROR_LABEL)
         error.parentWidget().layout().removeWidget(error)
@@ -345,6 +268,10 @@ class GroovePage(PathOpGui.TaskPanelPage):
 
             FreeCAD.Console.PrintError(traceback.format_exc())
             error = translate(CONTEXT, "Internal error while planning the groove: {0}").format(bug)
+        if error is None and not plans:  # OK would make an op that cuts nothing
+            error, invalid = translate(
+                CONTEXT, "Base Geometry: no face picked. Pick a cylinder, cone or plane face of the turned part "
+                "and press Add."), ("Base",)
         self.replans += 1
         self.plans = plans
         self._show_angc(obj, plans)
@@ -530,7 +457,7 @@ def resources() -> object:
     """The op's command resources (PathOpGui.CommandResources)."""
     return PathOpGui.CommandResources(
         "Groove", groove_op.Create, GroovePage, ICON,
-        FreeCAD.Qt.QT_TRANSLATE_NOOP("FreeCADGroove_Groove", "Groove"), None,
+        FreeCAD.Qt.QT_TRANSLATE_NOOP("FreeCADGroove_Groove", "Turning Groove"), None,
         FreeCAD.Qt.QT_TRANSLATE_NOOP("FreeCADGroove_Groove", "Cut a groove into a turned face"),
     )
 

@@ -31,8 +31,21 @@ WARNING_LABEL = "warningLabel"  # object name of the label the warnings show in
 
 
 def load_form(name: str) -> object:
-    """A page's form from resources/panels/<name> (a .ui file)."""
-    return FreeCADGui.PySideUic.loadUi(os.path.join(PANELS, name))
+    """A page's form from resources/panels/<name> (a .ui file), made to fit narrow docks."""
+    form = FreeCADGui.PySideUic.loadUi(os.path.join(PANELS, name))
+    fit_narrow_docks(form)
+    return form
+
+
+def fit_narrow_docks(form: object) -> None:
+    """Let a page fit the task dock's default width: a spin box's size hint
+    is the text of its largest value with the unit (wider than any real
+    value), so spin boxes take the width their row leaves instead; labels
+    wrap (the message labels already do)."""
+    for box in form.findChildren(QtGui.QAbstractSpinBox):
+        box.setSizePolicy(QtGui.QSizePolicy.Ignored, box.sizePolicy().verticalPolicy())
+    for layout in form.findChildren(QtGui.QFormLayout):
+        layout.setRowWrapPolicy(QtGui.QFormLayout.WrapLongRows)
 
 
 def child(form: object, name: str) -> object:

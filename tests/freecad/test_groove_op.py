@@ -27,6 +27,8 @@ from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.moves import DWELL, FEED, RAPID
 from freecad_groove.freecad import faces as faces_mod
 from freecad_groove.freecad import groove_op
+from freecad_groove.freecad.cutting import DEFAULT_FEED_PER_REV, DEFAULT_RPM
+from freecad_groove.freecad.groove_op import op_error
 from freecad_groove.freecad.groove_plan import rapids_clear
 from freecad_groove.freecad.links import SafeEnvelope
 
@@ -126,6 +128,8 @@ def first_link(start, on="side"):
 
 TOOL = GroovingTool(BLADE, 0.2)  # tool_width 3, tool_corner_radius 0.2, the minus reference corner
 FEED_MM_S = FEED_MM_MIN / 60.0  # the tool controller's feed as the Path holds it (FreeCAD's mm/s)
+# A tool controller without feed or speed (a new Job's): the op's defaults, 0.05 mm/rev at 500 rpm, in mm/s
+DEFAULT_FEED_MM_S = DEFAULT_FEED_PER_REV * DEFAULT_RPM / 60.0
 
 # The Path's form of each kind of engine move, spelled out: (command, words).
 PATH_FORM = {
@@ -171,7 +175,7 @@ def assert_same_moves(actual, expected, tol=1e-6):
 def test_derived_parameters_and_path(shop, key):
     op = groove(shop, key)
     _kw, kind, axfa, axsa, angc, typ = CASES[key]
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     assert op.GrooveKind == kind
     assert op.AXFA.Value == pytest.approx(axfa, abs=1e-9)
     assert op.AXSA.Value == pytest.approx(axsa, abs=1e-9)
@@ -223,7 +227,7 @@ def test_internal_groove_enters_the_bore_from_its_open_end(shop):
 def test_chr_chamfers_add_ten_to_typ(shop):
     op = groove(shop, "cylinder", chamfer_measure="Leg length (CHR)", edge_corner1=0.5, edge_corner1_type="Chamfer",
                 base_corner2=0.3, base_corner2_type="Radius")
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     assert op.TYP == 15
     (call, _s, _st), = op.Proxy.cycles(op)
     assert (call.rco1, call.rco2, call.rci1, call.rci2) == (-0.5, 0.0, 0.0, 0.3)
@@ -232,7 +236,7 @@ def test_chr_chamfers_add_ten_to_typ(shop):
 
 def test_several_grooves_pitch_toward_minus_z(shop):
     op = groove(shop, "cylinder", position=2, groove_count=3, pitch=6, dwell=0.5)
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     plans = op.Proxy.plan(op)
     assert [p.cycle.axsa for p in plans] == [28.0, 22.0, 16.0]
     assert [c.Name for c in op.Path.Commands].count("G18") == 1
@@ -264,42 +268,127 @@ def test_tool_size_comes_from_the_bit_when_it_has_one(shop):
 # -- errors -----------------------------------------------------------------------
 
 
-def test_engine_error_marks_the_op_invalid_and_a_fix_recovers(shop):
+def test_engine_error_is_reported_on_the_op_and_a_fix_recovers(shop):
     doc, shaft, job, tc = shop
     other = groove(shop, "shoulder")
     op = groove(shop, "cylinder")
-    assert op.isValid()
+    assert op_error(op) is None
     op.Width = 2  # narrower than the 3 mm tool
     doc.recompute()
-    assert not op.isValid()
-    status = op.getStatusString()
+    status = op_error(op)
     assert "WIDG=2" in status and "narrower than the tool width 3" in status and "(alarm 61602)" in status
-    # the stale moves are gone: one comment repeats the message
-    assert [c.Name for c in op.Path.Commands] == ["(%s: %s)" % (op.Label, status.replace("(", "[").replace(")", "]"))]
+    # the stale moves are gone: the Path ends with a comment repeating the message, no moves
+    assert path_moves(op) == []
+    assert op.Path.Commands[-1].Name == "(%s: %s)" % (op.Label, status.replace("(", "[").replace(")", "]"))
     for o in (shaft, job, tc, other):
         assert o.isValid(), o.Name
-    assert other.Path.Commands and "Invalid" not in other.State
+    assert other.Path.Commands and op_error(other) is None
     op.Width = 4
     doc.recompute()
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None
     assert "Invalid" not in op.State
     assert_same_moves(path_moves(op), case_path("cylinder"))
+
+
+def test_an_error_does_not_escape_execute(shop):
+    """An exception escaping execute makes FreeCAD print a Python traceback
+    before the message (the property editor's recompute): the op reports
+    one clean line instead."""
+    doc, shaft, job, tc = shop
+    op = groove(shop, "cylinder")
+    op.Width = 2
+    op.Proxy.execute(op)  # raised the CycleError before
+    assert "(alarm 61602)" in op_error(op)
+    assert path_moves(op) == []
+
+
+# (FreeCAD itself clips an infinite length to the largest float or to 0)
+@pytest.mark.parametrize("name, value", [("Dwell", float("nan")), ("Dwell", float("inf")), ("Width", float("nan")),
+                                         ("Depth", float("nan")), ("Position", float("nan")),
+                                         ("FlankAngle1", float("nan"))])
+def test_nan_and_infinite_values_are_refused_naming_the_property(shop, name, value):
+    doc, shaft, job, tc = shop
+    op = groove(shop, "cylinder")
+    assert path_moves(op)
+    setattr(op, name, value)
+    doc.recompute()
+    assert op_error(op) == "%s=%s: must be a finite number" % (name, float(value))
+    assert path_moves(op) == []  # no stale toolpath in the 3D view
+    with pytest.raises(ValueError, match="^%s=" % name):  # nor from a post
+        op.Proxy.cycles(op)
 
 
 def test_groove_past_the_face_is_refused(shop):
     doc, shaft, job, tc = shop
     op = groove(shop, "cylinder", position=18)  # 18 + 4 > the 20 mm long face
-    assert not op.isValid()
-    assert "past the face" in op.getStatusString() and "Shaft.Face" in op.getStatusString()
+    assert "past the face" in op_error(op) and "Shaft.Face" in op_error(op)
     op.Position = 15
     doc.recompute()
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None
 
 
 def test_pitch_is_required_for_several_grooves(shop):
     op = groove(shop, "cylinder", groove_count=2)
-    assert not op.isValid()
-    assert "Pitch" in op.getStatusString()
+    assert "Pitch" in op_error(op)
+
+
+@pytest.mark.parametrize("faces, values, message", [
+    ("cylinder", dict(width="abc"), r"^make_groove\(\): width='abc': not a value for Width"),
+    ("cylinder", dict(width="4 s"), r"^make_groove\(\): width='4 s': not a value for Width"),
+    (("notanobject", "Face1"), {}, r"'notanobject' is not a FreeCAD object with a shape"),
+    ((None, "Face1"), {}, r"None is not a FreeCAD object with a shape"),
+    ([], {}, r"^make_groove\(\): faces=\[\]: give \(part, "),
+    ("outsider", {}, r"^make_groove\(\): Outsider is not in the model of the Job Job$"),
+    ("no_face", {}, r"^make_groove\(\): Shaft has no Face99$"),
+])
+def test_make_groove_refuses_bad_input_leaving_nothing_behind(shop, faces, values, message):
+    doc, shaft, job, tc = shop
+    if faces == "outsider":
+        outsider = doc.addObject("Part::Feature", "Outsider")
+        outsider.Shape = Part.makeCylinder(5, 5)
+        faces = (outsider, "Face1")
+    elif faces == "no_face":
+        faces = (shaft, "Face99")
+    elif faces == "cylinder":
+        faces = (shaft, face_name(shaft.Shape, "cylinder"))
+    names = sorted(o.Name for o in doc.Objects)
+    with pytest.raises(ValueError, match=message):
+        make_groove(job, faces, **values)
+    assert sorted(o.Name for o in doc.Objects) == names
+    assert job.Operations.Group == [] and job.Tools.Group == [tc]
+
+
+def test_make_groove_in_a_job_without_tool_controller_leaves_none_behind_on_failure(shop):
+    doc, shaft, job, tc = shop
+    job.Tools.Group = []  # make_groove then makes "TC: Grooving tool" (and its tool bit)
+    names = sorted(o.Name for o in doc.Objects)
+    with pytest.raises(ValueError, match="^make_groove\\(\\): dwell='long': not a value for Dwell"):
+        make_groove(job, (shaft, face_name(shaft.Shape, "cylinder")), dwell="long")
+    assert sorted(o.Name for o in doc.Objects) == names and job.Tools.Group == []
+
+
+def ball_ended_shaft():
+    """A shaft R20 from Z0 to Z50 with a ball end (a sphere R20 at Z50) and a
+    torus-shaped bead at Z10: faces no groove can be cut into, with the
+    sphere's degenerated edge at its pole."""
+    shape = Part.makeCylinder(20, 50).fuse(Part.makeSphere(20, V(0, 0, 50)))
+    return shape.fuse(Part.makeTorus(20, 2, V(0, 0, 10))).removeSplitter()
+
+
+def test_spherical_and_toroidal_faces_do_not_break_grooves_elsewhere(doc):
+    shape = ball_ended_shaft()
+    cylinders = [i + 1 for i, f in enumerate(shape.Faces) if isinstance(f.Surface, Part.Cylinder)]
+    _doc, shaft, job, tc = make_shop(doc, shape=shape)
+    op = make_groove(job, (shaft, "Face%d" % max(cylinders, key=lambda i: shape.Faces[i - 1].BoundBox.ZMax)),
+                     position=5, width=4, depth=2, infeed=1, tool_width=3, tool_corner_radius=0.2)
+    assert op_error(op) is None
+    assert path_moves(op)
+    # the ball's top is Z70: the op's rapids stay out of it
+    assert max(words["Z"] for _n, words in path_moves(op) if "Z" in words) < 71.0 + 1e-9
+    sphere = next(i + 1 for i, f in enumerate(shape.Faces) if isinstance(f.Surface, Part.Sphere))
+    bad = make_groove(job, (shaft, "Face%d" % sphere))
+    assert op_error(bad) == "Shaft.Face%d: a sphere face; grooves go on a cylinder, a cone or a plane square " \
+                            "to the Z axis" % sphere
 
 
 def test_unsupported_faces_name_the_face(doc):
@@ -323,8 +412,7 @@ def test_unsupported_faces_name_the_face(doc):
     job = PathJob.Create("Job", [box])
     doc.recompute()
     op = make_groove(job, (box, "Face1"))
-    assert not op.isValid()
-    assert op.getStatusString().startswith("Block.Face1: a plane whose normal")
+    assert op_error(op).startswith("Block.Face1: a plane whose normal")
     assert job.isValid()
 
 
@@ -383,7 +471,7 @@ def test_bore_open_toward_minus_z_is_entered_from_below(doc):
     doc.recompute()
     op = make_groove(job, (part, _find(part, lambda f: f.surface == "cylinder" and not f.external)),
                      position=5, width=4, depth=1, tool_width=3, tool_corner_radius=0.2)
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     assert (op.TYP, op.AXFA.Value, op.AXSA.Value) == (7, 6.0, 30.0)
     plan, = op.Proxy.plan(op)
     assert plan.start_on == "bottom"
@@ -392,7 +480,8 @@ def test_bore_open_toward_minus_z_is_entered_from_below(doc):
     _rapids_outside(op, part)
     # out to the safe radius R21, below the part, in to the start point; the Job's own tool controller feeds at 0
     start = (5.0, -4.0)
-    expected = groove_path([(21.0, None), (21.0, -4.0), start], cycle93(6.0, 30.0, 7, depg=1.0), start, feed=0.0)
+    expected = groove_path([(21.0, None), (21.0, -4.0), start], cycle93(6.0, 30.0, 7, depg=1.0), start,
+                           feed=DEFAULT_FEED_MM_S)
     assert_same_moves(path_moves(op), expected)
 
 
@@ -404,19 +493,20 @@ def test_face_groove_inside_a_recess_is_approached_along_z(doc):
     doc.recompute()
     floor = _find(part, lambda f: f.surface == "plane" and abs(f.z_min - 25) < 1e-9)
     op = make_groove(job, (part, floor), position=0.5, width=3.5, depth=2, tool_width=3, tool_corner_radius=0.2)
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     assert (op.TYP, op.AXFA.Value, op.AXSA.Value, op.GrooveKind) == (6, 14.5, 25.0, "face, external")
     plan, = op.Proxy.plan(op)
     assert plan.start_on == "top" and plan.start.z == pytest.approx(31.0)
     _rapids_outside(op, part)
     # a column over the first plunge (the blade's minus corner 3 inside the groove's outer edge R14.5)
     start = (14.5 - BLADE, 31.0)
-    expected = groove_path(first_link(start, "top"), cycle93(14.5, 25.0, 6, 90.0, widg=3.5), start, feed=0.0)
+    expected = groove_path(first_link(start, "top"), cycle93(14.5, 25.0, 6, 90.0, widg=3.5), start,
+                           feed=DEFAULT_FEED_MM_S)
     assert_same_moves(path_moves(op), expected)
     # the shoulder-like outer end face (R15..R20 at Z30) is reached radially
     rim = _find(part, lambda f: f.surface == "plane" and abs(f.z_min - 30) < 1e-9 and f.r_min > 14)
     op2 = make_groove(job, (part, rim), position=0.5, width=3.2, depth=1, tool_width=3, tool_corner_radius=0.2)
-    assert op2.isValid(), op2.getStatusString()
+    assert op_error(op2) is None, op_error(op2)
     assert op2.Proxy.plan(op2)[0].start_on == "side"
 
 
@@ -428,7 +518,7 @@ def test_steep_cone_takes_a_face_groove(doc):
     doc.recompute()
     cone = _find(part, lambda f: f.surface == "cone")
     op = make_groove(job, (part, cone), position=4, width=4, depth=2, tool_width=3, tool_corner_radius=0.2)
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     assert op.GrooveKind == "oblique face (ANGC 120°), external"
     assert op.TYP == 6
     assert op.ANGC.Value == pytest.approx(120.0)
@@ -437,7 +527,7 @@ def test_steep_cone_takes_a_face_groove(doc):
     _rapids_outside(op, part)
     # on the safe cylinder R31, 1 mm above the cone where the blade (R23..26) plunges first: at R23
     start = (31.0, 10 + (30 - 23) * TAN_30 + 1.0)
-    expected = groove_path(first_link(start), cycle93(26.0, 10 + 4 * TAN_30, 6, 120.0), start, feed=0.0)
+    expected = groove_path(first_link(start), cycle93(26.0, 10 + 4 * TAN_30, 6, 120.0), start, feed=DEFAULT_FEED_MM_S)
     assert_same_moves(path_moves(op), expected)
 
 
@@ -446,7 +536,7 @@ def test_one_op_on_several_faces_links_along_the_envelope(shop):
     names = [face_name(shaft.Shape, k) for k in ("bore", "cylinder", "left_end")]
     op = make_groove(job, (shaft, names), position=5, width=4, depth=1, tool_width=3, tool_corner_radius=0.2,
                      comment="three faces")
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     assert op.GrooveKind == "longitudinal, internal; longitudinal, external; face, internal"
     assert (op.TYP, op.AXFA.Value, op.AXSA.Value) == (7, 6.0, 55.0)  # the first face's first groove
     plans = op.Proxy.plan(op)
@@ -473,7 +563,7 @@ def test_plus_reference_corner(shop, key):
     doc, shaft, job, tc = shop
     op = groove(shop, key, reference_corner="plus", flank_angle2=5, base_corner1=0.3, base_corner1_type="Radius",
                 base_allowance=0.1, flank_allowance=0.1)
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     (_c, settings, _st), = op.Proxy.cycles(op)
     assert settings.tool.reference == "plus"
     expected = case_path(key, start=PLUS_STARTS[key], tool=GroovingTool(BLADE, 0.2, "plus"), ang2=5.0, rci1=0.3,
@@ -492,9 +582,9 @@ def test_a_job_without_tool_controller_gets_one(shop):
     assert len(job.Tools.Group) == 1
     assert op.ToolController == job.Tools.Group[0]
     assert op.ToolController.Label == "TC: Grooving tool"
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     assert op.ToolController.HorizFeed.Value == 0.0  # a new tool controller's feed
-    assert_same_moves(path_moves(op), case_path("cylinder", feed=0.0))
+    assert_same_moves(path_moves(op), case_path("cylinder", feed=DEFAULT_FEED_MM_S))
 
 
 def test_make_groove_rejects_unknown_keywords(shop):
@@ -569,12 +659,15 @@ def test_a_recompute_reports_the_cycles_warnings_once(shop, monkeypatch):
     printed = []
     monkeypatch.setattr(FreeCAD.Console, "PrintWarning", printed.append)
     doc = shop[0]
-    op = groove(shop, "cylinder")  # width 4, the 3 mm blade: room for it
-    assert op.isValid(), op.getStatusString()
+    # width 4, the 3 mm r0.2 blade: room for it; base radii of the blade's own
+    # radius, so that it reaches every corner (no unreachable-material warning)
+    op = groove(shop, "cylinder", base_corner1=0.2, base_corner1_type="Radius", base_corner2=0.2,
+                base_corner2_type="Radius")
+    assert op_error(op) is None, op_error(op)
     assert not [m for m in printed if "CYCLE93" in m] and all(plan.warnings == [] for plan in op.Proxy.plan(op))
     op.FlankAllowance = 0.6  # 4 - 2 x 0.6 = 2.8 < 3: roughing runs on the final profile
     doc.recompute()
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     text = ("CYCLE93: the allowances FAL1=0 FAL2=0.6 leave no room for the 3 mm blade: FAL2 leaves a roughing base "
             "2.8 mm wide; roughing runs on the final profile, leaving nothing for the finishing pass")
     (plan,) = op.Proxy.current_plan(op)

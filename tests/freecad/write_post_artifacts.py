@@ -38,6 +38,11 @@ ARTIFACT_CASES = {  # name -> (groove key, keywords, post arguments)
     "cylinder_reference_override": ("cylinder", dict(width=5), "--reference-corner plus"),
     "bore_plus_op": ("bore", dict(reference_corner="plus"), ""),
     "shoulder_reference_override": ("shoulder", dict(width=4), "--reference-corner plus --retract 0.3"),
+    # lathe feeds and speeds (G95/G99 feed per revolution, G96 constant surface speed) and inch output
+    "cylinder_feed_per_rev": ("cylinder", dict(feed_per_rev=0.08, spindle_speed=600), ""),
+    "shoulder_surface_speed": ("shoulder", dict(feed_per_rev=0.05, surface_speed="100 m/min",
+                                                max_spindle_speed=2000), ""),
+    "cylinder_inches": ("cylinder", dict(width=4.5, groove_count=2, pitch=8, feed_per_rev=0.1), "--inches"),
 }
 
 
@@ -85,7 +90,9 @@ def _artifact(op, case, args):
     m = re.search(r"--retract ([\d.]+)", args)
     if m:
         retract = float(m.group(1))
-    expected = _expected_moves(plans, dx, dz, op.ToolController.HorizFeed.Value * 60.0)
+    from freecad_groove.freecad.cutting import cutting_data
+
+    expected = _expected_moves(plans, dx, dz, cutting_data(op).feed)
     programs = {}
     for name in NAMES:
         own = args if name in PECKING else re.sub(r"\s*--retract [\d.]+", "", args)  # only they have it
@@ -95,6 +102,7 @@ def _artifact(op, case, args):
             programs[name] = {"args": own, "text": None, "error": str(e)}
     return {
         "case": case,
+        "inches": "--inches" in args,
         "freecad": ".".join(FreeCAD.Version()[:3]),
         "op": op.Label,
         "tool": {"width": tool.width, "corner_radius": tool.corner_radius, "reference": out_ref},
@@ -121,6 +129,8 @@ def _write_artifacts(folder):
     from test_groove_op import groove
     from test_posts import read
 
+    from freecad_groove.freecad.groove_op import op_error
+
     os.makedirs(folder, exist_ok=True)
     doc = FreeCAD.newDocument("PostArtifacts")
     shop = make_shop(doc)
@@ -129,7 +139,7 @@ def _write_artifacts(folder):
     written = []
     for case, (key, values, args) in sorted(ARTIFACT_CASES.items()):
         op = groove(shop, key, **values)
-        assert op.isValid(), (case, op.getStatusString())
+        assert op_error(op) is None, (case, op_error(op))
         data = _artifact(op, case, args)
         assert data["programs"]["linuxcnc"]["text"], case
         # the expected moves are what the LinuxCNC program holds

@@ -144,9 +144,10 @@ def roomy_task_panel():
     process()
 
 
-def make_gui_shop(name):
+def make_gui_shop(name, feed="120 mm/min"):
     """(doc, job, model): the stepped shaft of tests/freecad/parts.py in a new
-    document, in a Job made as CAM's GUI makes it (with its view provider)."""
+    document, in a Job made as CAM's GUI makes it (with its view provider);
+    its tool controllers feed at ``feed`` (None: as the Job made them)."""
     import Path.Main.Gui.Job as PathJobGui
 
     doc = FreeCAD.newDocument(name)
@@ -154,9 +155,9 @@ def make_gui_shop(name):
     shaft.Shape = shaft_shape()
     doc.recompute()
     job = PathJobGui.Create([shaft], openTaskPanel=False)
-    for tc in job.Tools.Group:
-        tc.HorizFeed = "120 mm/min"
-        tc.VertFeed = "120 mm/min"
+    for tc in job.Tools.Group if feed is not None else []:
+        tc.HorizFeed = feed
+        tc.VertFeed = feed
     doc.recompute()
     return doc, job, job.Model.Group[0]
 

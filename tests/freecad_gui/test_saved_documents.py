@@ -23,6 +23,7 @@ from PySide import QtGui
 from documents import DATA, opened, path_commands, without_chip_break_reentries
 
 from freecad_groove.freecad import groove_op, toolbit
+from freecad_groove.freecad.groove_op import op_error
 from freecad_groove.gui import ICON, task_panel
 
 GUI_AT_BFB45FF = os.path.join(DATA, "groove_gui_saved_at_bfb45ff.FCStd")
@@ -59,7 +60,7 @@ def test_the_op_recomputes_to_the_path_it_saved(saved):
     path = path_commands(op)
     op.touch()
     doc.recompute()
-    assert op.isValid(), op.getStatusString()
+    assert op_error(op) is None, op_error(op)
     assert any(name == "G1" for name, _words in path_commands(op))
     # 2 deep in infeeds of 1: each plunge breaks the chip once and, since
     # issue 9, rapids back down its slot after it; the rest is as saved.

@@ -101,6 +101,22 @@ def _without_float_folds(pts):
     return out
 
 
+def split_at(pts: List[Point], positions: List[float]) -> List[Point]:
+    """The trace with a point added, on the move's straight line, wherever a
+    move crosses one of ``positions`` (the plunges' u). Seed step 3: "Infeed
+    along the groove width is carried out in several steps if the flank width
+    is larger": the plunges across the opening are those steps (each stops on
+    the flank, leaving a tooth at most one width step wide), and the pass takes
+    the teeth one move per step, never more than a width step across."""
+    out = [pts[0]]
+    for (u0, v0), (u1, v1) in zip(pts, pts[1:]):
+        lo, hi = min(u0, u1), max(u0, u1)
+        for c in sorted((c for c in positions if lo + 1e-9 < c < hi - 1e-9), reverse=u1 < u0):
+            out.append((c, v0 + (v1 - v0) * (c - u0) / (u1 - u0)))
+        out.append((u1, v1))
+    return out
+
+
 class _Corner:
     """A rounded (value > 0) or chamfered (value < 0) corner between the
     incoming direction a and the outgoing direction b at vertex V."""
@@ -278,11 +294,11 @@ class GrooveGeometry:
             slope = 0.0  # cos(90 degrees) is 6e-17 in floating point: keep faces exactly square
         tilt = math.degrees(math.atan(abs(slope)))
         limit = self.settings.cycle93_max_contour_tilt
-        if tilt > limit + 1e-9:
+        if limit is not None and tilt > limit + 1e-9:
             axis = "longitudinal" if self.longitudinal else "facing"
             raise cycle93_error(
                 "ANGC", angc,
-                "contour is %.3f degrees off the %s axis; paraxial roughing accepts at most %g "
+                "contour is %.3f degrees off the %s axis; the shop limit is %g "
                 "(setting cycle93_max_contour_tilt)"
                 % (tilt, axis, limit),
             )
@@ -521,9 +537,10 @@ class GrooveGeometry:
         # Between the first and the last full-depth plunge the plunges left
         # nothing: the passes need only reach those.
         ends = (mid, mid) if stop_at is None else stop_at
+        steps = self.plunge_positions()
         for start, end in ((ua, ends[0]), (ub, ends[1])):
             go("r", start, self.clearance(start))
-            pts = env.trace(start, end, PATH_TOLERANCE)
+            pts = split_at(env.trace(start, end, PATH_TOLERANCE), steps)
             for u, v in pts:
                 go("f", u, v)
             go("r", end, self.clearance(end))

@@ -4,7 +4,8 @@ before anything is expanded, and the refusal of a call beyond ``MAX_MOVES``.
 What grows with the parameters:
 - the plunges across the opening: its width over the width step, 95 % of
   (tool width - 2 x corner radius) (WIDG, or DEPG through angled flanks);
-- the infeeds of each plunge: its depth over IDEP (DEPG or IDEP);
+- the infeeds of each plunge: its depth over IDEP (DEPG or IDEP; ANGC when
+  the contour's rise under the blade is deeper than DEPG);
 - the points of the contour passes: the chords of the envelope's arcs (the
   profile's radii RCO, RCI widened or narrowed by the blade's corner radius,
   and the blade's corners rolling over the profile's vertices), PATH_TOLERANCE
@@ -98,6 +99,8 @@ class ExpansionSize:
         # dwell, the free-off, out: 1 + n + 2 (n - 1) + 3.
         self.plunge_moves = self.plunges * (3 * self.infeeds + 2)
         self.contour_moves = sum(trace_points(corners, tool.corner_radius) for corners in (rough, geo.final_corners))
+        # Each of the (at most four) passes is split where it crosses a plunge position.
+        self.contour_moves += 4 * self.plunges
         self.moves = FRAME_MOVES + self.plunge_moves + self.contour_moves
 
     def check(self) -> None:
@@ -110,6 +113,8 @@ class ExpansionSize:
             # DEPG or IDEP: the one further from the tool width in orders of
             # magnitude (DEPG / width > width / IDEP).
             name = "DEPG" if p["DEPG"] * p["IDEP"] > tool.width ** 2 else "IDEP"
+            if tool.width * abs(geo.slope) > p["DEPG"]:
+                name = "ANGC"  # a contour nearly square to the groove's axis: the rise under the blade
         else:
             # Across: WIDG, unless angled flanks widen the opening more.
             opening = geo.rough_corners[-1].vertex[0] - geo.rough_corners[0].vertex[0]

@@ -1,4 +1,5 @@
-"""CYCLE93's warnings: where the allowances leave the blade no room to rough.
+"""CYCLE93's warnings: where the allowances leave the blade no room to rough,
+and the material the blade cannot reach (``cycle93_reach``).
 
 Roughing stops at the allowances (FAL1 on the base, FAL2 on the flanks) and a
 finishing pass follows. When the roughing profile those allowances leave is
@@ -15,6 +16,7 @@ from typing import TYPE_CHECKING, Any, List, Optional, Sequence, Tuple
 from ..numbers import format_given, format_value
 from ..warnings import CycleWarning
 from .cycle93_constants import NAME
+from .cycle93_reach import reach_warnings
 
 if TYPE_CHECKING:  # the geometry imports this module
     from .cycle93_geometry import GrooveGeometry
@@ -68,7 +70,12 @@ def _length(value: float) -> str:
 
 
 def cycle93_warnings(geometry: "GrooveGeometry") -> List[CycleWarning]:
-    """The warnings of a CYCLE93 groove: roughing on the final profile."""
+    """The warnings of a CYCLE93 groove: roughing on the final profile, and
+    the material the blade cannot reach (``cycle93_reach``)."""
+    return _no_room_warnings(geometry) + reach_warnings(geometry)
+
+
+def _no_room_warnings(geometry: "GrooveGeometry") -> List[CycleWarning]:
     reason = geometry.no_room
     if not geometry.roughs_to_final or reason is None:
         return []

@@ -36,9 +36,15 @@ in order:
     refused with an error naming the op and the command;
 * the end: M9 when coolant was on, M5 when the spindle ran, the program end.
 
-Feeds: FreeCAD's Path F words are mm/s; every post writes mm/min in the
-control's feed-per-minute mode (G94, Fanuc/Haas G98); feed per revolution is
-not modelled. Lengths are mm (G21, Siemens G71): FreeCAD models are metric.
+Feeds and speeds: a Groove op's own (``freecad/cutting.py``: FeedPerRev,
+SurfaceSpeed with MaxSpindleSpeed, SpindleSpeed; else the tool controller's;
+else 0.05 mm/rev and 500 rpm), written the control's way (``Control.
+feed_mode``, ``surface_speed``, ``spindle``; README, "Feeds and speeds");
+other objects' Path F words are mm/s, written per minute (G94, Fanuc/Haas
+G98), the mode switched back where a groove fed per revolution. Lengths are
+mm (G21, Siemens G71), or inches with ``--inches`` (G20, Siemens G700: the
+writer divides every length and feed by 25.4; native calls get their words
+in inches). ``--help`` reports the options and returns None.
 Numbers: the target writer's (a decimal point always, no ``-0``), with the
 control's decimals (3; LinuxCNC 4; ``--precision``). Dwell: Siemens
 ``G4 F<s>``, Fanuc ``G04 P<ms>``, Haas ``G04 P<s>``, LinuxCNC ``G4 P<s>``;
@@ -104,6 +110,7 @@ from typing import Any, Iterable, Optional, Sequence, Union
 import FreeCAD
 
 from ...engine.output import write_atomically
+from .command_post import command_post_class, report_help
 from .controls import CONTROLS, Control, control_named
 from .errors import PostError
 from .objects import groove_op_of, job_of, label_of
@@ -113,7 +120,7 @@ from .program import Program
 from .writer import LatheWriter
 
 __all__ = ["CONTROLS", "PostError", "export", "build", "parse_options", "make_parser", "tooltip", "groove_op_of",
-           "Control", "LatheWriter", "Options", "PECKING_PROPERTIES"]
+           "Control", "LatheWriter", "Options", "PECKING_PROPERTIES", "command_post_class"]
 
 
 def build(name: str, objectslist: Optional[Iterable[Any]], options: Options) -> str:
@@ -129,14 +136,18 @@ def build(name: str, objectslist: Optional[Iterable[Any]], options: Options) -> 
 
 
 def export(name: str, objectslist: Optional[Iterable[Any]], filename: Optional[str],
-           argstring: Union[None, str, Sequence[str]]) -> str:
+           argstring: Union[None, str, Sequence[str]]) -> Optional[str]:
     """A FreeCAD script post's export(): the program for ``objectslist``;
     ``filename`` "-" returns the text only, else it is also written (atomically).
-    Raises PostError (also printed on FreeCAD's report view) on any problem."""
+    Raises PostError (also printed on FreeCAD's report view) on any problem.
+    ``--help`` shows the options in the report view and returns None (no
+    program, no file), as FreeCAD's own script posts return None when they
+    write nothing."""
     try:
         options, parser = parse_options(name, argstring)
         if options.help:
-            return parser.format_help()
+            report_help(name, parser.format_help())
+            return None
         text = build(name, objectslist, options)
         if filename and filename != "-":
             try:

@@ -71,6 +71,21 @@ class Control:
     def spindle(self, rpm: int, m_code: str) -> List[str]:
         return ["G97 S%d %s" % (rpm, m_code)]
 
+    feed_mode_codes = ("G94", "G95")  # (per minute, per revolution)
+    unit_codes = ("G21", "G20")  # (metric, inch: lengths and feeds)
+
+    def feed_mode(self, per_rev: bool) -> str:
+        """The code of feed per minute or (``per_rev``) per revolution."""
+        return self.feed_mode_codes[1 if per_rev else 0]
+
+    def units(self, inches: bool) -> str:
+        """The code of metric or inch lengths and feeds."""
+        return self.unit_codes[1 if inches else 0]
+
+    def surface_speed(self, speed: int, limit: int, m_code: str) -> List[str]:
+        """Constant surface speed ``speed`` (m/min, ft/min in inch) with the spindle limited to ``limit`` rpm."""
+        raise NotImplementedError
+
     def m_code(self, number: int) -> str:
         return "M%02d" % number
 
@@ -95,6 +110,7 @@ class PeckingControl(Control):
     retract_word: Optional[str] = None  # the cycle word holding the peck retract e (Fanuc's first-block R)
     retract_setting: Optional[str] = None  # where the control keeps e otherwise (named in a comment)
     least_input_increment = 0.001  # mm: counted words (Fanuc P/Q) are whole multiples of it
+    least_input_increment_inch = 0.0001  # in: the same in inch programs
 
     @property
     def pecking_codes(self) -> str:
@@ -131,8 +147,13 @@ class Sinumerik(Control):
     def dwell(self, seconds: float) -> str:
         return "G4 F" + format_decimal(seconds, DWELL_DIGITS)
 
+    unit_codes = ("G71", "G700")  # G700: inch lengths and feeds (G70 keeps feeds in the basic system)
+
     def setup(self, options: Options) -> List[str]:
-        return ["G18 G71 G90 G40 G94 " + ("DIAMON" if options.diameter else "DIAMOF")]
+        return ["G18 %s G90 G40 G94 %s" % (self.units(options.inches), "DIAMON" if options.diameter else "DIAMOF")]
+
+    def surface_speed(self, speed: int, limit: int, m_code: str) -> List[str]:
+        return ["G96 S%d LIMS=%d %s" % (speed, limit, m_code)]
 
     def tool_change(self, number: int) -> List[str]:
         return ["T%d D1" % number]
@@ -161,7 +182,13 @@ class AllenBradley9(PeckingControl):
     def setup(self, options: Options) -> List[str]:
         diameter_code = "G07" if options.g07_is_diameter else "G08"
         radius_code = "G08" if options.g07_is_diameter else "G07"
-        return ["G18 G21 G90 G40 G94 " + (diameter_code if options.diameter else radius_code)]
+        return ["G18 %s G90 G40 G94 %s" % (self.units(options.inches),
+                                          diameter_code if options.diameter else radius_code)]
+
+    def surface_speed(self, speed: int, limit: int, m_code: str) -> List[str]:
+        raise ProgramError(
+            "constant surface speed cannot be written for the Allen-Bradley 9/Series: its spindle limit word is "
+            "not documented in the manuals this post follows (set SurfaceSpeed to 0 and give SpindleSpeed)")
 
 
 class FanucFrame(PeckingControl):
@@ -169,8 +196,13 @@ class FanucFrame(PeckingControl):
 
     o_number_frame = True
 
+    feed_mode_codes = ("G98", "G99")
+
     def setup(self, options: Options) -> List[str]:
-        return ["G21", "G40 G98"]
+        return [self.units(options.inches), "G40 G98"]
+
+    def surface_speed(self, speed: int, limit: int, m_code: str) -> List[str]:
+        return ["G50 S%d" % limit, "G96 S%d %s" % (speed, m_code)]
 
     def end(self, options: Options) -> List[str]:
         return ["M30", "%"]
@@ -203,7 +235,10 @@ class LinuxCNC(Control):
     m6_stops_spindle = True  # LinuxCNC's M6 stops the spindle
 
     def setup(self, options: Options) -> List[str]:
-        return ["G18 %s G21 G90 G91.1 G40 G94" % ("G7" if options.diameter else "G8")]
+        return ["G18 %s %s G90 G91.1 G40 G94" % ("G7" if options.diameter else "G8", self.units(options.inches))]
+
+    def surface_speed(self, speed: int, limit: int, m_code: str) -> List[str]:
+        return ["G96 D%d S%d %s" % (limit, speed, m_code)]
 
     def tool_change(self, number: int) -> List[str]:
         return ["T%d M6 G43" % number]

@@ -8,8 +8,9 @@ from typing import TYPE_CHECKING, Any, Callable, List, Optional
 
 from ...engine import DWELL, FEED, CycleError, ProgramError
 from ...engine.moves import Move
-from ...engine.numbers import format_decimal
-from ..units import feed_mm_per_min
+from ...engine.numbers import MM_PER_INCH, format_decimal
+from ..cutting import CuttingData, cutting_data
+from ..groove_properties import GrooveInputError
 from .controls import NATIVE_CYCLE93, NATIVE_PECKING
 from .errors import PostError
 from .objects import label_of
@@ -20,6 +21,15 @@ if TYPE_CHECKING:
     from .program import Program
 
 RETRACT_DECIMALS = 4  # of the peck retract named in a comment
+CYCLE93_LENGTHS = ("axfa", "axsa", "widg", "depg", "rco1", "rco2", "rci1", "rci2", "fal1", "fal2", "idep", "vrt")
+
+
+def groove_cutting(op: Any) -> CuttingData:
+    """The Groove op's feeds and speeds (cutting.py); PostError naming the op property at fault."""
+    try:
+        return cutting_data(op)
+    except GrooveInputError as exc:
+        raise PostError(str(exc), op=label_of(op)) from None
 
 
 def call_text(call: Any) -> str:
@@ -45,14 +55,17 @@ class GrooveOutput:
         self.program = program
         self.op = op
         self.label = label_of(op)
-        self.feed = 0.0  # mm/min, from the op's tool controller
+        self.feed = 0.0  # mm/min or mm/rev (per_rev), the op's (cutting.py)
+        self.per_rev = False
 
     def write(self) -> None:
         plans = self._plans()
         if not plans:
             self.program.note("%s: no groove (no face in Base)" % self.label)
             return
-        self.feed = self._feed()
+        cutting = groove_cutting(self.op)
+        self.feed, self.per_rev = cutting.feed, cutting.per_rev
+        self.program.set_feed_mode(cutting.per_rev)
         write_group = self._group_writer()
         for group in face_groups(plans):
             write_group(group)
@@ -66,16 +79,6 @@ class GrooveOutput:
         except ValueError as exc:
             raise PostError(str(exc), op=self.label) from None
 
-    def _feed(self) -> float:
-        """The grooves' feed, mm/min: the op's tool controller's HorizFeed."""
-        tc = getattr(self.op, "ToolController", None)
-        if tc is None:
-            raise PostError("is not set: the grooves' feed comes from it", op=self.label, parameter="ToolController")
-        feed = feed_mm_per_min(tc.HorizFeed.Value)
-        if not feed > 0:
-            raise PostError("is 0: the grooves need a feed", op=self.label, parameter="ToolController HorizFeed")
-        return feed
-
     def _group_writer(self) -> Callable[[List[Any]], None]:
         """What writes a face's grooves: the control's native cycle or the expansion."""
         native = self.program.control.native if self.program.options.native else None
@@ -85,13 +88,18 @@ class GrooveOutput:
     # -- positions in the output's reference corner
     def link(self, plan: Any, to_start: bool = True) -> None:
         """The op's link rapids to the plan's start point (``to_start`` False:
-        without the last one when it is the start point, which the caller writes)."""
+        without the last one when it reaches the start point, which the caller
+        then writes in one block: the same motion, since an axis the step
+        leaves out is known to be at the start point already)."""
         shift = corner_shift(plan, self.program.options.reference)
-        link = list(plan.link)
-        if not to_start and link and link[-1] == (plan.start.x, plan.start.z):
-            link = link[:-1]
-        for x, z in link:
-            self.program.rapid(None if x is None else x + shift.dx, None if z is None else z + shift.dz)
+        moves = [(None if x is None else x + shift.dx, None if z is None else z + shift.dz) for x, z in plan.link]
+        target = (plan.start.x + shift.dx, plan.start.z + shift.dz)
+        for k, (x, z) in enumerate(moves):
+            last = k == len(moves) - 1
+            here = (self.program.x if x is None else x, self.program.z if z is None else z)
+            if last and not to_start and here == target:
+                return
+            self.program.rapid(x, z)
 
     def rapid_to(self, plan: Any, point: Any, force: bool = False) -> None:
         """A rapid to ``point`` (anything with x and z, model coordinates of the plan)."""
@@ -140,6 +148,9 @@ class GrooveOutput:
                 fal1=2 * call.value("FAL1") if longitudinal else call.fal1,
                 fal2=call.fal2 if longitudinal else 2 * call.value("FAL2"),
             )
+        if program.options.inches:  # every length word in inches (G700); ANGC, ANG1/2, DWT, TYP stay
+            call = replace(call, **{name: getattr(call, name) / MM_PER_INCH for name in CYCLE93_LENGTHS
+                                    if getattr(call, name) is not None})
         program.note("%s groove %d" % (plan.face.name, plan.index + 1))
         self.link(plan, to_start=False)
         self.rapid_to(plan, plan.start, force=True)
@@ -157,7 +168,7 @@ class GrooveOutput:
         why = plain_reason(call, geometry)
         if why is None:
             try:
-                calls = PeckingCalls(self.program, self.label, self.feed).calls(group, geometry)
+                calls = PeckingCalls(self.program, self.label, self.feed, self.per_rev).calls(group, geometry)
             except NotNative as exc:
                 why = str(exc)
         if why is not None:
@@ -179,9 +190,12 @@ class GrooveOutput:
             what = "%s groove %d" % (first.face.name, first.index + 1)
         program.note("%s: %s as %s" % (what, call_text(first.cycle), call.model.NAME))
         if control.retract_setting:
-            program.note("peck retract e = %s mm: %s"
-                         % (format_decimal(call.retract, RETRACT_DECIMALS), control.retract_setting))
-        self.link(first)
+            program.note("peck retract e = %s %s: %s" % (format_decimal(call.retract, RETRACT_DECIMALS),
+                                                        "in" if program.options.inches else "mm",
+                                                        control.retract_setting))
+        # the call's start point in one block; when that is the plan's start point, the link's last step
+        # (which would reach it) is left to that block
+        self.link(first, to_start=call.approach[-1] != call.approach[0])
         for point in call.approach[1:-1]:
             self.rapid_to(first, point)
         self.rapid_to(first, call.approach[-1], force=True)

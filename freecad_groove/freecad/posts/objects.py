@@ -37,12 +37,21 @@ def op_property(obj: Any, name: str, default: Any = None) -> Any:
     return default
 
 
+def has(obj: Any, name: str) -> bool:
+    """hasattr() that takes a deleted FreeCAD object for one without the attribute (FreeCAD 1.0/1.1's
+    fixture objects in a Job's post list share one InList, which keeps the Jobs of closed documents)."""
+    try:
+        return hasattr(obj, name)
+    except ReferenceError:
+        return False
+
+
 def is_tool_controller(obj: Any) -> bool:
-    return hasattr(obj, "ToolNumber") and hasattr(obj, "SpindleSpeed") and hasattr(obj, "HorizFeed")
+    return has(obj, "ToolNumber") and has(obj, "SpindleSpeed") and has(obj, "HorizFeed")
 
 
 def is_job(obj: Any) -> bool:
-    return hasattr(obj, "Operations") and hasattr(getattr(obj, "Operations", None), "Group")
+    return has(obj, "Operations") and has(getattr(obj, "Operations", None), "Group")
 
 
 def is_fixture_block(obj: Any) -> bool:
@@ -56,14 +65,17 @@ def label_of(obj: Any) -> str:
 
 
 def job_of(objects: Iterable[Any]) -> Optional[Any]:
-    """The Job the objects belong to: the first Job among them, their parent's or their grandparent's."""
+    """The Job the objects belong to: the first Job among them, their parent's or their grandparent's
+    (not a fixture block's: its InList is shared, see has())."""
     for obj in objects:
         if is_job(obj):
             return obj
+        if is_fixture_block(obj):
+            continue
         for parent in getattr(obj, "InList", None) or []:
             if is_job(parent):
                 return parent
-            for grand in getattr(parent, "InList", None) or []:
+            for grand in (getattr(parent, "InList", None) if has(parent, "InList") else None) or []:
                 if is_job(grand):
                     return grand
     return None

@@ -71,9 +71,14 @@ def _add_program_options(parser: PostParser, control: Control) -> None:
     parser.add_argument("--no-header", action="store_true", help="no program name / post comment at the top")
     parser.add_argument("--no-comments", action="store_true", help="no comments at all")
     cycle_words = "; cycle words keep at most %d" % CYCLE_WORD_DECIMALS if control.native == NATIVE_PECKING else ""
-    parser.add_argument("--precision", type=int, default=control.digits, metavar="N",
-                        help="decimals of coordinates (default %d%s)" % (control.digits, cycle_words))
-    parser.add_argument("--help", action="store_true", help="return this help instead of a program")
+    parser.add_argument("--inches", action="store_true",
+                        help="inch output: %s, lengths in inches, feeds in in/min or in/rev, surface speed in "
+                        "ft/min (default: metric, %s)" % (control.units(True), control.units(False)))
+    parser.add_argument("--precision", type=int, default=None, metavar="N",
+                        help="decimals of coordinates (default %d, %d with --inches%s)"
+                        % (control.digits, control.digits + 1, cycle_words))
+    parser.add_argument("--help", action="store_true",
+                        help="show this help in the report view and write no program")
 
 
 def make_parser(name: str) -> PostParser:
@@ -107,9 +112,13 @@ class Options:
             raise PostError("--program-number %d: must be 0 to %d" % (self.program_number, MAX_PROGRAM_NUMBER))
         self.header: bool = not namespace.no_header
         self.comments: bool = not namespace.no_comments
-        if not 0 <= namespace.precision <= MAX_PRECISION:
-            raise PostError("--precision %d: must be 0 to %d" % (namespace.precision, MAX_PRECISION))
-        self.precision: int = namespace.precision
+        self.inches: bool = namespace.inches
+        precision = namespace.precision
+        if precision is None:
+            precision = control.digits + (1 if self.inches else 0)
+        if not 0 <= precision <= MAX_PRECISION:
+            raise PostError("--precision %d: must be 0 to %d" % (precision, MAX_PRECISION))
+        self.precision: int = precision
         self.native_decimals: int = min(self.precision, CYCLE_WORD_DECIMALS)
         self.help: bool = namespace.help
 

@@ -113,6 +113,8 @@ class PathCommands:
         if kind == FEED and f is not None and not f > 0:
             self.refuse(command, "feed F%s: must be greater than 0" % format_decimal(params["F"], 6))
         x, z = params.get("X"), params.get("Z")
+        if kind == FEED:
+            self.program.set_feed_mode(False)  # a Path's F is per minute
         self.program.add(self.program.writer.move(kind, x, z, f))
         self.program.moved(x, z)
 
@@ -133,6 +135,7 @@ class PathCommands:
         centre = (params.get("I", 0.0), params.get("K", 0.0))
         f = feed_mm_per_min(params["F"]) if "F" in params else None
         radius = self._signed_radius(command, start, end, centre) if program.control.cr_arcs else None
+        program.set_feed_mode(False)
         program.add(program.writer.arc(command.code, end[0], end[1], centre[0], centre[1], f, radius))
         program.moved(*end)
 
@@ -189,14 +192,16 @@ class PathCommands:
         program = self.program
         if "S" in command.params:
             rpm = int(round(command.params["S"]))
-            program.add(program.control.spindle(rpm, program.control.m_code(command.number)))
+            m_code = program.control.m_code(command.number)
+            program.add(program.control.spindle(rpm, m_code))
+            program.spindle = ("rpm", rpm, m_code)
         else:
             program.m_code(command.number)
+            program.spindle = None  # running, at a speed the post did not write
         program.spindle_on = True
 
     def _spindle_stop(self, command: Command) -> None:
-        self.program.m_code(5)
-        self.program.spindle_on = False
+        self.program.stop_spindle()
 
     def _m_code(self, command: Command) -> None:
         """An M code written as it is: program stops, coolant."""

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any, Dict, List, NamedTuple, Optional
 from ...engine import CycleError, MachineState
 from ...engine.cycles.cycle93 import WIDTH_STEP_FACTOR
 from ...engine.moves import RAPID
-from ...engine.numbers import format_decimal
+from ...engine.numbers import MM_PER_INCH, format_decimal
 from .errors import cycle_post_error
 from .reference_corner import corner_settings, corner_shift
 
@@ -26,7 +26,7 @@ if TYPE_CHECKING:
 
 # pecking word -> what the op sets it from
 PECKING_PROPERTIES = {"I": "Infeed", "K": "Infeed", "P": "Infeed", "Q": "Infeed", "X": "Depth", "Z": "Depth",
-                      "F": "ToolController HorizFeed", "e": "Retract", "R(e)": "Retract"}
+                      "F": "FeedPerRev (or the tool controller's HorizFeed)", "e": "Retract", "R(e)": "Retract"}
 SAME = 1e-9  # lengths closer than this are the same (blade width, start points)
 EQUAL_SPACING = 1e-6  # how far a groove of a set may be off its pitch
 FEED_DECIMALS = 4
@@ -105,14 +105,20 @@ def groove_span(plan: Any) -> GrooveSpan:
 
 class PeckingCalls:
     """The pecking-cycle calls of one Groove op's groups of grooves, for a
-    Program; ``feed`` (mm/min) the grooves' feed, ``label`` the op's."""
+    Program; ``feed`` the grooves' feed (mm/rev with ``per_rev``, else
+    mm/min), ``label`` the op's. The calls' words are in the output's units
+    (``scale``: output units per mm); the plans are in mm."""
 
-    def __init__(self, program: Program, label: str, feed: float) -> None:
+    def __init__(self, program: Program, label: str, feed: float, per_rev: bool = False) -> None:
         self.control = program.control
         self.options = program.options
         self.writer = program.writer
         self.label = label
         self.feed = feed
+        self.per_rev = per_rev
+        self.scale = 1.0 / MM_PER_INCH if self.options.inches else 1.0
+        self.increment = self.control.least_input_increment_inch if self.options.inches \
+            else self.control.least_input_increment
 
     def calls(self, group: List[Any], geometry: Any) -> List[PeckingCall]:
         """One call per groove, or one for the whole group when each groove is
@@ -142,12 +148,12 @@ class PeckingCalls:
         for k, step in enumerate(steps):
             if abs(abs(step) - k * pitch) > EQUAL_SPACING:
                 raise NotNative("grooves that are not equally spaced")
-        return self._call([span.plan for span in spans], spans[0], spans[-1].start, pitch)
+        return self._call([span.plan for span in spans], spans[0], spans[-1].start, pitch * self.scale)
 
     def _width_step(self, tool: Any) -> float:
         """The step across a groove wider than the blade: the engine's own,
-        cut to the cycle words' decimals."""
-        step = WIDTH_STEP_FACTOR * (tool.width - 2 * tool.corner_radius)
+        in the output's units, cut to the cycle words' decimals."""
+        step = WIDTH_STEP_FACTOR * (tool.width - 2 * tool.corner_radius) * self.scale
         scale = 10 ** self.options.native_decimals
         pitch = math.floor(step * scale + 1e-9) / scale
         if not pitch > 0:
@@ -156,7 +162,8 @@ class PeckingCalls:
 
     def _call(self, plans: List[Any], span: GrooveSpan, last: Optional[Point], pitch: Optional[float]) -> PeckingCall:
         """The call from ``span``'s start point, its last groove at ``last``
-        (None: one groove), validated and expanded by the engine."""
+        (None: one groove; ``pitch`` in the output's units), validated and
+        expanded by the engine in the output's units."""
         shift = corner_shift(span.plan, self.options.reference)
         start = Point(span.start.x + shift.dx, span.start.z + shift.dz)
         bottom = Point(span.bottom.x + shift.dx, span.bottom.z + shift.dz)
@@ -165,16 +172,21 @@ class PeckingCalls:
         peck = self._length(span.geometry.params["IDEP"])
         if not peck > 0:
             raise NotNative("an Infeed below the cycle's resolution")
-        feed = round(self.feed, FEED_DECIMALS)
+        feed = round(self.feed * self.scale, FEED_DECIMALS)
+        if not feed > 0:
+            raise NotNative("a feed below the cycle's resolution")
         retract = self._length(self.options.retract if self.options.retract is not None
                                else span.geometry.params["VRT"])
         cycle = self.control.pecking_cycle(span.geometry.longitudinal)
         words = self._position_words(span.geometry.longitudinal, bottom, last)
         words.update(self._cycle_words(cycle, peck, feed, retract, None if last is None else pitch))
         model = cycle(**words)
-        state = MachineState(x=start_x, z=start_z, feed=feed, diameter_mode=self.options.diameter, metric=True,
-                             feed_per_rev=False)
-        settings = replace(corner_settings(span.plan, self.options.reference), peck_retract=retract)
+        state = MachineState(x=start_x, z=start_z, feed=feed, diameter_mode=self.options.diameter,
+                             metric=not self.options.inches, feed_per_rev=self.per_rev)
+        settings = corner_settings(span.plan, self.options.reference)
+        tool = settings.tool
+        settings = replace(settings.with_tool(width=tool.width * self.scale,
+                                              corner_radius=tool.corner_radius * self.scale), peck_retract=retract)
         try:
             model.validate(settings)
             model.expand(state, settings)
@@ -183,15 +195,15 @@ class PeckingCalls:
         return PeckingCall(plans, span.approach, model, retract)
 
     def _length(self, value: float) -> float:
-        """A length word, rounded to the cycle words' decimals."""
-        return round(value, self.options.native_decimals) + 0.0
+        """A length word from a length in mm: in the output's units, rounded to the cycle words' decimals."""
+        return round(value * self.scale, self.options.native_decimals) + 0.0
 
     def _x_word(self, radius: float) -> float:
-        """An X word: a diameter unless the output is in radius mode."""
-        return round(radius * (2.0 if self.options.diameter else 1.0), self.options.native_decimals) + 0.0
+        """An X word from a radius in mm: a diameter unless the output is in radius mode."""
+        return self._length(radius * (2.0 if self.options.diameter else 1.0))
 
     def _read_back(self, value: float, x_axis: bool) -> float:
-        """The value the control reads back from the written start word (a radius for X)."""
+        """The value the control reads back from the written start word (a radius for X), in the output's units."""
         written = self.writer.x_word(value) if x_axis else self.writer.z_word(value)
         return float(written) / (2.0 if (x_axis and self.writer.diameter) else 1.0)
 
@@ -212,7 +224,7 @@ class PeckingCalls:
                      pitch: Optional[float]) -> Dict[str, Any]:
         """The peck, the feed, the retract where the cycle holds it, a required
         shift (none) and the groove spacing (``pitch``, None: one groove)."""
-        increment = self.control.least_input_increment
+        increment = self.increment
         words: Dict[str, Any] = {
             cycle.PECK: int(round(peck / increment)) if cycle.PECK in cycle.COUNTED else peck,
             "F": feed,
@@ -222,5 +234,6 @@ class PeckingCalls:
         if cycle.SHIFT_D:  # Allen-Bradley's D: required, 0 = no shift at the bottom
             words[cycle.RELIEF] = 0.0
         if pitch is not None:
-            words[cycle.PITCH] = int(round(pitch / increment)) if cycle.PITCH in cycle.COUNTED else self._length(pitch)
+            words[cycle.PITCH] = int(round(pitch / increment)) if cycle.PITCH in cycle.COUNTED \
+                else round(pitch, self.options.native_decimals) + 0.0
         return words

@@ -1,10 +1,14 @@
-"""The posts' line writer: the engine's target writer with a control's codes, dwell, precision and X mode."""
+"""The posts' line writer: the engine's target writer with a control's codes, dwell, precision, X mode and units.
+
+Everything handed to it is in mm (lengths, radii) and mm/min or mm/rev (feeds);
+with ``inches`` every number it writes is divided by 25.4 (feeds too: in/min,
+in/rev)."""
 
 from typing import Iterable, List, Optional
 
 from ...engine import FEED, ProgramError
 from ...engine.moves import Move
-from ...engine.numbers import MAX_DWELL_SECONDS
+from ...engine.numbers import MAX_DWELL_SECONDS, MM_PER_INCH
 from ...engine.targets import TargetSpec, Writer
 from .controls import Control
 
@@ -16,20 +20,36 @@ class LatheWriter(Writer):
     ops' Paths), ``arc`` arcs; ``write`` (the engine's move lists) is the
     target writer's own."""
 
-    def __init__(self, control: Control, precision: int, diameter: bool) -> None:
+    def __init__(self, control: Control, precision: int, diameter: bool, inches: bool = False) -> None:
         self.control = control
         self.diameter = diameter
+        self.inches = inches
         super().__init__("linuxcnc", True, False)  # a target to start from: the control's own spec replaces it
-        self.spec = TargetSpec(control.name, dict(control.codes), precision, precision, {True: "G21", False: "G20"},
-                               {False: "G94", True: "G95"}, "M2", False)
-        self.set_units(True)
+        self.spec = TargetSpec(control.name, dict(control.codes), precision, precision,
+                               {True: control.units(False), False: control.units(True)},
+                               {False: control.feed_mode(False), True: control.feed_mode(True)}, "M2", False)
+        self.set_units(not inches)
+
+    def out(self, mm: float) -> float:
+        """A length (or feed) in mm in the output's units."""
+        return mm / MM_PER_INCH if self.inches else mm
 
     def x_word(self, radius: float) -> str:
-        return super().x_word(radius if self.diameter else radius / 2.0)
+        return super().x_word(self.out(radius if self.diameter else radius / 2.0))
+
+    def z_word(self, z: float) -> str:
+        return super().z_word(self.out(z))
+
+    def length_word(self, value: float) -> str:
+        return super().length_word(self.out(value))
+
+    def f_word(self, feed: float) -> str:
+        return super().f_word(self.out(feed))
 
     def write(self, moves: Iterable[Move], prefix: str = "") -> List[str]:
-        if not self.diameter:  # the target writer doubles X: hand it half (exact in binary)
-            moves = [(k, x / 2.0, z, f, p) for k, x, z, f, p in moves]
+        half = 1.0 if self.diameter else 0.5  # the target writer doubles X: hand it half (exact in binary)
+        moves = [(k, None if x is None else self.out(x * half), None if z is None else self.out(z),
+                  None if f is None else self.out(f), p) for k, x, z, f, p in moves]
         return super().write(moves, prefix)
 
     def dwell(self, seconds: float) -> str:

@@ -1,0 +1,92 @@
+"""The posts as CAM's Post Process command (CAM_Post) runs them, without a traceback.
+
+FreeCAD 1.0's and 1.1's ``PostProcessorFactory`` loads ``<name>_post.py`` and
+takes the class ``<name>.title()`` from it (``Fanuc_Lathe``) before it would
+wrap the module's ``export()`` in its ``WrapperPost``; CAM_Post then calls
+the instance's ``export()`` and takes a falsy result as a failed post: it
+aborts its transaction and writes no file (1.0 and 1.1 alike), while an
+exception reaches the user as a Python traceback. So each post module names
+a class made here whose ``export()`` never raises: a failed post is one
+error line in the report view (``fanuc_lathe_post: Groove: ...``, FreeCAD's
+own way of reporting, Console.PrintError) and None; ``--help`` shows the
+options in the report view and is None too. The module's ``export()`` stays
+the script API (it raises PostError, for scripts and tests).
+
+The class derives from FreeCAD's ``Path.Post.Processor.PostProcessor`` for its
+``_buildPostList`` (the Job's output order, split output, fixtures), but not
+for its argument handling: FreeCAD 1.1's constructor builds its own shared
+argument parsers, which these posts do not take.
+"""
+
+import traceback
+from typing import Any, List, Optional, Tuple
+
+import FreeCAD
+
+from .controls import control_named
+from .errors import PostError
+from .options import make_parser, parse_options, tooltip
+
+Sections = List[Tuple[str, str]]
+
+
+def report_help(name: str, text: str) -> None:
+    """The post's help in the report view (no program is written)."""
+    FreeCAD.Console.PrintMessage("%s_post --help: no program written; the options:\n%s\n"
+                                 % (control_named(name).post, text.rstrip("\n")))
+
+
+def post_sections(name: str, processor: Any, argstring: Any) -> Optional[Sections]:
+    """[(part name, program)] of the Job's post list, or None after reporting
+    why not (a PostError, --help, anything unexpected) in the report view."""
+    from . import build  # the package's build(); imported here, the package imports this module
+
+    post = control_named(name).post + "_post"
+    try:
+        options, parser = parse_options(name, argstring)
+        if options.help:
+            report_help(name, parser.format_help())
+            return None
+        return [(part, build(name, objects, options)) for part, objects in processor._buildPostList()]
+    except PostError as exc:
+        text = str(exc)  # an option error already names the post
+        FreeCAD.Console.PrintError("%s (no file written)\n" % (text if text.startswith(post) else post + ": " + text))
+    except Exception as exc:  # noqa: BLE001 - a user action must never end in a traceback
+        FreeCAD.Console.PrintError("%s: could not post the Job: %s: %s (no file written; please report it)\n"
+                                   % (post, type(exc).__name__, exc))
+        FreeCAD.Console.PrintLog(traceback.format_exc())
+    return None
+
+
+def command_post_class(name: str) -> type:
+    """The class FreeCAD's PostProcessorFactory takes from post ``name``'s module."""
+    from Path.Post.Processor import PostProcessor
+
+    class LathePost(PostProcessor):
+        """Post ``name`` for CAM's Post Process command (see the module notes)."""
+
+        def __init__(self, job: Any, *args: Any, **kwargs: Any) -> None:  # noqa: D107 - no base constructor
+            self._job = job
+            self._tooltip = tooltip(name)
+            self._tooltipargs = make_parser(name).format_help()
+            self._units = "Metric"
+            self._args = args
+            self._kwargs = kwargs
+
+        @property
+        def tooltip(self) -> str:
+            return self._tooltip
+
+        @property
+        def tooltipArgs(self) -> str:  # noqa: N802 - FreeCAD's name
+            return self._tooltipargs
+
+        @property
+        def units(self) -> str:
+            return self._units
+
+        def export(self) -> Optional[Sections]:
+            return post_sections(name, self, getattr(self._job, "PostProcessorArgs", ""))
+
+    LathePost.__name__ = LathePost.__qualname__ = control_named(name).post.title()
+    return LathePost

@@ -1,0 +1,147 @@
+"""CYCLE93: the material a flat blade cannot reach is reported (issue 9 item 2,
+engine/cycles/cycle93_reach.py), and it is exactly what the simulation of the
+expanded moves leaves standing."""
+
+import pytest
+from shapely.geometry import LineString, Polygon
+from test_cycle93_simulation import SEED_CALL, simulated
+
+from freecad_groove.engine import GroovingTool, MachineState, Settings
+from freecad_groove.engine.cycles.cycle93 import Cycle93
+from freecad_groove.engine.cycles.cycle93_reach import REACH_TOLERANCE_MM, unreachable_regions
+
+SEED = Cycle93.parse(SEED_CALL)
+START = MachineState(x=40.0, z=65.0, feed=0.2, feed_per_rev=True)
+
+
+def texts(call, tool, state=START):
+    return [w.text for w in call.warnings(state, Settings(tool=tool)) if w.parameter in ("RCI1", "RCI2")]
+
+
+def test_seed_example_with_a_5_mm_blade_reports_the_wedge_at_base_corner_2():
+    # The oblique base (ANGC 12) runs down into the chamfer RCI2 -2: the flat
+    # blade rests on both and leaves the wedge between; the chamfer's own
+    # corners leave the blade's r0.4 at base corner 1.
+    assert texts(SEED, GroovingTool(5.0, 0.4)) == [
+        "CYCLE93: 0.0023 mm² up to 0.03 mm deep at base corner 1 cannot be reached by a 5 mm flat blade (r0.4)",
+        "CYCLE93: 1.49 mm² up to 0.68 mm deep at base corner 2 cannot be reached by a 5 mm flat blade (r0.4)",
+    ]
+    (warning,) = [w for w in SEED.warnings(START, Settings(tool=GroovingTool(5.0, 0.4))) if "corner 2" in w.text]
+    assert (warning.cycle, warning.parameter) == ("CYCLE93", "RCI2")
+
+
+def test_seed_example_with_a_3_mm_blade_leaves_a_smaller_wedge():
+    assert texts(SEED, GroovingTool(3.0, 0.4))[1] == (
+        "CYCLE93: 0.44 mm² up to 0.37 mm deep at base corner 2 cannot be reached by a 3 mm flat blade (r0.4)")
+    (wedge,) = [r for r in unreachable_regions(SEED.geometry(Settings(tool=GroovingTool(3.0, 0.4))))
+                if r.area > 0.1]
+    assert wedge.corner == 2 and wedge.depth == pytest.approx(0.3694, abs=5e-4)
+
+
+@pytest.mark.parametrize("call, tool", [
+    ("CYCLE93(35, 60, 10, 4, 0, 0, 0, 0, 0, 0.4, 0.4, 0, 0, 2, 0, 5, 0)", GroovingTool(3.0, 0.4)),  # RCI = r
+    ("CYCLE93(35, 60, 10, 4, 0, 0, 0, 0, 0, 1.5, 2, 0, 0, 2, 0, 5, 0)", GroovingTool(3.0, 0.4)),  # RCI > r
+    ("CYCLE93(35, 60, 10, 4, 0, 10, 20, 1, -1, 0.5, 0.6, 0.1, 0.1, 2, 0, 1, 0)", GroovingTool(3.0, 0.4)),
+    ("CYCLE93(35, 60, 10, 4, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 5, 0)", GroovingTool(3.0, 0.0)),  # sharp blade
+    ("CYCLE93(35, 60, 10, 4, 90, 0, 0, 0, 0, 0.5, 0.5, 0, 0, 2, 0, 2, 0)", GroovingTool(3.0, 0.3)),  # face
+])
+def test_a_groove_whose_corners_the_blade_reaches_has_no_warning(call, tool):
+    assert texts(Cycle93.parse(call), tool) == []
+
+
+def test_a_base_radius_smaller_than_the_blades_leaves_material():
+    call = Cycle93.parse("CYCLE93(35, 60, 10, 4, 0, 0, 0, 0, 0, 0.2, 0, 0, 0, 2, 0, 5, 0)")
+    assert texts(call, GroovingTool(3.0, 0.4)) == [
+        "CYCLE93: 0.03 mm² up to 0.20 mm deep at base corner 1 cannot be reached by a 3 mm flat blade (r0.4)",
+        "CYCLE93: 0.03 mm² up to 0.40 mm deep at base corner 2 cannot be reached by a 3 mm flat blade (r0.4)",
+    ]
+
+
+def test_inch_program_says_square_inches_and_inches():
+    call = Cycle93.parse("CYCLE93(1.4, 2.4, 1.2, 1, 12, 15, 16, 0, 0, -0.08, -0.08, 0.04, 0.04, 0.4, 0, 5, 0)")
+    state = MachineState(x=1.6, z=2.6, feed=0.008, feed_per_rev=True, metric=False)
+    (text,) = [t for t in texts(call, GroovingTool(0.2, 0.0), state)]
+    # The seed at 1/25 scale with a 0.2 in (5.08 mm) sharp blade: 4 decimals in inches.
+    assert text == ("CYCLE93: 0.0031 in² up to 0.0314 in deep at base corner 2 cannot be reached by a 0.2 in flat "
+                    "blade (r0)")
+
+
+def test_small_noise_is_not_reported():
+    # The arcs of a large base radius are chords in the profile: the blade's
+    # corner resting on them must not warn.
+    call = Cycle93.parse("CYCLE93(35, 60, 30, 10, 0, 0, 0, 0, 0, 2, 2, 0, 0, 5, 0, 5, 0)")
+    assert unreachable_regions(call.geometry(Settings(tool=GroovingTool(5.0, 0.4)))) == []
+    assert REACH_TOLERANCE_MM == 0.001
+
+
+# ---------------------------------------------------------------- against the simulation
+
+
+def _band(geo, u_from, u_to):
+    """The columns u_from..u_to of the groove frame, as a shapely (z, x) polygon."""
+    vs = [v for _u, v in geo.final_top]
+    lo, hi = min(vs) - 5.0, max(vs) + 5.0
+    return Polygon([(z, x) for x, z in (geo.frame.point(u, v) for u, v in
+                                         ((u_from, lo), (u_to, lo), (u_to, hi), (u_from, hi)))])
+
+
+def _thickness(geo, left, u):
+    """Length of the plunge-axis line at column u through ``left`` (shapely (z, x))."""
+    vs = [v for _u, v in geo.final_top]
+    a, b = geo.frame.point(u, min(vs) - 5.0), geo.frame.point(u, max(vs) + 5.0)
+    return left.intersection(LineString([(a[1], a[0]), (b[1], b[0])])).length
+
+
+def assert_left_is_what_is_warned(call, tool, tol=0.001):
+    """The material the simulated moves leave in the finished groove is the
+    reported regions, area for area and depth for depth, and nothing else
+    thicker than tol."""
+    result, target, geo, _moves = simulated(call, tool)
+    left = result.remaining.intersection(target)
+    regions = unreachable_regions(geo)
+    label = (call.emit(), tool)
+    for region in regions:
+        band = _band(geo, region.u_from, region.u_to)
+        assert left.intersection(band).area == pytest.approx(region.area, abs=0.005 + 0.02 * region.area), (
+            region, label)
+        # Just inside: at a wall's own column the line would run along the wall.
+        at = min(max(region.at, region.u_from + 1e-6), region.u_to - 1e-6)
+        # Deepest at a wall, under the blade's corner: there the gap falls with the square root of the distance
+        # from the wall, which the simulated blade's polygon (chords of its corners) does not resolve.
+        slack = 0.003 if at == region.at else 0.01
+        assert _thickness(geo, left, at) == pytest.approx(region.depth, abs=slack), (region, label)
+    rest = left
+    for region in regions:
+        rest = rest.difference(_band(geo, region.u_from - tol, region.u_to + tol))
+    thick = rest.buffer(-tol / 2)
+    assert thick.is_empty or thick.area < 1e-9, (call.emit(), tool, thick.bounds)
+
+
+@pytest.mark.parametrize("tool", [GroovingTool(5.0, 0.4), GroovingTool(3.0, 0.4), GroovingTool(3.0, 0.0)])
+def test_seed_example_leaves_exactly_what_is_reported(tool):
+    assert_left_is_what_is_warned(SEED, tool)
+
+
+def test_face_groove_at_angc_45_leaves_exactly_what_is_reported():
+    call = Cycle93.parse(SEED_CALL.replace("30, 25, 12,", "30, 25, 45,").replace(", 5, 0)", ", 2, 0)"))
+    (wedge,) = [r for r in unreachable_regions(call.geometry(Settings(tool=GroovingTool(5.0, 0.4))))
+                if r.area > 1]
+    assert (wedge.corner, round(wedge.depth, 2), round(wedge.area, 2)) == (1, 2.27, 6.9)
+    assert_left_is_what_is_warned(call, GroovingTool(5.0, 0.4))
+
+
+@pytest.mark.parametrize("call, tool", [
+    # A chamfer at base corner 2 running straight into an edge radius: the blade's corner leaves a sliver.
+    ("CYCLE93(15, 0, 3.42, 0.8, 0, 0, 19.9, 0, 1, 0, -0.1, 0, 0, 0.3, 0, 13, 0)", GroovingTool(3.42, 0.4)),
+    # As wide as a sharp blade, with a base chamfer: the blade cannot get past it and leaves the whole floor.
+    ("CYCLE93(15, 0, 1.5, 0.8, 0, 0, 0, 0.1, 0.7, -0.39, 0, 0, 0, 0.3, 0, 3, 0)", GroovingTool(1.5, 0.0)),
+    # Steep contours (ANGC 152, 88.8): the corner's material stops at the contour line, the stock's top.
+    ("CYCLE93(30.31, 9.26, 4.57, 2.12, 152, 0, 23.6, 0.1, 0.1, 1.15, 0, 0, 0.12, 0.34, 0, 12, 2)",
+     GroovingTool(3.0, 0.0, reference="plus")),
+    ("CYCLE93(23.55, 0.15, 2.3, 7.83, 88.8, 0, 0, 0.32, -0.1, 0, 0, 0, 0, 0.3, 0, 15, 0)",
+     GroovingTool(1.8, 0.05, reference="plus")),
+    # Exactly the blade's width between two walls: only the blade flush with both reaches the floor.
+    ("CYCLE93(15, 0, 3.57, 0.8, 0, 0, 0, 0.1, 0, 0, 0, 0, 0, 0.3, 0, 11, 0)", GroovingTool(3.57, 0.05)),
+])
+def test_found_by_generated_grooves_leaves_exactly_what_is_reported(call, tool):
+    assert_left_is_what_is_warned(Cycle93.parse(call), tool)
