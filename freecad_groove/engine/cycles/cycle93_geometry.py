@@ -10,7 +10,7 @@ how the seed manual is read.
 import math
 from typing import TYPE_CHECKING, List, Optional, Tuple
 
-from ..envelope import Envelope, arc_points
+from ..envelope import Arc, Envelope, arc_points
 from ..moves import REFERENCE_PLUS, Move, feed, rapid
 from ..numbers import MAX_WORD, format_given, format_value
 from ..settings import Settings
@@ -137,22 +137,39 @@ class _Corner:
         else:
             self.length = 0.0
 
-    def points(self, tol=PATH_TOLERANCE):
+    def _arc_start(self):
+        """Where the corner's rounding or chamfer starts and ends (t_in, t_out),
+        and the centre of its arc."""
         v, a, b, length = self.vertex, self.a, self.b, self.length
-        if length <= 0:
-            return [v]
         t_in = (v[0] - length * a[0], v[1] - length * a[1])
         t_out = (v[0] + length * b[0], v[1] + length * b[1])
+        n = (-a[1], a[0]) if self.left else (a[1], -a[0])
+        r = self.value
+        return t_in, t_out, (t_in[0] + r * n[0], t_in[1] + r * n[1])
+
+    def points(self, tol=PATH_TOLERANCE):
+        """The corner as a polyline, its arc chorded to ``tol``."""
+        if self.length <= 0:
+            return [self.vertex]
+        t_in, t_out, c = self._arc_start()
         if self.value < 0:
             return [t_in, t_out]
         r = self.value
-        n = (-a[1], a[0]) if self.left else (a[1], -a[0])
-        c = (t_in[0] + r * n[0], t_in[1] + r * n[1])
         a0 = math.atan2(t_in[1] - c[1], t_in[0] - c[0])
         sweep = self.turn if self.left else -self.turn
         # Material-side bumps (right turns) get a tangent polygon outside the
         # arc, bowls get chords inside it: both err toward more material.
         return arc_points(c, r, a0, a0 + sweep, outside=not self.left, tol=tol)
+
+    def element(self) -> Tuple[List[Point], Optional[Arc]]:
+        """The corner exactly: its vertex alone, or the two ends of its chamfer
+        or arc, and the arc (None for a vertex or a chamfer)."""
+        if self.length <= 0:
+            return [self.vertex], None
+        t_in, t_out, c = self._arc_start()
+        if self.value < 0:
+            return [t_in, t_out], None
+        return [t_in, t_out], Arc(c, self.value, not self.left)
 
 
 class GrooveGeometry:
@@ -329,13 +346,11 @@ class GrooveGeometry:
         self.size.check()
         self.final_top = self._material_top(final)
         self.rough_top = self._material_top(self.rough_corners)
-        tool = self.tool
         for top in (self.final_top, self.rough_top):
             if any(b[0] < a[0] - FOLD_TOLERANCE for a, b in zip(top, top[1:])):
                 raise cycle93_error("call", None, "groove form wrong: the profile folds back on itself", ALARM_FORM)
-        self.final_env = Envelope(self.final_top, tool.width, tool.corner_radius, self._element_ends(final))
-        self.rough_env = Envelope(self.rough_top, tool.width, tool.corner_radius,
-                                  self._element_ends(self.rough_corners))
+        self.final_env = self._envelope(final, self.final_top)
+        self.rough_env = self._envelope(self.rough_corners, self.rough_top)
 
     def _rough_corners(self, p, final, sharp, tangents):
         """The roughing profile: flanks moved in by FAL2 (normal), base up by FAL1."""
@@ -398,13 +413,20 @@ class GrooveGeometry:
                     ALARM_FORM,
                 )
 
-    def _element_ends(self, corners):
-        """u of the points where one profile element meets the next."""
-        ends = [self.final_top[0][0], self.final_top[-1][0]]
+    def _envelope(self, corners, top):
+        """Where the blade may go over the profile of ``corners``, its arcs
+        staying arcs: the vertices where one element meets the next (with the
+        contour's ends of ``top``, the polyline of ``_material_top``) and the
+        arcs between them (keyed by the index of their first vertex)."""
+        points = [top[0]]
+        arcs = {}
         for c in corners:
-            pts = c.points()
-            ends += [pts[0][0], pts[-1][0]]
-        return ends
+            ends, arc = c.element()
+            if arc is not None:
+                arcs[len(points)] = arc
+            points.extend(ends)
+        points.append(top[-1])
+        return Envelope(_without_float_folds(points), self.tool.width, self.tool.corner_radius, arcs)
 
     def _material_top(self, corners):
         pts = []

@@ -6,8 +6,10 @@ What grows with the parameters:
   (tool width - 2 x corner radius) (WIDG, or DEPG through angled flanks);
 - the infeeds of each plunge: its depth over IDEP (DEPG or IDEP; ANGC when
   the contour's rise under the blade is deeper than DEPG);
-- the points of the contour passes: the chords of the profile's radii (RCO,
-  RCI) and of the blade's corner radius, PATH_TOLERANCE from the true arcs.
+- the points of the contour passes: the chords of the envelope's arcs (the
+  profile's radii RCO, RCI widened or narrowed by the blade's corner radius,
+  and the blade's corners rolling over the profile's vertices), PATH_TOLERANCE
+  from the true arcs, and the points where its pieces meet.
 
 Each count is arithmetic on the groove's corners (upper bounds, as floats, so
 that even an infinite count compares): nothing loops over a count, and the
@@ -15,33 +17,47 @@ check takes as long for IDEP 1e-300 as for IDEP 1.
 """
 
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Sequence
 
+from ..envelope_curves import outside_step
 from ..numbers import MAX_MOVES
 from .cycle93_constants import EPS, PATH_TOLERANCE, WIDTH_STEP_FACTOR, cycle93_error
 
 if TYPE_CHECKING:  # the geometry imports this module
-    from .cycle93_geometry import GrooveGeometry
+    from .cycle93_geometry import GrooveGeometry, _Corner
 
 # Moves besides the plunges and the contour passes: the approach (at most 3)
 # and the retreat (at most 3) with a margin.
 FRAME_MOVES = 8
-# Points a trace adds at element ends, wall steps and tangent points of one
-# profile (four corners give at most ten element ends, each seen from four
-# places on the blade), with a margin.
-TRACE_BREAKPOINTS = 100
-# The trace halves an interval until its chord is within the tolerance, so it
-# writes up to twice the chords an arc needs.
-TRACE_REFINEMENT = 2
+# A trace's envelope is the maximum of its contact curves (three for each
+# vertex of the profile, one or two for each line or arc): each curve gives
+# at most this many pieces, and each piece up to three points besides its
+# chords (its start, a wall's second point, the rounding up of its chords).
+PIECES_PER_CURVE = 4
+POINTS_PER_PIECE = 3
 
 
 def arc_chords(radius: float, turn: float, tol: float = PATH_TOLERANCE) -> float:
-    """Chords ``envelope.arc_points`` takes for ``turn`` radians of a
-    ``radius`` arc (0 without an arc); infinite when the step underflows."""
+    """Chords a trace takes for ``turn`` radians of a ``radius`` arc of the
+    envelope, on the safe side (a polygon outside it, 0 without an arc);
+    infinite when the step underflows."""
     if radius <= 0 or turn <= 0:
         return 0.0
-    step = 2 * math.acos(max(1 - tol / radius, -1.0))
+    step = outside_step(radius, tol)
     return math.ceil(turn / step) if step > 0 else math.inf
+
+
+def trace_points(corners: Sequence["_Corner"], blade_radius: float) -> float:
+    """An upper bound of the points of the traces over one profile (its four
+    corners between the contour's ends), however they split it."""
+    vertices = 2 + 3 * len(corners)  # the contour's ends; two ends and a bump's top a corner
+    elements = 1 + 2 * len(corners)
+    curves = 3 * vertices + 2 * elements
+    chords = 2 * vertices * arc_chords(blade_radius, math.pi / 2)  # a blade corner over a vertex
+    for c in corners:
+        if c.value > 0:
+            chords += arc_chords(c.value + blade_radius, c.turn)  # a bowl's R - r takes fewer
+    return chords + POINTS_PER_PIECE * PIECES_PER_CURVE * curves
 
 
 def plunge_count(lo: float, hi: float, width: float, radius: float) -> float:
@@ -82,13 +98,7 @@ class ExpansionSize:
         # Over, the infeeds, the chip-breaking retracts and re-entries, the
         # dwell, the free-off, out: 1 + n + 2 (n - 1) + 3.
         self.plunge_moves = self.plunges * (3 * self.infeeds + 2)
-        # The blade's corner rolls at most once over every turn of the profile.
-        turn = sum(c.turn for c in geo.final_corners)
-        blade = arc_chords(tool.corner_radius, turn)
-        self.contour_moves = sum(
-            TRACE_REFINEMENT * (sum(arc_chords(c.value, c.turn) + 2 for c in corners) + blade) + TRACE_BREAKPOINTS
-            for corners in (rough, geo.final_corners)
-        )
+        self.contour_moves = sum(trace_points(corners, tool.corner_radius) for corners in (rough, geo.final_corners))
         # Each of the (at most four) passes is split where it crosses a plunge position.
         self.contour_moves += 4 * self.plunges
         self.moves = FRAME_MOVES + self.plunge_moves + self.contour_moves
