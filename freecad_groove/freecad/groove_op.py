@@ -28,11 +28,14 @@ the face) and each of ``GrooveCount`` grooves:
    (links.py): the cylinder X = R + c and the planes Z = Zmax + c and
    Z = Zmin - c (R the model's largest radius, c the clearance: Retract,
    0 = 1 mm), moving one axis at a time. The first groove's link starts with
-   a single-axis retract from wherever the tool is: G0 X(R + c) when the
-   start point is on the cylinder or below the part, G0 Z(Zmax + c) when it
-   is beyond the +Z end (internal grooves).
-   The job's stock is not taken into account: the op assumes the part was
-   turned to the model's contour before grooving.
+   G0 to the safe start point (Xs, Zs) = (Rs + c, Zs_max + c), Rs and Zs_max
+   the largest radius and +Z end of the Job's stock and model together (the
+   model alone without stock), then one axis at a time: G0 Z along the
+   outside of the stock, then G0 X in, to a start point on the cylinder or
+   below the part; G0 X above the stock, then G0 Z down, to one beyond the
+   +Z end (internal and face grooves).
+   Apart from that the stock is not taken into account: the op assumes the
+   part was turned to the model's contour before grooving.
 
 The Path: a comment with the op's label (the base class), G18, then per
 groove a comment naming the face and the call, the link rapids (G0), and the
@@ -463,13 +466,15 @@ class ObjectGroove(PathOp.ObjectOp):
         settings = self.settings(obj)
         envelope = self.envelope(obj, job)
         feed = self.feed_mm_per_min(obj)
+        stock = getattr(getattr(job, "Stock", None), "Shape", None)
+        origin = envelope.safe_start(stock)
         plans = []
         for face in faces:
             for index in range(count):
                 call = self.cycle(obj, face, index)
                 previous = plans[-1] if plans else None
                 plans.append(plan_groove(face, index, self.position(obj, index), call, settings, envelope, feed,
-                                         previous))
+                                         previous, origin))
         return plans
 
     def plan_with(self, obj: object, values: dict) -> list[GroovePlan]:

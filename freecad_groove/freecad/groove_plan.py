@@ -54,7 +54,8 @@ class GroovePlan:
     start_on  where that start point is on the safe envelope: "side" (X = R + c),
               "top" (Z = Zmax + c) or "bottom" (Z = Zmin - c)
     link      G0 moves [LinkMove(x or None, z or None)] from the previous groove's
-              start point (for the first groove: from wherever the tool is) to ``start``
+              start point (for the first groove: a G0 to the op's safe start point
+              first, links.SafeEnvelope.safe_start) to ``start``
     moves     the engine's expansion of ``cycle`` from ``start``
     geometry  ``cycle.geometry(settings)``: the groove's profile (the preview draws it)
     warnings  the call's CycleWarnings (what it cannot do as programmed: allowances
@@ -192,15 +193,28 @@ def choose_start(face: GrooveFace, geometry: GrooveGeometry, call: Cycle93, sett
     )
 
 
+def blade_origin(origin: Point, call: Cycle93, settings: Settings) -> Point:
+    """The safe start point ``origin`` (where the blade's minus-side edge
+    stands: the whole blade is then outside the stock) in the words of the
+    op's reference corner: moved by the corner's offset along the groove's
+    axis, Z for longitudinal grooves and X for face grooves (as a post's
+    --reference-corner moves the words, posts/reference_corner.py)."""
+    offset = settings.tool.reference_offset
+    return (origin[0], origin[1] + offset) if call.kind()[0] else (origin[0] + offset, origin[1])
+
+
 def plan_groove(face: GrooveFace, index: int, position: float, call: Cycle93, settings: Settings,
-                envelope: SafeEnvelope, feed: Optional[float], previous: Optional[GroovePlan]) -> GroovePlan:
+                envelope: SafeEnvelope, feed: Optional[float], previous: Optional[GroovePlan],
+                origin: Optional[Point] = None) -> GroovePlan:
     """The plan of groove ``index`` on ``face`` (cut by ``call``), linked from
-    the ``previous`` groove's start point (None: the op's first groove)."""
+    the ``previous`` groove's start point (None: the op's first groove, linked
+    from ``origin``, the op's safe start point; None: from wherever the tool is)."""
     geometry = call.geometry(settings)
     check_on_face(face, geometry, index, position)
     start, start_on, moves = choose_start(face, geometry, call, settings, envelope, feed, index)
     if previous is None:
-        link = envelope.link(None, None, (start.x, start.z), start_on)
+        first_origin = None if origin is None else blade_origin(origin, call, settings)
+        link = envelope.link(None, None, (start.x, start.z), start_on, first_origin)
     else:
         link = envelope.link(previous.start_point, previous.start_on, (start.x, start.z), start_on)
     return GroovePlan(face, index, position, call, settings, start, start_on, link, moves, geometry,

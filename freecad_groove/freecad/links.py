@@ -8,6 +8,12 @@ off it to the next start point, one axis at a time. The envelope also tells
 whether a straight rapid passes through the model (in the XZ half plane at
 Y = 0, which is exact for bodies of revolution).
 
+The op starts at its safe start point, the lathe's counterpart of CAM's
+ClearanceHeight: the clearance outside the stock's (and model's) largest
+radius and beyond its +Z end. The first link leaves it along the outside of
+the stock and enters the stock's region only straight at the first groove's
+start point (over material the groove needs turned to the model anyway).
+
 FreeCAD layer: FreeCAD and Part only.
 """
 
@@ -164,6 +170,19 @@ class SafeEnvelope:
                 return True
         return False
 
+    def safe_start(self, stock: object) -> Point:
+        """The op's safe start point (x, z): the clearance outside the larger
+        of the stock's (a Part shape; None or null: no stock) and the model's
+        largest radius, and beyond the higher of their +Z ends (CAM's
+        ClearanceHeight is likewise derived from the stock's ZMax)."""
+        radius, z_max = self.model_radius, self.z_max
+        if stock is not None and not stock.isNull():
+            stock_radius = largest_radius(stock)
+            if stock_radius is not None:
+                radius = max(radius, stock_radius)
+                z_max = max(z_max, stock.BoundBox.ZMax)
+        return (radius + self.clearance, z_max + self.clearance)
+
     def _levels(self, ends: list) -> dict:
         """{surface: its level} for a link between ``ends`` [(point, on)]: a
         start point beyond the envelope moves its surface out to it."""
@@ -177,14 +196,23 @@ class SafeEnvelope:
         }
 
     def link(self, previous: Optional[Point], previous_on: Optional[str], target: Point,
-             target_on: str) -> list[LinkMove]:
+             target_on: str, origin: Optional[Point] = None) -> list[LinkMove]:
         """G0 moves along the envelope, one axis at a time, from ``previous``
-        (a start point on the envelope surface ``previous_on``; None: from
-        wherever the tool is) to ``target`` on the surface ``target_on``."""
+        (a start point on the envelope surface ``previous_on``) to ``target``
+        on the surface ``target_on``. ``previous`` None: the op's first link,
+        from ``origin`` (the safe start point, which its first move goes to
+        on both axes) or, without one, from wherever the tool is."""
+        if previous is None and origin is not None:
+            # leave the safe point outside the stock: beyond its +Z end for a
+            # start point beyond the part's +Z end, else outside its radius
+            previous, previous_on = origin, TOP if target_on == TOP else SIDE
+            moves = [LinkMove(*origin)]
+        else:
+            moves = []
         levels = self._levels([(previous, previous_on), (target, target_on)])
         writer = _LinkWriter(previous)
         for surface in _route(previous_on if previous is not None else None, target_on):
             writer.onto(surface, levels)
         writer.onto(target_on, levels, x=target[0], z=target[1])
         writer.go(x=target[0], z=target[1])
-        return writer.moves
+        return moves + writer.moves

@@ -18,6 +18,7 @@ import math
 import FreeCAD
 import Part
 import Path.Main.Job as PathJob
+import Path.Main.Stock as PathStock
 import pytest
 from parts import FACES, FEED_MM_MIN, face_name, make_shop, shaft_shape  # noqa: F401 - shaft_shape: test_posts uses it
 
@@ -118,12 +119,27 @@ def cycle93(axfa, axsa, typ, angc=0.0, **words):
     return Cycle93(axfa=axfa, axsa=axsa, angc=angc, typ=typ, **values)
 
 
-def first_link(start, on="side"):
-    """The first groove's link from wherever the tool is: one axis onto the
-    envelope (out to the safe radius, or beyond the part's +Z end for "top"),
-    then along it to ``start``."""
-    x, z = start
-    return [(x, None), (x, z)] if on == "side" else [(None, z), (x, z)]
+def safe_start(radius, z_max, clearance=1.0):
+    """The op's safe start point for a body of revolution of ``radius`` up to
+    ``z_max`` in a Job's default stock (its bounding box grown 1 mm: a square
+    of half side radius + 1 up to z_max + 1): the clearance outside the
+    square's corner radius and beyond its +Z face."""
+    return (math.hypot(radius + 1.0, radius + 1.0) + clearance, z_max + 1.0 + clearance)
+
+
+# The shaft's (R20, Z 0..60) in its default stock (X/Y -21..21, Z -1..61):
+# (21 * sqrt(2) + 1, 62).
+SAFE_START = safe_start(20.0, 60.0)
+
+
+def first_link(start, on="side", safe=SAFE_START):
+    """The first groove's link: to the safe start point (both axes), then
+    along the stock's outside one axis at a time and in to ``start``: for
+    "top" in X above the stock, then down in Z; else down in Z outside the
+    stock's radius (for "bottom" to the start point's level below the part),
+    then in X."""
+    (x, z), (sx, sz) = start, safe
+    return [(sx, sz), (x, sz), (x, z)] if on == "top" else [(sx, sz), (sx, z), (x, z)]
 
 
 TOOL = GroovingTool(BLADE, 0.2)  # tool_width 3, tool_corner_radius 0.2, the minus reference corner
@@ -149,14 +165,15 @@ def groove_path(link, call, start, tool=TOOL, feed=FEED_MM_S):
     return path
 
 
-def case_path(key, start=None, tool=TOOL, feed=FEED_MM_S, **words):
+def case_path(key, start=None, tool=TOOL, feed=FEED_MM_S, safe=SAFE_START, **words):
     """groove_path of the CASES groove ``key`` from its hand-worked start point
-    (or ``start``); ``words`` change its CYCLE93 call."""
+    (or ``start``) and the safe start point ``safe``; ``words`` change its
+    CYCLE93 call."""
     kw, _kind, axfa, axsa, angc, typ = CASES[key]
     words = dict(dict(widg=kw.get("width", 4.0), depg=kw.get("depth", 2.0), typ=typ), **words)
     call = cycle93(axfa, axsa, angc=angc, **words)
     start = STARTS[key] if start is None else start
-    return groove_path(first_link(start, "top" if key == "bore" else "side"), call, start, tool, feed)
+    return groove_path(first_link(start, "top" if key == "bore" else "side", safe), call, start, tool, feed)
 
 
 def assert_same_moves(actual, expected, tol=1e-6):
@@ -208,8 +225,8 @@ def test_path_in_model_coordinates(shop):
     plan, = op.Proxy.plan(op)
     # start point: 1 mm (Retract 0 = 1 mm) outside the model's largest radius, beside the groove
     assert (plan.start.x, plan.start.z, plan.start_on) == (pytest.approx(21.0), pytest.approx(22.0), "side")
-    # from wherever the tool is: out to the safe radius first, then along Z
-    assert plan.link == [(21.0, None), (21.0, 22.0)]
+    # from the safe start point down in Z outside the stock, then in X to the start point
+    assert plan.link == [SAFE_START, (SAFE_START[0], 22.0), (21.0, 22.0)]
 
 
 def test_internal_groove_enters_the_bore_from_its_open_end(shop):
@@ -218,8 +235,8 @@ def test_internal_groove_enters_the_bore_from_its_open_end(shop):
     assert plan.start_on == "top"
     assert plan.start.z == pytest.approx(61.0)  # 1 mm beyond the part's +Z end
     assert plan.start.x == pytest.approx(5.0)  # 1 mm inside the bore wall
-    # from wherever the tool is: beyond the part's +Z end first, then in X
-    assert plan.link == [(None, 61.0), (5.0, 61.0)]
+    # from the safe start point in X above the stock, then down in Z to the start point
+    assert plan.link == [SAFE_START, (5.0, 62.0), (5.0, 61.0)]
     feeds = [p for n, p in path_moves(op) if n == "G1"]
     assert max(p["X"] for p in feeds) == pytest.approx(7.5, abs=1e-9)
 
@@ -383,8 +400,13 @@ def test_spherical_and_toroidal_faces_do_not_break_grooves_elsewhere(doc):
                      position=5, width=4, depth=2, infeed=1, tool_width=3, tool_corner_radius=0.2)
     assert op_error(op) is None
     assert path_moves(op)
-    # the ball's top is Z70: the op's rapids stay out of it
-    assert max(words["Z"] for _n, words in path_moves(op) if "Z" in words) < 71.0 + 1e-9
+    # the ball's top is Z70: the op starts 1 mm beyond the default stock (the model's bounding box, which
+    # OCC makes loose around the torus, grown 1 mm), outside the radius of its corner, then stays out of the ball
+    stock = job.Stock.Shape.BoundBox
+    assert stock.ZMax == pytest.approx(71.0) and min(stock.XMax, stock.YMax) >= 22.0 + 1.0
+    first, *rest = path_moves(op)
+    assert first == ("G0", {"X": pytest.approx(math.hypot(stock.XMax, stock.YMax) + 1.0), "Z": pytest.approx(72.0)})
+    assert max(words["Z"] for _n, words in rest if "Z" in words) < 71.0 + 1e-9
     sphere = next(i + 1 for i, f in enumerate(shape.Faces) if isinstance(f.Surface, Part.Sphere))
     bad = make_groove(job, (shaft, "Face%d" % sphere))
     assert op_error(bad) == "Shaft.Face%d: a sphere face; grooves go on a cylinder, a cone or a plane square " \
@@ -478,10 +500,11 @@ def test_bore_open_toward_minus_z_is_entered_from_below(doc):
     assert plan.start.z == pytest.approx(-4.0)  # the 3 mm blade wholly 1 mm below the part
     assert plan.start.x == pytest.approx(5.0)
     _rapids_outside(op, part)
-    # out to the safe radius R21, below the part, in to the start point; the Job's own tool controller feeds at 0
+    # from the safe start point (the R20 x 50 body's default stock) down outside the stock to the start point's
+    # level below the part, in to the start point; the Job's own tool controller feeds at 0
     start = (5.0, -4.0)
-    expected = groove_path([(21.0, None), (21.0, -4.0), start], cycle93(6.0, 30.0, 7, depg=1.0), start,
-                           feed=DEFAULT_FEED_MM_S)
+    expected = groove_path(first_link(start, "bottom", safe_start(20.0, 50.0)), cycle93(6.0, 30.0, 7, depg=1.0),
+                           start, feed=DEFAULT_FEED_MM_S)
     assert_same_moves(path_moves(op), expected)
 
 
@@ -500,7 +523,8 @@ def test_face_groove_inside_a_recess_is_approached_along_z(doc):
     _rapids_outside(op, part)
     # a column over the first plunge (the blade's minus corner 3 inside the groove's outer edge R14.5)
     start = (14.5 - BLADE, 31.0)
-    expected = groove_path(first_link(start, "top"), cycle93(14.5, 25.0, 6, 90.0, widg=3.5), start,
+    expected = groove_path(first_link(start, "top", safe_start(20.0, 30.0)), cycle93(14.5, 25.0, 6, 90.0, widg=3.5),
+                           start,
                            feed=DEFAULT_FEED_MM_S)
     assert_same_moves(path_moves(op), expected)
     # the shoulder-like outer end face (R15..R20 at Z30) is reached radially
@@ -527,7 +551,8 @@ def test_steep_cone_takes_a_face_groove(doc):
     _rapids_outside(op, part)
     # on the safe cylinder R31, 1 mm above the cone where the blade (R23..26) plunges first: at R23
     start = (31.0, 10 + (30 - 23) * TAN_30 + 1.0)
-    expected = groove_path(first_link(start), cycle93(26.0, 10 + 4 * TAN_30, 6, 120.0), start, feed=DEFAULT_FEED_MM_S)
+    expected = groove_path(first_link(start, safe=safe_start(30.0, 10 + h)), cycle93(26.0, 10 + 4 * TAN_30, 6, 120.0),
+                           start, feed=DEFAULT_FEED_MM_S)
     assert_same_moves(path_moves(op), expected)
 
 
@@ -558,6 +583,47 @@ def test_one_op_on_several_faces_links_along_the_envelope(shop):
     assert plans[1].link == [(21.0, 61.0), (21.0, plans[1].start.z)]
 
 
+def _replace_stock(shop, stock):
+    """Put ``stock`` (a new Job stock object, or None: no stock) in the shop's Job in place of the default one."""
+    doc, _shaft, job, _tc = shop
+    old = job.Stock
+    job.Stock = stock
+    doc.removeObject(old.Name)
+    doc.recompute()
+
+
+@pytest.mark.parametrize("key", ["cylinder", "shoulder", "left_end", "bore"])
+def test_the_op_starts_at_the_safe_point_and_leaves_it_outside_the_stock(shop, key):
+    """A bar R25 from Z-1 to Z65 (5 mm over the R20 x Z0..60 shaft's radius and +Z end): the first move is a rapid
+    to the safe start point 1 mm (the clearance) outside the bar and beyond its end, X26 Z66; the link rapids from
+    there stay out of the bar but the last, which enters it straight at the first groove's start point."""
+    doc, _shaft, job, _tc = shop
+    placement = FreeCAD.Placement(V(0, 0, -1), FreeCAD.Rotation())
+    _replace_stock(shop, PathStock.CreateCylinder(job, 25.0, 66.0, placement))
+    op = groove(shop, key)
+    assert op_error(op) is None, op_error(op)
+    assert_same_moves(path_moves(op)[:1], [("G0", {"X": 26.0, "Z": 66.0})])
+    plan = op.Proxy.plan(op)[0]
+    link = [tuple(step) for step in plan.link]
+    assert link == first_link(STARTS[key], "top" if key == "bore" else "side", (26.0, 66.0))
+    bar = SafeEnvelope([job.Stock.Shape], 1.0)
+    assert bar.model_radius == pytest.approx(25.0) and (bar.z_min, bar.z_max) == (pytest.approx(-1), pytest.approx(65))
+    for a, b in zip(link, link[1:-1]):
+        assert not bar.hits(a, b), (a, b)
+
+
+def test_safe_start_point_from_the_stock_and_model():
+    """1 mm (the clearance) outside the larger radius and beyond the higher +Z end of stock and model; without
+    stock (CAM's ops need one, the envelope does not): the model's, the envelope's corner."""
+    envelope = SafeEnvelope([shaft_shape()], 1.0)
+    assert envelope.safe_start(None) == (pytest.approx(R_SAFE), pytest.approx(Z_TOP))
+    assert envelope.safe_start(Part.Shape()) == (pytest.approx(R_SAFE), pytest.approx(Z_TOP))
+    bar = Part.makeCylinder(25.0, 66.0, V(0, 0, -1))
+    assert envelope.safe_start(bar) == (pytest.approx(26.0), pytest.approx(66.0))
+    short = Part.makeCylinder(19.0, 50.0)  # thinner and shorter than the model: the model's corner
+    assert envelope.safe_start(short) == (pytest.approx(R_SAFE), pytest.approx(Z_TOP))
+
+
 @pytest.mark.parametrize("key", sorted(CASES))
 def test_plus_reference_corner(shop, key):
     doc, shaft, job, tc = shop
@@ -566,8 +632,12 @@ def test_plus_reference_corner(shop, key):
     assert op_error(op) is None, op_error(op)
     (_c, settings, _st), = op.Proxy.cycles(op)
     assert settings.tool.reference == "plus"
-    expected = case_path(key, start=PLUS_STARTS[key], tool=GroovingTool(BLADE, 0.2, "plus"), ang2=5.0, rci1=0.3,
-                         fal1=0.1, fal2=0.1)
+    # the blade's minus-side edge at the safe start point: the plus corner's words 3 (the blade) further along
+    # the groove's axis, Z for longitudinal grooves, X for face grooves
+    sx, sz = SAFE_START
+    safe = (sx + BLADE, sz) if key in ("shoulder", "left_end") else (sx, sz + BLADE)
+    expected = case_path(key, start=PLUS_STARTS[key], tool=GroovingTool(BLADE, 0.2, "plus"), safe=safe, ang2=5.0,
+                         rci1=0.3, fal1=0.1, fal2=0.1)
     assert_same_moves(path_moves(op), expected)
     _rapids_outside(op, shaft)
 

@@ -11,9 +11,11 @@ FreeCAD 1.0 opens the document, reports that it cannot restore the bit's
 proxy, and keeps the bit's Width and CornerRadius, which the op reads).
 """
 
+import math
 import os
 
 import FreeCADGui
+import PathScripts.PathUtils as PathUtils
 import pytest
 from gui_helpers import open_panel, process, screenshot, task_button, version, wait_for
 from PySide import QtGui
@@ -63,7 +65,17 @@ def test_the_op_recomputes_to_the_path_it_saved(saved):
     assert op_error(op) is None, op_error(op)
     assert any(name == "G1" for name, _words in path_commands(op))
     # 2 deep in infeeds of 1: each plunge breaks the chip once and, since
-    # issue 9, rapids back down its slot after it; the rest is as saved.
+    # issue 9, rapids back down its slot after it. Since issue 10 the path
+    # starts at the safe start point, 1 mm (the clearance) outside the radius
+    # of the saved Job's stock (its box's corner) and beyond its +Z end, and
+    # comes down in Z outside it to the start point's Z before moving in X,
+    # where bfb45ff's went out to X21 from wherever the tool was. The rest is
+    # as saved.
+    assert path[3:5] == [("G0", {"X": 21.0}), ("G0", {"X": 21.0, "Z": 22.5})]
+    stock = PathUtils.findParentJob(op).Stock.Shape
+    safe_x = round(max(math.hypot(v.X, v.Y) for v in stock.Vertexes) + 1.0, 6)
+    safe_z = round(stock.BoundBox.ZMax + 1.0, 6)
+    path[3:4] = [("G0", {"X": safe_x, "Z": safe_z}), ("G0", {"X": safe_x, "Z": 22.5})]
     now = path_commands(op)
     assert without_chip_break_reentries(now) == path
     assert len(now) > len(path)
