@@ -144,6 +144,14 @@ def roomy_task_panel():
     process()
 
 
+def close_shop(doc):
+    """The end of a GUI fixture: its task dialog (if open) and its document closed."""
+    FreeCADGui.Control.closeDialog()
+    process()
+    FreeCAD.closeDocument(doc.Name)
+    process()
+
+
 def make_gui_shop(name, feed="120 mm/min"):
     """(doc, job, model): the stepped shaft of tests/freecad/parts.py in a new
     document, in a Job made as CAM's GUI makes it (with its view provider);

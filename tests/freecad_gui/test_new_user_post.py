@@ -14,7 +14,7 @@ import os
 import FreeCAD
 import FreeCADGui
 import pytest
-from gui_helpers import make_gui_shop, open_panel, process, start_groove_command, task_button, wait_for
+from gui_helpers import close_shop, make_gui_shop, open_panel, process, start_groove_command, task_button, wait_for
 from PySide import QtGui
 
 from freecad_groove.freecad.groove_op import op_error
@@ -47,10 +47,7 @@ def new_job():
     doc, job, model = make_gui_shop("NewUser", feed=None)
     report_view().clear()
     yield doc, job, model
-    FreeCADGui.Control.closeDialog()
-    process()
-    FreeCAD.closeDocument(doc.Name)
-    process()
+    close_shop(doc)
 
 
 def no_traceback(step):

@@ -12,6 +12,7 @@ import Part
 import pytest
 from gui_helpers import (  # noqa: E402
     choose,
+    close_shop,
     make_gui_shop,
     open_panel,
     process,
@@ -52,10 +53,7 @@ def shop():
     doc, job, model = make_gui_shop("GrooveGui")
     show_part(doc)
     yield doc, job, model
-    FreeCADGui.Control.closeDialog()
-    process()
-    FreeCAD.closeDocument(doc.Name)
-    process()
+    close_shop(doc)
 
 
 def ops(job):
