@@ -47,7 +47,7 @@ from .groove_plan import GroovePlan
 from .groove_properties import DERIVED, PROPERTIES
 from .links import LinkMove
 
-FORMAT = 1  # of the saved data; a new format never reads an old one
+FORMAT = 2  # of the saved data (2: a plan keeps its retreat); a new format never reads an old one
 # Property types left out of an object's fingerprint: outputs (Path), shapes
 # (digested on their own), the proxy, expressions (their results are values).
 SKIPPED_TYPES = ("Part::PropertyPartShape", "Path::PropertyPath", "App::PropertyPythonObject",
@@ -147,7 +147,7 @@ def _plan_data(plan: GroovePlan, faces: list) -> list:
         faces.append(face)
     return [faces.index(face), plan.index, plan.position, _fields(plan.cycle), _fields(plan.start), plan.start_on,
             [list(step) for step in plan.link], [list(move) for move in plan.moves],
-            [[w.cycle, w.parameter, w.message] for w in plan.warnings]]
+            [[w.cycle, w.parameter, w.message] for w in plan.warnings], [list(step) for step in plan.retreat]]
 
 
 def pack(plans: list[GroovePlan], stamp: str) -> str:
@@ -190,9 +190,9 @@ def unpack(text: str, stamp: Optional[str] = None) -> Optional[list[GroovePlan]]
     faces = [GrooveFace(**dict(face, start=tuple(face["start"]), end=tuple(face["end"]))) for face in data["faces"]]
     settings = [_settings(s) for s in data["settings"]]
     plans = []
-    for k, (face, index, position, cycle, start, start_on, link, moves, warnings) in enumerate(data["plans"]):
+    for k, (face, index, position, cycle, start, start_on, link, moves, warnings, retreat) in enumerate(data["plans"]):
         plans.append(GroovePlan(
             faces[face], index, position, Cycle93(**cycle), settings[k if len(settings) > 1 else 0],
             MachineState(**start), start_on, [LinkMove(*step) for step in link], [Move(*move) for move in moves],
-            None, [CycleWarning(*w) for w in warnings]))
+            [LinkMove(*step) for step in retreat], None, [CycleWarning(*w) for w in warnings]))
     return plans
