@@ -46,11 +46,13 @@ from .widgets import (
     ERROR_LABEL,
     WARNING_LABEL,
     QuantityFields,
+    ScaledPicture,
     add_error_label,
     add_label,
     child,
     connect_changed,
     fill_combo,
+    fit_narrow_docks,
     load_form,
     mark_invalid,
     mark_warned,
@@ -58,12 +60,11 @@ from .widgets import (
     select_data,
     show_error,
     show_warnings,
-    svg_pixmap,
 )
 
 translate = FreeCAD.Qt.translate
 
-DIAGRAM_SIZE = (320, 151)  # px: the groove picture (groove_section.svg is 360 x 170)
+DIAGRAM_SIZE = (360, 170)  # px: the groove picture at most (groove_section.svg is 360 x 170)
 PREVIEW_DELAY_MS = 20  # coalesces the signals of one edit into one re-plan
 
 # (widget name, op property): quantity fields (Gui::QuantitySpinBox)
@@ -78,14 +79,15 @@ GROOVE_QUANTITIES = (
 CORNERS = ("EdgeCorner1", "EdgeCorner2", "BaseCorner1", "BaseCorner2")
 
 # Enumeration texts as shown (translated); the op stores the untranslated value.
+# Short: a combo box is as wide as its longest text, and the page must fit 1.0's narrow dock.
 CORNER_TYPE_TEXT = {
     "None": FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "None"),
     "Radius": FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Radius"),
     "Chamfer": FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Chamfer"),
 }
 CHAMFER_MEASURE_TEXT = {
-    groove_op.CHAMFER_MEASURES[0]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Chamfer length (CHF)"),
-    groove_op.CHAMFER_MEASURES[1]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Leg length (CHR)"),
+    groove_op.CHAMFER_MEASURES[0]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Length (CHF)"),
+    groove_op.CHAMFER_MEASURES[1]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Leg (CHR)"),
 }
 
 
@@ -137,11 +139,8 @@ class GroovePage(PathOpGui.TaskPanelPage):
         for name in ("edgeCorner1Type", "edgeCorner2Type", "baseCorner1Type", "baseCorner2Type"):
             fill_combo(child(form, name), CORNER_TYPE_TEXT)
         fill_combo(form.chamferMeasure, CHAMFER_MEASURE_TEXT)
-        diagram = child(form, "diagram")
-        diagram.setPixmap(svg_pixmap(os.path.join(PANELS, "groove_section.svg"), DIAGRAM_SIZE[0], DIAGRAM_SIZE[1]))
-        # The picture never sets the page's width: in a narrow task dock its sides are cut, not the fields.
-        diagram.setSizePolicy(QtGui.QSizePolicy.Ignored, QtGui.QSizePolicy.Fixed)
-        diagram.setAlignment(QtCore.Qt.AlignCenter)
+        # The picture follows the dock's width (never sets it): whole, smaller in a narrow dock.
+        self.diagram = ScaledPicture(child(form, "diagram"), os.path.join(PANELS, "groove_section.svg"), *DIAGRAM_SIZE)
         # The message goes first: the page is taller than the task view.
         error = child(form, ERROR_LABEL)
         error.parentWidget().layout().removeWidget(error)
@@ -370,6 +369,11 @@ class GrooveTaskPanel(PathOpGui.TaskPanel):
             at = self.form.index(op_form)
             reversed_order = at == 0 and len(self.form) > 1
             self.form.insert(at + 1 if reversed_order else at, page.form)
+
+    def setupUi(self):
+        super().setupUi()
+        for page in self.featurePages:  # FreeCAD's own pages too, now filled (1.1's tool controller editor)
+            fit_narrow_docks(page.form)
 
     @property
     def valid(self) -> bool:

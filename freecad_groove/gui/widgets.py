@@ -37,15 +37,61 @@ def load_form(name: str) -> object:
     return form
 
 
+FIELD_SAMPLE = "00.00 mm"  # a field always shows this much text whole
+FIELD_FRAME = 30  # px: a spin box's frame, margins and up/down buttons beside its text
+BUTTON_PADDING = 16  # px: a push button's frame and margins beside its text
+COMBO_CHARS = 12  # a long combo box's own width, in characters
+WRAP_WIDER_THAN = 200  # px: a label whose one line is wider than this wraps
+
+
 def fit_narrow_docks(form: object) -> None:
-    """Let a page fit the task dock's default width: a spin box's size hint
-    is the text of its largest value with the unit (wider than any real
-    value), so spin boxes take the width their row leaves instead; labels
-    wrap (the message labels already do)."""
+    """Let a page fit the task dock's default width (FreeCAD 1.0's combo
+    view is the narrowest). Idempotent: the panel runs it again on FreeCAD's
+    own pages once they are filled.
+
+    A spin box's size hint is the text of its largest value with the unit
+    (wider than any real value), so wide spin boxes take the width their row
+    leaves, but never less than FIELD_SAMPLE; a form's label goes above its field when
+    both do not fit side by side; long one-line labels wrap; push buttons may
+    shrink to their text (the style's 80 px minimum makes a row of three wider
+    than the dock)."""
     for box in form.findChildren(QtGui.QAbstractSpinBox):
-        box.setSizePolicy(QtGui.QSizePolicy.Ignored, box.sizePolicy().verticalPolicy())
+        least = text_width(box, FIELD_SAMPLE) + FIELD_FRAME
+        if box.sizeHint().width() > least or box.sizePolicy().horizontalPolicy() == QtGui.QSizePolicy.Ignored:
+            box.setSizePolicy(QtGui.QSizePolicy.Ignored, box.sizePolicy().verticalPolicy())
+            box.setMinimumWidth(least)
     for layout in form.findChildren(QtGui.QFormLayout):
         layout.setRowWrapPolicy(QtGui.QFormLayout.WrapLongRows)
+    for label in form.findChildren(QtGui.QLabel):
+        if label.text() and not label.wordWrap() and label.sizeHint().width() > WRAP_WIDER_THAN:
+            label.setWordWrap(True)
+    for button in form.findChildren(QtGui.QPushButton):
+        needed = text_width(button, button.text()) + BUTTON_PADDING
+        if button.text() and needed < button.sizeHint().width():
+            button.setMinimumWidth(needed)
+    for combo in form.findChildren(QtGui.QComboBox):
+        if combo.sizeHint().width() > WRAP_WIDER_THAN:
+            fit_combo(combo)
+    for view in form.findChildren(QtGui.QAbstractItemView):  # FreeCAD's face list would stay 256 px wide
+        view.setSizePolicy(QtGui.QSizePolicy.Expanding, view.sizePolicy().verticalPolicy())
+
+
+def fit_combo(combo: object) -> None:
+    """A combo box with long texts (a tool controller's name) as wide as its
+    row allows: its own width is that of COMBO_CHARS characters at most
+    (longer texts are elided in the box, whole in its list)."""
+    longest = max([len(combo.itemText(i)) for i in range(combo.count())] + [1])
+    combo.setMinimumContentsLength(min(longest, COMBO_CHARS))
+    combo.setSizeAdjustPolicy(QtGui.QComboBox.AdjustToMinimumContentsLengthWithIcon)
+    combo.setSizePolicy(QtGui.QSizePolicy.Expanding, combo.sizePolicy().verticalPolicy())
+
+
+def text_width(widget: object, text: str) -> int:
+    """Width in px of ``text`` in the widget's font."""
+    metrics = widget.fontMetrics()
+    if hasattr(metrics, "horizontalAdvance"):
+        return metrics.horizontalAdvance(text)
+    return metrics.width(text)
 
 
 def child(form: object, name: str) -> object:
@@ -63,6 +109,36 @@ def svg_pixmap(path: str, width: int, height: int) -> object:
     QtSvg.QSvgRenderer(path).render(painter)
     painter.end()
     return pixmap
+
+
+class ScaledPicture(QtCore.QObject):
+    """Draws an SVG into a QLabel at the label's width, at most ``width`` x
+    ``height`` px and keeping that ratio: the picture never sets the page's
+    width and, in a narrow dock, shrinks instead of losing its sides."""
+
+    def __init__(self, label: object, path: str, width: int, height: int):
+        super().__init__(label)
+        self.label, self.path, self.size, self.drawn = label, path, (width, height), None
+        label.setSizePolicy(QtGui.QSizePolicy.Ignored, QtGui.QSizePolicy.Fixed)
+        label.setMinimumSize(0, 0)
+        label.setAlignment(QtCore.Qt.AlignCenter)
+        label.installEventFilter(self)
+        self.draw(width)
+
+    def eventFilter(self, watched: object, event: object) -> bool:
+        if event.type() == QtCore.QEvent.Resize:
+            self.draw(watched.width())
+        return False
+
+    def draw(self, available: int) -> None:
+        """Render the picture as wide as ``available`` px allow (no change: nothing to do)."""
+        width = max(1, min(int(available), self.size[0]))
+        if width == self.drawn:
+            return
+        self.drawn = width
+        height = max(1, round(width * self.size[1] / self.size[0]))
+        self.label.setPixmap(svg_pixmap(self.path, width, height))
+        self.label.setFixedHeight(height)
 
 
 def fill_combo(combo: object, texts: dict) -> None:
