@@ -343,6 +343,11 @@ class GrooveTaskPanel(PathOpGui.TaskPanel):
     while the groove is invalid."""
 
     def __init__(self, obj, deleteOnReject, opPage, selectionFactory):
+        # Before CAM's panel shows the op and hides the model and stock: that marks the document modified.
+        self.gui_document = FreeCADGui.getDocument(obj.Document.Name)
+        self.was_modified = self.gui_document.Modified
+        self.looks_before = document_looks(obj.Document)
+        self.applied = False  # Apply wrote the panel's values into the op
         super().__init__(obj, deleteOnReject, opPage, selectionFactory)
         self.groove_page = opPage
         tool_page = ToolPage(obj, obj.Proxy.opFeatures(obj))
@@ -404,13 +409,42 @@ class GrooveTaskPanel(PathOpGui.TaskPanel):
     def accept(self, resetEdit=True):
         if self._refuse():
             return False
+        unchanged = not self.isDirty() and self._left_alone()
         super().accept(resetEdit)
+        self._keep_unmodified(unchanged)
         return True
 
+    def reject(self, resetEdit=True):
+        unchanged = self._left_alone()
+        result = super().reject(resetEdit)
+        self._keep_unmodified(unchanged)
+        return result
+
     def clicked(self, button):
-        if button == QtGui.QDialogButtonBox.Apply and self._refuse():
-            return
+        if button == QtGui.QDialogButtonBox.Apply:
+            if self._refuse():
+                return
+            self.applied = self.applied or self.isDirty()
         super().clicked(button)
+
+    def _left_alone(self) -> bool:
+        """An existing op, and nothing applied: the panel wrote nothing into it."""
+        return not self.deleteOnReject and not self.applied
+
+    def _keep_unmodified(self, unchanged: bool) -> None:
+        """A document that was saved stays unmodified when the panel changed
+        nothing in it: CAM's panel changes only the Visibility of the op, model,
+        stock and Job while it is open, which is not worth asking to save.
+        Called once the panel is closed: every object must be shown or hidden
+        as before, and no object added (a grooving tool controller)."""
+        if unchanged and not self.was_modified and document_looks(self.gui_document.Document) == self.looks_before:
+            self.gui_document.Modified = False
+
+
+def document_looks(doc: object) -> dict:
+    """{object name: whether it is shown} of every object of ``doc``."""
+    return {o.Name: bool(o.ViewObject.Visibility) if getattr(o, "ViewObject", None) is not None else None
+            for o in doc.Objects}
 
 
 class ViewProvider(PathOpGui.ViewProvider):
