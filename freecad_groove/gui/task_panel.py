@@ -98,6 +98,8 @@ class BaseGeometryPage(PathOpGui.TaskPanelBaseGeometryPage):
         form = super().getForm()
         self.kind_label = add_label(form, "grooveKind")
         add_error_label(form)
+        # Now: FreeCAD's task view sets its minimum width from the pages once, when it shows them.
+        fit_narrow_docks(form)
         return form
 
     def supportsEdges(self):
@@ -397,6 +399,7 @@ class GrooveTaskPanel(PathOpGui.TaskPanel):
 
     def modifyStandardButtons(self, buttonBox):
         super().modifyStandardButtons(buttonBox)
+        fit_narrow_docks(buttonBox)  # OK, Cancel, Apply: three 80 px buttons are wider than 1.0's dock
         self.update_buttons()
 
     def _refuse(self):

@@ -40,7 +40,9 @@ def load_form(name: str) -> object:
 FIELD_SAMPLE = "00.00 mm"  # a field always shows this much text whole
 FIELD_FRAME = 30  # px: a spin box's frame, margins and up/down buttons beside its text
 BUTTON_PADDING = 16  # px: a push button's frame and margins beside its text
-COMBO_CHARS = 12  # a long combo box's own width, in characters
+COMBO_WIDE = 110  # px: a combo box wider than this (a tool controller's name) may elide
+COMBO_CHARS = 8  # its own width then, in characters
+FORM_ROW = 190  # px: a form row in a group box of 1.0's default combo view
 WRAP_WIDER_THAN = 200  # px: a label whose one line is wider than this wraps
 
 
@@ -51,8 +53,8 @@ def fit_narrow_docks(form: object) -> None:
 
     A spin box's size hint is the text of its largest value with the unit
     (wider than any real value), so wide spin boxes take the width their row
-    leaves, but never less than FIELD_SAMPLE; a form's label goes above its field when
-    both do not fit side by side; long one-line labels wrap; push buttons may
+    leaves, but never less than FIELD_SAMPLE; a form's labels go above its
+    fields when a row does not fit 1.0's dock; long one-line labels wrap; push buttons may
     shrink to their text (the style's 80 px minimum makes a row of three wider
     than the dock)."""
     for box in form.findChildren(QtGui.QAbstractSpinBox):
@@ -61,16 +63,18 @@ def fit_narrow_docks(form: object) -> None:
             box.setSizePolicy(QtGui.QSizePolicy.Ignored, box.sizePolicy().verticalPolicy())
             box.setMinimumWidth(least)
     for layout in form.findChildren(QtGui.QFormLayout):
-        layout.setRowWrapPolicy(QtGui.QFormLayout.WrapLongRows)
+        choose_form_rows(layout)
     for label in form.findChildren(QtGui.QLabel):
         if label.text() and not label.wordWrap() and label.sizeHint().width() > WRAP_WIDER_THAN:
             label.setWordWrap(True)
     for button in form.findChildren(QtGui.QPushButton):
         needed = text_width(button, button.text()) + BUTTON_PADDING
+        if not button.icon().isNull():
+            needed += button.iconSize().width() + BUTTON_PADDING // 2
         if button.text() and needed < button.sizeHint().width():
             button.setMinimumWidth(needed)
     for combo in form.findChildren(QtGui.QComboBox):
-        if combo.sizeHint().width() > WRAP_WIDER_THAN:
+        if combo.sizeHint().width() > COMBO_WIDE:
             fit_combo(combo)
     for view in form.findChildren(QtGui.QAbstractItemView):  # FreeCAD's face list would stay 256 px wide
         view.setSizePolicy(QtGui.QSizePolicy.Expanding, view.sizePolicy().verticalPolicy())
@@ -84,6 +88,24 @@ def fit_combo(combo: object) -> None:
     combo.setMinimumContentsLength(min(longest, COMBO_CHARS))
     combo.setSizeAdjustPolicy(QtGui.QComboBox.AdjustToMinimumContentsLengthWithIcon)
     combo.setSizePolicy(QtGui.QSizePolicy.Expanding, combo.sizePolicy().verticalPolicy())
+
+
+def choose_form_rows(layout: object) -> None:
+    """A form's rows side by side (label, field) where both fit in FORM_ROW
+    px, else every label above its field. Chosen once, not as the dock
+    resizes: Qt's WrapLongRows leaves a field it moved under its label where
+    the wider layout put it, cut off at the right, and wrapping labels get
+    squeezed letter by letter. A form whose .ui asks for WrapAllRows keeps it."""
+    if layout.rowWrapPolicy() == QtGui.QFormLayout.WrapAllRows:
+        return
+    labels = fields = 0
+    for row in range(layout.rowCount()):
+        label = layout.itemAt(row, QtGui.QFormLayout.LabelRole)
+        field = layout.itemAt(row, QtGui.QFormLayout.FieldRole)
+        labels = max(labels, label.sizeHint().width() if label is not None else 0)
+        fields = max(fields, field.minimumSize().width() if field is not None else 0)
+    side_by_side = labels + max(layout.horizontalSpacing(), 6) + fields <= FORM_ROW
+    layout.setRowWrapPolicy(QtGui.QFormLayout.DontWrapRows if side_by_side else QtGui.QFormLayout.WrapAllRows)
 
 
 def text_width(widget: object, text: str) -> int:
