@@ -138,6 +138,7 @@ class JobCheck:
     part: Geometry
     remaining: Geometry
     ops: list[OpCheck]
+    notes: list[str] = field(default_factory=list)  # where the sections came from, ops not checked
 
     @property
     def ok(self) -> bool:
@@ -146,7 +147,7 @@ class JobCheck:
     def summary(self) -> str:
         head = "Turning check: stock %.4f mm^2, part %.4f mm^2, %d op(s): %s" % (
             area(self.stock), area(self.part), len(self.ops), "ok" if self.ok else "PROBLEMS")
-        return "\n".join([head] + [op.summary() for op in self.ops])
+        return "\n".join([head] + ["  " + note for note in self.notes] + [op.summary() for op in self.ops])
 
     __str__ = summary
 
@@ -222,7 +223,8 @@ def check_op(op: OpInput, stock: Geometry, part: Geometry, tol: float = DEFAULT_
     return check, after
 
 
-def check_ops(ops: list[OpInput], stock: Geometry, model: Geometry, tol: float = DEFAULT_TOL) -> JobCheck:
+def check_ops(ops: list[OpInput], stock: Geometry, model: Geometry, tol: float = DEFAULT_TOL,
+              notes: Optional[list[str]] = None) -> JobCheck:
     """Sweep ``ops`` in order over ``stock`` (each op starts from what the
     previous ones left) and judge them against ``model``, the part's section."""
     grooves = [groove_region(run.region) for op in ops if not op.error for run in op.grooves]
@@ -231,4 +233,4 @@ def check_ops(ops: list[OpInput], stock: Geometry, model: Geometry, tol: float =
     for op in ops:
         check, standing = check_op(op, standing, part, tol)
         checks.append(check)
-    return JobCheck(stock, part, standing, checks)
+    return JobCheck(stock, part, standing, checks, list(notes or []))
