@@ -54,7 +54,7 @@ class MachiningTime:
         return self.feed + self.dwell + self.rapid
 
     def describe(self) -> str:
-        rapid = "rapids %.1f s" % self.rapid if self.rapids_timed else "rapids not timed (no rapid rates)"
+        rapid = "rapids %.1f s" % self.rapid if self.rapids_timed else "rapids not timed: no rapid rates"
         return "%.1f s (feeds %.1f s, dwells %.1f s, %s)" % (self.total, self.feed, self.dwell, rapid)
 
 
