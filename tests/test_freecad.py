@@ -123,6 +123,7 @@ def test_freecad_level_suite(label, tmp_path):
 def test_freecad_gui_suite(label, tmp_path):
     """tests/freecad_gui/ in FreeCAD's GUI under Xvfb; screenshots to out/gui-screenshots/<label>/."""
     env = {"FREECAD_GROOVE_RESULT": "gui-result.json", "FREECAD_GROOVE_SCREENSHOTS": "screenshots"}
+    env.update(freecad_shapely.provide(tmp_path))  # for the Check turning command (test_turning_view.py)
     result, summary, output, returncode = run_in_freecad(label, tmp_path, env, GUI_COMMAND, timeout=GUI_TIMEOUT)
     publish_screenshots(tmp_path / "screenshots", label)
     check_result(result, summary, returncode, output)

@@ -9,7 +9,6 @@ sharp base corners, 0.2^2 (1 - pi/4) each. shapely comes from the host
 """
 
 import math
-import os
 import sys
 
 import FreeCAD
@@ -17,35 +16,18 @@ import Path
 import Path.Main.Stock as PathStock
 import pytest
 from parts import face_name, make_shop
+from pylib import require_shapely
 
 from freecad_groove import make_groove, verify_job
 from freecad_groove.freecad.turning_check import SHAPELY_MISSING, TurningCheckError
 
-
-def _add_pylib():
-    """The host's shapely for this Python (appended: a FreeCAD's own shapely comes first)."""
-    pylib = os.environ.get("FREECAD_GROOVE_PYLIB")
-    if pylib:
-        folder = os.path.join(os.environ.get("FREECAD_GROOVE_SHARE", ""), pylib, "cp%d%d" % sys.version_info[:2])
-        if os.path.isdir(folder) and folder not in sys.path:
-            sys.path.append(folder)
-
-
-_add_pylib()
 FILLET = 0.2**2 * (1 - math.pi / 4)
 GROOVE = dict(width=4, depth=2, infeed=1, tool_width=3, tool_corner_radius=0.2)
 
 
 @pytest.fixture
 def shapely():
-    try:
-        import shapely
-    except ImportError:
-        if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
-            pytest.fail("shapely is not importable in this FreeCAD (FREECAD_GROOVE_PYLIB=%r)"
-                        % os.environ.get("FREECAD_GROOVE_PYLIB"))
-        pytest.skip("shapely is not importable in this FreeCAD (the host could not provide it)")
-    return shapely
+    return require_shapely()
 
 
 @pytest.fixture
