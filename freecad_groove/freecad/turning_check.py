@@ -40,7 +40,8 @@ from .cutting import cutting_data
 from .units import feed_mm_per_min, length_mm
 
 if TYPE_CHECKING:
-    from ..verify.turning import JobCheck
+    from ..verify.machining_time import Feeds
+    from ..verify.turning import JobCheck, OpInput
 
 SECTION_DEFLECTION = 1e-4  # mm: largest chord error of the model's discretized section
 SHAPELY_MISSING = (
@@ -130,7 +131,7 @@ def path_runs(op: object) -> list[list[tuple[int, Move]]]:
     return runs
 
 
-def _feeds(op: object) -> object:
+def _feeds(op: object) -> Feeds:
     from ..verify.machining_time import Feeds
 
     cutting = cutting_data(op)
@@ -141,7 +142,7 @@ def _feeds(op: object) -> object:
                  rapid_x, rapid_z)
 
 
-def op_input(op: object) -> object:
+def op_input(op: object) -> OpInput:
     """The verify.turning.OpInput of Groove op ``op`` (its error when it cannot be checked)."""
     from ..verify.turning import GrooveRun, OpInput
     from .groove_op import op_error
