@@ -77,6 +77,10 @@ def test_a_groove_the_model_shows_is_judged_against_the_model():
     deeper = [(20.0, 25.0), (17.0, 25.0), (17.0, 21.0), (20.0, 21.0)]
     part = part_to_leave(model, [groove_region(deeper)])
     assert part.area == pytest.approx(model.area)
+    moves = [rapid(21, 21), feed(17, 21), rapid(21, 21), rapid(21, 22), feed(17, 22), rapid(21, 22)]
+    run = GrooveRun(moves, list(range(1, 7)), TOOL, MINUS_X, deeper)
+    check = check_ops([OpInput("Deeper", (21.0, 21.0), [run], FEEDS)], bar_section(20.0, 0.0, 50.0), model).ops[0]
+    assert check.gouge_depth == pytest.approx(1.0, abs=1e-3) and check.gouge_at[0] < 18.0
     plain = part_to_leave(shaft(), [groove_region(GROOVE)])
     assert plain.area == pytest.approx(50 * 20 - 8.0)
 
