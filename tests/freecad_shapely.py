@@ -38,7 +38,8 @@ def wheel(python, version):
     found = [f for f in os.listdir(folder) if f.startswith("shapely-%s-%s" % (version, tag)) and f.endswith(".whl")]
     if not found:
         platforms = [arg for p in PLATFORMS for arg in ("--platform", p)]
-        subprocess.run([sys.executable, "-m", "pip", "download", "-q", "--no-deps", "--only-binary=:all:",
+        subprocess.run([sys.executable, "-m", "pip", "download", "-q", "--retries", "1", "--timeout", "20", "--no-deps",
+                        "--only-binary=:all:",
                         "--python-version", python, *platforms, "-d", folder, "shapely==%s" % version],
                        capture_output=True, text=True, timeout=300)
         found = [f for f in os.listdir(folder) if f.startswith("shapely-%s-%s" % (version, tag))]
