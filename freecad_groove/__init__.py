@@ -14,3 +14,11 @@ def make_groove(*args, **kwargs):
     from .freecad.api import make_groove as _make_groove
 
     return _make_groove(*args, **kwargs)
+
+
+def verify_job(*args, **kwargs):
+    """The turning check of a CAM Job's Groove ops (needs FreeCAD and
+    shapely); see freecad_groove.freecad.turning_check.verify_job."""
+    from .freecad.turning_check import verify_job as _verify_job
+
+    return _verify_job(*args, **kwargs)

@@ -21,6 +21,7 @@ import re
 import shutil
 import sys
 
+import freecad_shapely
 import pytest
 import rs274
 from conftest import ROOT
@@ -108,6 +109,7 @@ def test_freecad_level_suite(label, tmp_path):
     with open(tmp_path / seed_case.HOST_MOVES_FILE, "w") as f:
         json.dump(seed_case.as_json(), f)
     env = {"FREECAD_GROOVE_RESULT": "result.json"}
+    env.update(freecad_shapely.provide(tmp_path))  # for the turning check (tests/freecad/test_turning_check.py)
     result, summary, output, returncode = run_in_freecad(label, tmp_path, env, FREECADCMD, [RUN_SUITE_CODE])
     check_result(result, summary, returncode, output)
     assert CROSS_CHECK in result["passed"], "%s: %s did not pass (skipped: %s)" % (
@@ -121,6 +123,7 @@ def test_freecad_level_suite(label, tmp_path):
 def test_freecad_gui_suite(label, tmp_path):
     """tests/freecad_gui/ in FreeCAD's GUI under Xvfb; screenshots to out/gui-screenshots/<label>/."""
     env = {"FREECAD_GROOVE_RESULT": "gui-result.json", "FREECAD_GROOVE_SCREENSHOTS": "screenshots"}
+    env.update(freecad_shapely.provide(tmp_path))  # for the Check turning command (test_turning_view.py)
     result, summary, output, returncode = run_in_freecad(label, tmp_path, env, GUI_COMMAND, timeout=GUI_TIMEOUT)
     publish_screenshots(tmp_path / "screenshots", label)
     check_result(result, summary, returncode, output)

@@ -12,6 +12,7 @@ the page class): keep them stable.
     tool_page.py   the panel's "Tool and coolant" page (grooving tool controller button)
     widgets.py     the Qt helpers the pages are built from (forms, fields, error labels)
     preview.py     the groove cross-section and toolpath drawn while editing
+    turning_view.py  the Check turning command: verify_job's section in the 3D view, figures in a task panel
 """
 
 import os
@@ -35,9 +36,10 @@ def register():
     import FreeCADGui
 
     from .. import hooks
-    from . import command
+    from . import command, turning_view
 
     FreeCADGui.addLanguagePath(TRANSLATIONS)
     FreeCADGui.updateLocale()
     command.register()
+    turning_view.register()
     hooks.view_provider_factory = _attach_view_provider

@@ -1,0 +1,117 @@
+"""verify_job(), the turning check, inside FreeCAD (1.1 and 1.0; run by tests/freecad/run_suite.py).
+
+The stepped shaft of parts.py (R20 at Z10..30) in a Job whose stock is a bar
+of its largest radius, R20 from Z0 to Z60, so that a groove in the R20
+cylinder removes exactly the groove: 4 wide and 2 deep (8 mm^2 of the half
+section) less what the blade's 0.2 mm corner radius cannot reach in its two
+sharp base corners, 0.2^2 (1 - pi/4) each. shapely comes from the host
+(tests/freecad_shapely.py, FREECAD_GROOVE_PYLIB) when FreeCAD lacks it.
+"""
+
+import math
+import sys
+
+import FreeCAD
+import Path
+import Path.Main.Stock as PathStock
+import pytest
+from parts import face_name, make_shop
+from pylib import require_shapely
+
+from freecad_groove import make_groove, verify_job
+from freecad_groove.freecad.turning_check import SHAPELY_MISSING, TurningCheckError
+
+FILLET = 0.2**2 * (1 - math.pi / 4)
+GROOVE = dict(width=4, depth=2, infeed=1, tool_width=3, tool_corner_radius=0.2)
+
+
+@pytest.fixture
+def shapely():
+    return require_shapely()
+
+
+@pytest.fixture
+def shop():
+    """(doc, shaft, job, tc) with the Job's stock a bar R20 from Z0 to Z60."""
+    doc = FreeCAD.newDocument("TurningCheckTest")
+    FreeCAD.setActiveDocument(doc.Name)
+    doc, shaft, job, tc = make_shop(doc)
+    old = job.Stock
+    job.Stock = PathStock.CreateCylinder(job, 20.0, 60.0, FreeCAD.Placement())
+    doc.removeObject(old.Name)
+    doc.recompute()
+    yield doc, shaft, job, tc
+    FreeCAD.closeDocument(doc.Name)
+
+
+def cylinder_groove(shop, **values):
+    values = {**GROOVE, "position": 5, **values}
+    _doc, shaft, job, _tc = shop
+    return make_groove(job, (shaft, face_name(shaft.Shape, "cylinder")), **values)
+
+
+def test_a_groove_removes_its_area_without_gouge(shop, shapely):
+    op = cylinder_groove(shop)
+    result = verify_job(shop[2])
+    check = result.ops[0]
+    assert check.label == op.Label and check.ok, result.summary()
+    assert check.removed == pytest.approx(8.0 - 2 * FILLET, abs=1e-3)
+    assert check.unreachable == pytest.approx(2 * FILLET, abs=1e-4)
+    assert check.unreachable == pytest.approx(check.reach_warning, abs=1e-4)  # the cycle's own reach warning
+    assert check.gouge_depth == 0 and check.leftover == 0 and not check.rapid_hits
+    assert "bar R20.000 from Z0.000 to Z60.000" in result.summary()
+
+
+def test_a_path_plunging_too_deep_shows_the_gouge_and_where(shop, shapely):
+    """The Path edited so that its plunges at Z21 reach X17, 1 mm below the groove's base R18."""
+    op = cylinder_groove(shop)
+    commands = []
+    for command in op.Path.Commands:
+        words = dict(command.Parameters)
+        if command.Name == "G1" and abs(words.get("X", 0) - 18.0) < 1e-9 and abs(words.get("Z", 0) - 21.0) < 1e-9:
+            words["X"] = 17.0
+        commands.append(Path.Command(command.Name, words))
+    op.Path = Path.Path(commands)
+    check = verify_job(shop[2]).ops[0]
+    assert not check.ok
+    assert check.gouge_depth == pytest.approx(1.0, abs=1e-3)
+    x, z = check.gouge_at
+    assert 17.0 <= x <= 18.0 and 21.0 <= z <= 24.0, check.gouge_at
+    assert check.summary().startswith(op.Label + ": PROBLEMS") and "GOUGE" in check.summary()
+
+
+@pytest.mark.parametrize("speeds, expected", [
+    # 3 mm at 0.01 mm/rev x 100 rpm = 1 mm/min: 180 s
+    (dict(spindle_speed=100), "00:03:00"),
+    # V = 10 m/min: rpm(x) = 10000 / (2 pi x) (below the 100 rpm limit from R15.9 out), so
+    # t = int_18^21 2 pi x / (0.01 * 10000) dx = pi (21^2 - 18^2) / 100 min = 220.54 s
+    (dict(surface_speed="10 m/min", max_spindle_speed=100), "00:03:41"),
+])
+def test_cycle_time_is_the_hand_computed_time(shop, shapely, speeds, expected):
+    """A groove as wide as the blade in one plunge: G0 X21 Z22, G1 X18 Z22 (from R20 + the 1 mm retract)."""
+    op = cylinder_groove(shop, width=3, infeed=2, feed_per_rev=0.01, **speeds)
+    feeds = [(c.Parameters["X"], c.Parameters["Z"]) for c in op.Path.Commands if c.Name == "G1"]
+    assert feeds == [(18.0, 22.0)]
+    check = verify_job(shop[2]).ops[0]
+    assert op.CycleTime == expected, check.summary()
+    assert shop[2].CycleTime == expected
+
+
+def test_an_op_with_an_error_is_named_not_checked(shop, shapely):
+    op = cylinder_groove(shop, position=50)  # past the face (Z10..30)
+    check = verify_job(shop[2]).ops[0]
+    assert check.error and "past the face" in check.error
+    assert check.summary().startswith("%s: not checked:" % op.Label)
+
+
+def test_without_shapely_one_clear_message(shop, monkeypatch):
+    cylinder_groove(shop)
+    monkeypatch.setitem(sys.modules, "shapely", None)  # import shapely raises ImportError
+    with pytest.raises(TurningCheckError) as error:
+        verify_job(shop[2])
+    assert str(error.value) == SHAPELY_MISSING and "python3-shapely" in SHAPELY_MISSING
+
+
+def test_not_a_job_is_one_clear_message(shop, shapely):
+    with pytest.raises(TurningCheckError, match="is not a CAM Job"):
+        verify_job(shop[1])
