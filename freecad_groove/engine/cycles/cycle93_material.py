@@ -73,20 +73,56 @@ class MaterialTop:
         inner = max(vs[i:j]) if j > i else -math.inf
         return max(inner, max(self._values(a)), max(self._values(b)))
 
-    def excess(self, blade: List[Point]) -> float:
+    def _columns(self, blade: List[Point], i: int, j: int) -> List[Tuple[float, float, float, float]]:
+        """(u, field just left of u, field just right of u, blade level at u)
+        at every breakpoint us[i:j] of the field and every point of ``blade``
+        (by increasing u, no two at the same u), in order of u: one walk along
+        both, no search per column. The field's points us[i:j] lie within the
+        blade's u-range."""
+        us, vs = self.us, self.vs
+        last = len(us)
+        out = []
+        fi, bi, nb = i, 0, len(blade)
+        while fi < j or bi < nb:
+            ub = blade[bi][0] if bi < nb else math.inf
+            uf = us[fi] if fi < j else math.inf
+            if uf <= ub:
+                u, k = uf, fi
+                while fi < j and us[fi] == u:
+                    fi += 1
+                left, right = vs[k], vs[fi - 1]
+            else:
+                u = ub
+                if 0 < fi < last:
+                    left = right = _interp(us[fi - 1], vs[fi - 1], us[fi], vs[fi], u)
+                else:
+                    left = right = math.inf  # outside the field: assume material
+            if ub == u:
+                g = blade[bi][1]
+                bi += 1
+            else:
+                (u0, v0), (u1, v1) = blade[bi - 1], blade[bi]
+                g = _interp(u0, v0, u1, v1, u)
+            out.append((u, left, right, g))
+        return out
+
+    def excess(self, blade: List[Point], enough: float = math.inf) -> float:
         """Highest stand of the field above the piecewise-linear ``blade``
         level (points by increasing u) strictly inside the blade's u-range
-        (SIDE_EPS in from its ends)."""
+        (SIDE_EPS in from its ends); the search stops once a stand above
+        ``enough`` is found."""
         a, b = blade[0][0] + SIDE_EPS, blade[-1][0] - SIDE_EPS
-        us, vs = self.us, self.vs
-        i, j = bisect_right(us, a), bisect_left(us, b)
         level = _Level(blade)
         best = max(self._values(a)[1] - level(a), self._values(b)[0] - level(b))
-        for k in range(i, j):
-            best = max(best, vs[k] - level(us[k]))
-        for u, v in blade:
+        if best > enough:
+            return best
+        us = self.us
+        i, j = bisect_right(us, a), bisect_left(us, b)
+        for u, left, right, g in self._columns(blade, i, j):
             if a < u < b:
-                best = max(best, max(self._values(u)) - v)
+                best = max(best, left - g, right - g)
+                if best > enough:
+                    return best
         return best
 
     def lower(self, blade: List[Point]) -> None:
@@ -96,14 +132,10 @@ class MaterialTop:
             return
         us, vs = self.us, self.vs
         i, j = bisect_left(us, a), bisect_right(us, b)  # the points replaced
-        level = _Level(blade)
-        cols = sorted(set(us[i:j]) | {p[0] for p in blade})
         a_left, b_right = self._values(a)[0], self._values(b)[1]
         new = [(a, a_left)]
         prev = None  # (u, field just right of u, blade at u)
-        for u in cols:
-            left, right = self._values(u)
-            g = level(u)
+        for u, left, right, g in self._columns(blade, i, j):
             if prev is not None:
                 d0, d1 = prev[1] - prev[2], left - g
                 if d0 * d1 < 0:  # field and blade cross between two columns
@@ -128,7 +160,7 @@ class MaterialTop:
         more than MATERIAL_MARGIN of material."""
         if self._highest(min(p[0], q[0]), max(p[0], q[0]) + width) <= min(p[1], q[1]) + CUT_NOISE:
             return False  # the field lies below the blade's front: nothing to work out
-        return self.excess(_swept(p, q, width, radius)) > CUT_NOISE
+        return self.excess(_swept(p, q, width, radius), CUT_NOISE) > CUT_NOISE
 
     def clear_move(self, p: Point, q: Point, width: float, radius: float) -> None:
         """What a blade fed from p to q has cleared (at least)."""
@@ -182,27 +214,33 @@ def _corner(radius: float) -> Tuple[Point, ...]:
     return tuple(pts)
 
 
-def _outline(t: float, v: float, width: float, radius: float) -> List[Point]:
-    """The blade's front at position (t, v), inside the real blade."""
+@lru_cache(maxsize=64)
+def _front(width: float, radius: float) -> Tuple[Tuple[Point, ...], Tuple[float, ...]]:
+    """The blade's front as (du, dv) from its front-left point, inside the
+    real blade (corner polygons from ``_corner``), by increasing u, and the
+    slopes of its edges (increasing: the front is convex)."""
     if radius <= 0:
-        return [(t, v), (t + width, v)]
-    corner = _corner(radius)
-    left = [(t + du, v + dv) for du, dv in corner]
-    return left + [(t + width - du, v + dv) for du, dv in reversed(corner)]
+        pts = [(0.0, 0.0), (width, 0.0)]
+    else:
+        corner = _corner(radius)
+        pts = list(corner) + [(width - du, dv) for du, dv in reversed(corner)]
+    pts = [pt for k, pt in enumerate(pts) if k == 0 or pt[0] > pts[k - 1][0]]  # corners meeting at a point
+    slopes = [(v1 - v0) / (u1 - u0) for (u0, v0), (u1, v1) in zip(pts, pts[1:])]
+    return tuple(pts), tuple(slopes)
 
 
 def _swept(p: Point, q: Point, width: float, radius: float) -> List[Point]:
-    """The lower convex hull of the outline at p and at q: the lowest the
-    (convex) outline reaches over each column while it moves from p to q."""
-    hull: List[Point] = []
-    for pt in sorted(_outline(*p, width, radius) + _outline(*q, width, radius)):
-        while len(hull) >= 2:
-            (u0, v0), (u1, v1) = hull[-2], hull[-1]
-            if (u1 - u0) * (pt[1] - v0) - (v1 - v0) * (pt[0] - u0) <= 0:
-                hull.pop()  # not a left turn: hull[-1] lies above the chord
-            else:
-                break
-        if hull and hull[-1][0] == pt[0]:
-            continue  # same column, higher: not on the lower hull
-        hull.append(pt)
-    return hull
+    """The lowest the (convex) blade front reaches over each column while it
+    moves from p to q: the lower boundary of the front's Minkowski sum with
+    the segment pq, i.e. the front's edges at p that fall more steeply than
+    pq, the segment, then the rest of the front at q."""
+    front, slopes = _front(width, radius)
+    if q[0] < p[0]:
+        p, q = q, p
+    du, dv = q[0] - p[0], q[1] - p[1]
+    if du <= 0:  # straight along v: the lower of the two fronts
+        t, v = p[0], min(p[1], q[1])
+        return [(t + a, v + b) for a, b in front]
+    k = bisect_right(slopes, dv / du)  # the edges before the segment
+    (tp, vp), (tq, vq) = p, q
+    return [(tp + a, vp + b) for a, b in front[:k + 1]] + [(tq + a, vq + b) for a, b in front[k:]]
