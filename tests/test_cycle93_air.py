@@ -121,3 +121,13 @@ def test_skipping_air_leaves_what_full_passes_leave(text, tool):
     extra = difference(skipping, _remaining(call, tool, True))
     depth = depth_inside(extra, skipping, 0.0001)[0] if area(extra) > 1e-12 else 0.0
     assert depth <= cycle93_material.MATERIAL_MARGIN + 1e-4, depth
+
+
+def test_a_blade_as_wide_as_the_groove_still_takes_the_base_allowance():
+    """Each finishing pass of a groove exactly the blade's width is one point
+    (a plunge to the final base): it must still be fed when the allowance
+    stands there. Before, a one-point pass had no move to test and was
+    dropped, leaving the 0.05 mm base allowance standing."""
+    call = Cycle93.parse("CYCLE93(15, 0, 1.5, 0.8, 0, 0, 0, 0, 0, 0, 0, 0.05, 0, 0.3, 0, 1, 0)")
+    verdict, _moves = run(call, GroovingTool(1.5, 0.0), interpreter=False)
+    sim.assert_clean(verdict)

@@ -32,7 +32,11 @@ RAPID_FEED_RATIO = 100.0
 
 
 def _stretches(pts: List[Point], material: MaterialTop, width: float, radius: float) -> List[List[int]]:
-    """[first, last] point indexes of the runs of moves that cut something."""
+    """[first, last] point indexes of the runs of moves that cut something.
+    A trace of one point (a blade as wide as the opening) is a plunge to it:
+    [0, 0] when the blade's front there has material above it."""
+    if len(pts) == 1:
+        return [[0, 0]] if material.cuts(pts[0], pts[0], width, radius) else []
     runs: List[List[int]] = []
     for k, (p, q) in enumerate(zip(pts, pts[1:])):
         if material.cuts(p, q, width, radius):
@@ -83,6 +87,8 @@ def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, materia
             go("r", start[0], geo.clearance(start[0]))
             go("r", start[0], entry)
             go("f", *start)
+            if first == last:  # a plunge: what it cleared is the front at start
+                material.clear_move(start, start, w, r)
         for p, q in zip(pts[first:last], pts[first + 1:last + 1]):
             go("f", *q)
             material.clear_move(p, q, w, r)
