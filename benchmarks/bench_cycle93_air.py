@@ -49,7 +49,9 @@ ALL_FEATURES = ("all", dict(ang1=15.0, ang2=10.0, rco1=-0.5, rco2=1.0, rci1=1.0,
 
 
 class FullPasses:
-    """Stands in for MaterialTop: every pass move cuts, nothing is recorded."""
+    """Stands in for MaterialTop: every pass stretch cuts, nothing is recorded."""
+
+    passed = None
 
     def __init__(self, lo, hi, slope):
         pass
@@ -57,13 +59,13 @@ class FullPasses:
     def clear_slot(self, *args):
         pass
 
-    def clear_move(self, *args):
+    def note_pass(self, *args):
         pass
 
     def cuts(self, *args):
         return True
 
-    def excess(self, blade):
+    def stand(self, *args):
         return 0.0
 
 

@@ -537,7 +537,7 @@ class GrooveGeometry:
         mid = 0.5 * (ua + ub)
         for start in (ua, ub):
             pts = split_at(env.trace(start, mid, PATH_TOLERANCE), steps)
-            feed_where_material(self, pts, go, material)
+            feed_where_material(self, pts, go, material, steps, top, env, top is self.rough_top)
 
     def _leg_clear(self, u_from, u_to, level):
         """True when a blade moving along u at ``level`` stays above the contour."""

@@ -1,246 +1,276 @@
-"""What material a CYCLE93 expansion has left so far, so that the contour and
+"""What material the CYCLE93 plunges leave, exactly, so that the contour and
 finishing passes (steps 3 and 4) feed only where there is something to cut.
 
-The blade only moves paraxially and the profile is a function of u, so the
-material still standing is exactly what lies below a height field: the lowest
-level cleared in each column u of the groove frame. ``MaterialTop`` keeps an
-upper bound of it as a piecewise-linear function of u (vertical steps as two
-points at the same u), built from arithmetic on the moves, never a grid:
+The blade only moves paraxially and the profile is a function of u, so what
+stands after the plunges is everything below a height field over u: the
+lowest level the plunges cleared in each column, the contour line where they
+did not reach. Each plunge (with its free-off along the bottom) clears a slot
+whose floor is the blade's front outline at the plunge's bottom: a circular
+arc of the corner radius at each end and the flat front between them. The
+field is the lower envelope of those outlines and the contour line, built
+once per call from closed-form curves (``envelope_curves``: arcs stay arcs),
+no polygons and no grid.
 
-- it starts as the contour line;
-- a plunge slot lowers it to the blade's outline at the slot's bottom: flat
-  across the blade's front, each rounded corner as a polygon inscribed in its
-  arc, no further than ``MATERIAL_MARGIN`` from it (the polygon lies inside
-  the blade, so the bound stays an upper bound: more material is assumed,
-  never less);
-- a fed move of a contour pass lowers it to the lower hull of that outline
-  at both ends of the move (the blade is convex: it sweeps their hull).
+A pass is tested a stretch at a time (``cuts``): the blade swept along a
+convex chain of front positions (the lower hull of the stretch's points,
+which lies below the stretch, so its sweep holds the stretch's) has a lower
+outline made of the blade's arcs, its flat front and the chain's segments.
+Between the breakpoints of the field and of that outline their difference is
+monotone, convex, or concave with its peak where a field line has an arc's
+slope, so its highest value is found at a handful of points, exactly. Where
+the hull dips below the stretch (over a bump the blade rolls around), the
+outline is raised to the profile the blade's envelope keeps it on (the
+``floor``): the real blade never goes below it. Both only lower the outline
+under the real sweep, so a stretch found not to cut leaves at most
+MATERIAL_MARGIN (and the floor's chord tolerance) of material.
 
-A pass move cuts something when the field reaches into the region that
-outline sweeps. That region holds everything the real blade sweeps except a
-skin at most MATERIAL_MARGIN thick along its corners, so a move found to cut
-nothing would have taken at most that skin; and as the same outline clears
-and tests, a blade passing again where it has already been finds nothing.
-Everything is arithmetic on a few points per move, no grid.
+The passes' own cuts are not added to the field (it stays an upper bound of
+what stands): a finishing pass skips instead the stretches the roughing
+passes already ran on the same envelope (``note_pass``).
 """
 
 import math
 from bisect import bisect_left, bisect_right
-from functools import lru_cache
-from typing import List, Tuple
+from typing import List, Optional, Tuple
+
+from ..envelope import Envelope
+from ..envelope_curves import CAP, CUP, LINE, Curve, crossings, upper_envelope, value
+from .cycle93_constants import PATH_TOLERANCE
 
 Point = Tuple[float, float]
+Piece = Tuple[float, float, Curve]  # x from, x to, the curve (real levels, not negated)
 
-# Material thinner than this (mm or in) under a pass counts as already cut: the
-# corner polygons' distance from the arcs, a little over the passes' own path
-# tolerance (PATH_TOLERANCE) and half the 0.001 a program writes.
+# Material thinner than this (mm or in) under a stretch of a pass counts as
+# already cut: a little over the passes' own path tolerance (PATH_TOLERANCE)
+# and half the 0.001 a program writes; it also absorbs the float noise
+# between the plunges' bottoms and the passes' points (different computations).
 MATERIAL_MARGIN = 0.0005
-# The field standing less than this into the swept region is float noise (the
-# passes' points and the plunges' bottoms come from different computations).
-CUT_NOISE = 1e-6
+# How far the profile's polyline (its arcs chorded toward more material) may
+# stand above the profile the envelope keeps the blade on.
+FLOOR_TOL = PATH_TOLERANCE
 # A blade side within this of a wall only slides along it.
 SIDE_EPS = 1e-7
 
 
-def _interp(u0: float, v0: float, u1: float, v1: float, u: float) -> float:
-    if u1 - u0 <= 0:
-        return min(v0, v1)
-    return v0 + (v1 - v0) * (u - u0) / (u1 - u0)
-
-
 class MaterialTop:
-    """An upper bound of the material's top over u, lowered as the blade cuts."""
+    """The plunges' field over the columns [lo, hi]: the contour line (slope
+    ``slope``) lowered by each slot. Stored negated, as the upper envelope of
+    the negated curves (``envelope_curves`` builds upper envelopes)."""
 
     def __init__(self, lo: float, hi: float, slope: float) -> None:
-        self.us: List[float] = [lo, hi]
-        self.vs: List[float] = [slope * lo, slope * hi]
+        self.lo, self.hi = lo, hi
+        self._curves = [Curve(lo, hi, LINE, 0.0, 0.0, -slope)]
+        self._starts: List[float] = []
+        self._pieces: List[Optional[Curve]] = []
+        self.passed: Optional[Tuple[Envelope, float, float]] = None  # see note_pass
 
-    def _values(self, u: float) -> Tuple[float, float]:
-        """(value just left of u, value just right of u)."""
-        us, vs = self.us, self.vs
-        i, j = bisect_left(us, u), bisect_right(us, u)
-        if i < j:  # breakpoints at u itself
-            return vs[i], vs[j - 1]
-        if i == 0 or i >= len(us):
-            return math.inf, math.inf  # outside the field: assume material
-        v = _interp(us[i - 1], vs[i - 1], us[i], vs[i], u)
-        return v, v
-
-    def _highest(self, a: float, b: float) -> float:
-        """The field's highest value over [a, b]."""
-        us, vs = self.us, self.vs
-        i, j = bisect_right(us, a), bisect_left(us, b)
-        inner = max(vs[i:j]) if j > i else -math.inf
-        return max(inner, max(self._values(a)), max(self._values(b)))
-
-    def _columns(self, blade: List[Point], i: int, j: int) -> List[Tuple[float, float, float, float]]:
-        """(u, field just left of u, field just right of u, blade level at u)
-        at every breakpoint us[i:j] of the field and every point of ``blade``
-        (by increasing u, no two at the same u), in order of u: one walk along
-        both, no search per column. The field's points us[i:j] lie within the
-        blade's u-range."""
-        us, vs = self.us, self.vs
-        last = len(us)
-        out = []
-        fi, bi, nb = i, 0, len(blade)
-        while fi < j or bi < nb:
-            ub = blade[bi][0] if bi < nb else math.inf
-            uf = us[fi] if fi < j else math.inf
-            if uf <= ub:
-                u, k = uf, fi
-                while fi < j and us[fi] == u:
-                    fi += 1
-                left, right = vs[k], vs[fi - 1]
-            else:
-                u = ub
-                if 0 < fi < last:
-                    left = right = _interp(us[fi - 1], vs[fi - 1], us[fi], vs[fi], u)
-                else:
-                    left = right = math.inf  # outside the field: assume material
-            if ub == u:
-                g = blade[bi][1]
-                bi += 1
-            else:
-                (u0, v0), (u1, v1) = blade[bi - 1], blade[bi]
-                g = _interp(u0, v0, u1, v1, u)
-            out.append((u, left, right, g))
-        return out
-
-    def excess(self, blade: List[Point], enough: float = math.inf) -> float:
-        """Highest stand of the field above the piecewise-linear ``blade``
-        level (points by increasing u) strictly inside the blade's u-range
-        (SIDE_EPS in from its ends); the search stops once a stand above
-        ``enough`` is found."""
-        a, b = blade[0][0] + SIDE_EPS, blade[-1][0] - SIDE_EPS
-        level = _Level(blade)
-        best = max(self._values(a)[1] - level(a), self._values(b)[0] - level(b))
-        if best > enough:
-            return best
-        us = self.us
-        i, j = bisect_right(us, a), bisect_left(us, b)
-        for u, left, right, g in self._columns(blade, i, j):
-            if a < u < b:
-                best = max(best, left - g, right - g)
-                if best > enough:
-                    return best
-        return best
-
-    def lower(self, blade: List[Point]) -> None:
-        """The field becomes min(field, blade) over the blade's u-range."""
-        a, b = blade[0][0], blade[-1][0]
-        if b <= a:
-            return
-        us, vs = self.us, self.vs
-        i, j = bisect_left(us, a), bisect_right(us, b)  # the points replaced
-        a_left, b_right = self._values(a)[0], self._values(b)[1]
-        new = [(a, a_left)]
-        prev = None  # (u, field just right of u, blade at u)
-        for u, left, right, g in self._columns(blade, i, j):
-            if prev is not None:
-                d0, d1 = prev[1] - prev[2], left - g
-                if d0 * d1 < 0:  # field and blade cross between two columns
-                    t = d0 / (d0 - d1)
-                    new.append((prev[0] + t * (u - prev[0]), prev[1] + t * (left - prev[1])))
-            new.append((u, min(left, g) if u > a else min(right, g)))
-            if a < u < b and right != left:
-                new.append((u, min(right, g)))
-            prev = (u, right, g)
-        new.append((b, b_right))
-        new = _simplified(new)
-        us[i:j] = [p[0] for p in new]
-        vs[i:j] = [p[1] for p in new]
-
-    # -- what the blade sweeps -------------------------------------------------
     def clear_slot(self, u_from: float, u_to: float, bottom: float, width: float, radius: float) -> None:
         """A plunge to ``bottom`` at u_from, freed off along the bottom to u_to."""
-        self.clear_move((u_from, bottom), (u_to, bottom), width, radius)
+        a, b = min(u_from, u_to), max(u_from, u_to)
+        r, top = radius, -(bottom + radius)
+        for lo, hi, curve in (
+            (a, a + r, Curve(a, a + r, CAP, a + r, top, r)),
+            (a + r, b + width - r, Curve(a + r, b + width - r, LINE, a, -bottom, 0.0)),
+            (b + width - r, b + width, Curve(b + width - r, b + width, CAP, b + width - r, top, r)),
+        ):
+            if hi > lo:
+                self._curves.append(curve)
+        self._starts = []
 
-    def cuts(self, p: Point, q: Point, width: float, radius: float) -> bool:
-        """Whether a blade fed from p to q (front-edge positions (u, v)) cuts
-        more than MATERIAL_MARGIN of material."""
-        if self._highest(min(p[0], q[0]), max(p[0], q[0]) + width) <= min(p[1], q[1]) + CUT_NOISE:
-            return False  # the field lies below the blade's front: nothing to work out
-        return self.excess(_swept(p, q, width, radius), CUT_NOISE) > CUT_NOISE
+    def note_pass(self, env: Envelope, lo: float, hi: float) -> None:
+        """The roughing contour passes ran over blade positions [lo, hi] on
+        ``env`` (``cycle93_passes.covered`` reads it)."""
+        self.passed = (env, lo, hi)
 
-    def clear_move(self, p: Point, q: Point, width: float, radius: float) -> None:
-        """What a blade fed from p to q has cleared (at least)."""
-        self.lower(_swept(p, q, width, radius))
+    def _field(self) -> Tuple[List[float], List[Optional[Curve]]]:
+        if not self._starts:
+            self._starts, self._pieces = upper_envelope(self._curves, self.lo, self.hi)
+        return self._starts, self._pieces
+
+    def cuts(self, chain: List[Point], width: float, radius: float, floor: List[Point]) -> bool:
+        """Whether the blade swept along the convex ``chain`` of front
+        positions, never below the material top ``floor`` (the profile its
+        envelope keeps it on), stands under more than MATERIAL_MARGIN of the
+        field."""
+        return self.exceeds(_sweep(chain, width, radius), floor, MATERIAL_MARGIN)
+
+    def stand(self, u: float, v: float, width: float) -> float:
+        """Highest stand of the field above level v over the columns (u, u + w),
+        SIDE_EPS in from both ends (its pieces are lines and cups: their ends
+        hold their tops)."""
+        starts, pieces = self._field()
+        a, b = u + SIDE_EPS, u + width - SIDE_EPS
+        k = max(bisect_right(starts, a) - 1, 0)
+        best = -math.inf
+        while k < len(pieces):
+            lo = max(starts[k], a)
+            if lo >= b:
+                break
+            hi = min(starts[k + 1], b) if k + 1 < len(starts) else b
+            if pieces[k] is not None:
+                best = max(best, -value(pieces[k], lo), -value(pieces[k], hi))
+            k += 1
+        return best - v
+
+    def exceeds(self, outline: List[Piece], floor: List[Point], limit: float) -> bool:
+        """Whether the field stands more than ``limit`` above the piecewise
+        ``outline`` raised to ``floor`` less FLOOR_TOL, strictly inside the
+        outline's columns (SIDE_EPS in from its ends). Between breakpoints of
+        field and outline the difference is monotone, convex, or concave with
+        its peak where a field line has an outline arc's slope; only where it
+        exceeds the limit is the floor brought in, piece by piece."""
+        starts, pieces = self._field()
+        a, b = outline[0][0] + SIDE_EPS, outline[-1][1] - SIDE_EPS
+        cuts = {x for piece in outline for x in piece[:2] if a < x < b}
+        cuts.update(x for x in starts[bisect_right(starts, a):bisect_right(starts, b)] if x < b)
+        xs = sorted(cuts.union((a, b)))
+        j = 0
+        for x0, x1 in zip(xs, xs[1:]):
+            mid = 0.5 * (x0 + x1)
+            while outline[j][1] <= mid and j + 1 < len(outline):
+                j += 1
+            field, low = pieces[max(bisect_right(starts, mid) - 1, 0)], outline[j][2]
+            if field is None:
+                continue
+            top = max(-value(field, x) - value(low, x) for x in _candidates(field, low, x0, x1))
+            if top > limit and _floored(field, low, floor, x0, x1, limit):
+                return True
+        return False
 
 
-class _Level:
-    """A piecewise-linear level by increasing u, evaluated at any u."""
-
-    def __init__(self, pts: List[Point]) -> None:
-        self.pts = pts
-        self.us = [p[0] for p in pts]
-
-    def __call__(self, u: float) -> float:
-        pts = self.pts
-        k = bisect_left(self.us, u)
-        if k < len(pts) and pts[k][0] == u:
-            return pts[k][1]
-        if k == 0 or k >= len(pts):
-            return math.inf
-        (u0, v0), (u1, v1) = pts[k - 1], pts[k]
-        return _interp(u0, v0, u1, v1, u)
-
-
-def _simplified(pts: List[Point]) -> List[Point]:
-    """``pts`` without repeated points and without inner points on the straight
-    line through their neighbours (the field stays small), ends kept."""
-    out = [pts[0]]
-    for k in range(1, len(pts)):
-        p = pts[k]
-        if p == out[-1]:
-            continue
-        if len(out) >= 2 and k < len(pts) - 1:
-            (u0, v0), (u1, v1) = out[-2], out[-1]
-            if u0 < u1 < p[0] and abs((v1 - v0) * (p[0] - u0) - (p[1] - v0) * (u1 - u0)) <= 1e-12 * (p[0] - u0):
-                out.pop()
-        out.append(p)
+def _candidates(field: Curve, low: Curve, x0: float, x1: float) -> List[float]:
+    """The ends of (x0, x1) and, inside, where the field (a line) has the slope
+    of the outline (an arc): field minus outline peaks at one of them."""
+    out = [x0, x1]
+    if field.kind == LINE and low.kind == CUP:
+        m = -field.size  # the field is stored negated
+        x = low.cu + low.size * m / math.sqrt(1.0 + m * m)
+        if x0 < x < x1:
+            out.append(x)
     return out
 
 
-@lru_cache(maxsize=64)
-def _corner(radius: float) -> Tuple[Point, ...]:
-    """The blade's left rounded corner as (du, dv) from its front-left point
-    (t, v): a polygon inscribed in the arc, from the side (0, r) to the front
-    (r, 0), each side at most MATERIAL_MARGIN from the arc."""
-    ratio = min(MATERIAL_MARGIN / radius, 1.0)
-    sides = max(1, math.ceil(0.25 * math.pi / math.acos(1.0 - ratio)))
-    step = 0.5 * math.pi / sides
-    pts = [(radius - radius * math.cos(k * step), radius - radius * math.sin(k * step)) for k in range(sides + 1)]
-    pts[0], pts[-1] = (0.0, radius), (radius, 0.0)
-    return tuple(pts)
+def _floored(field: Curve, low: Curve, floor: List[Point], x0: float, x1: float, limit: float) -> bool:
+    """Whether the field stands more than ``limit`` over (x0, x1) above the
+    outline ``low`` raised to the floor less FLOOR_TOL: per straight piece of
+    the floor, at the candidates and where the outline crosses the floor."""
+    i = max(bisect_right(floor, (x0, math.inf)) - 1, 0)
+    while i + 1 < len(floor) and floor[i][0] < x1:
+        (u0, v0), (u1, v1) = floor[i], floor[i + 1]
+        i += 1
+        y0, y1 = max(u0, x0), min(u1, x1)
+        if u1 <= u0 or y1 <= y0:
+            continue
+        line = Curve(u0, u1, LINE, u0, v0 - FLOOR_TOL, (v1 - v0) / (u1 - u0))
+        for y in _candidates(field, low, y0, y1) + [y for y in crossings(low, line) if y0 < y < y1]:
+            if -value(field, y) - max(value(low, y), value(line, y)) > limit:
+                return True
+    return False
 
 
-@lru_cache(maxsize=64)
-def _front(width: float, radius: float) -> Tuple[Tuple[Point, ...], Tuple[float, ...]]:
-    """The blade's front as (du, dv) from its front-left point, inside the
-    real blade (corner polygons from ``_corner``), by increasing u, and the
-    slopes of its edges (increasing: the front is convex)."""
-    if radius <= 0:
-        pts = [(0.0, 0.0), (width, 0.0)]
-    else:
-        corner = _corner(radius)
-        pts = list(corner) + [(width - du, dv) for du, dv in reversed(corner)]
-    pts = [pt for k, pt in enumerate(pts) if k == 0 or pt[0] > pts[k - 1][0]]  # corners meeting at a point
-    slopes = [(v1 - v0) / (u1 - u0) for (u0, v0), (u1, v1) in zip(pts, pts[1:])]
-    return tuple(pts), tuple(slopes)
+def _candidates(field: Curve, low: Curve, x0: float, x1: float) -> List[float]:
+    """The ends of (x0, x1) and, inside, where the field (a line) has the slope
+    of the outline (an arc): field minus outline peaks at one of them."""
+    out = [x0, x1]
+    if field.kind == LINE and low.kind == CUP:
+        m = -field.size  # the field is stored negated
+        x = low.cu + low.size * m / math.sqrt(1.0 + m * m)
+        if x0 < x < x1:
+            out.append(x)
+    return out
 
 
-def _swept(p: Point, q: Point, width: float, radius: float) -> List[Point]:
-    """The lowest the (convex) blade front reaches over each column while it
-    moves from p to q: the lower boundary of the front's Minkowski sum with
-    the segment pq, i.e. the front's edges at p that fall more steeply than
-    pq, the segment, then the rest of the front at q."""
-    front, slopes = _front(width, radius)
-    if q[0] < p[0]:
-        p, q = q, p
-    du, dv = q[0] - p[0], q[1] - p[1]
-    if du <= 0:  # straight along v: the lower of the two fronts
-        t, v = p[0], min(p[1], q[1])
-        return [(t + a, v + b) for a, b in front]
-    k = bisect_right(slopes, dv / du)  # the edges before the segment
-    (tp, vp), (tq, vq) = p, q
-    return [(tp + a, vp + b) for a, b in front[:k + 1]] + [(tq + a, vq + b) for a, b in front[k:]]
+def _floored(field: Curve, low: Curve, floor: List[Point], x0: float, x1: float, limit: float) -> bool:
+    """Whether the field stands more than ``limit`` over (x0, x1) above the
+    outline ``low`` raised to the floor less FLOOR_TOL: per straight piece of
+    the floor, at the candidates and where the outline crosses the floor."""
+    i = max(bisect_right(floor, (x0, math.inf)) - 1, 0)
+    while i + 1 < len(floor) and floor[i][0] < x1:
+        (u0, v0), (u1, v1) = floor[i], floor[i + 1]
+        i += 1
+        y0, y1 = max(u0, x0), min(u1, x1)
+        if u1 <= u0 or y1 <= y0:
+            continue
+        line = Curve(u0, u1, LINE, u0, v0 - FLOOR_TOL, (v1 - v0) / (u1 - u0))
+        for y in _candidates(field, low, y0, y1) + [y for y in crossings(low, line) if y0 < y < y1]:
+            if -value(field, y) - max(value(low, y), value(line, y)) > limit:
+                return True
+    return False
+
+
+def top_at(top: List[Point], x: float) -> Point:
+    """(level just left of x, just right of x) of a material top (points by
+    increasing u, a vertical step as two points at one u)."""
+    i = bisect_left(top, (x, -math.inf))
+    j = bisect_right(top, (x, math.inf))
+    if i < j:
+        return top[i][1], top[j - 1][1]
+    if i == 0 or i >= len(top):
+        return -math.inf, -math.inf
+    (u0, v0), (u1, v1) = top[i - 1], top[i]
+    v = v0 + (v1 - v0) * (x - u0) / (u1 - u0)
+    return v, v
+
+
+def _tangent(s: float, r: float) -> Point:
+    """Offset from a lower arc's centre to its point of slope s."""
+    k = 1.0 / math.sqrt(1.0 + s * s)
+    return r * s * k, -r * k
+
+
+def _blade(out: List[Piece], u: float, v: float, w: float, r: float, a: float, b: float) -> None:
+    """The part of the front outline of the blade at (u, v) whose slopes lie
+    in [a, b): left arc (slopes below 0), flat (0), right arc (above 0)."""
+    cl, cr, cv = u + r, u + w - r, v + r
+    if a < 0:
+        x0 = u if a == -math.inf else cl + _tangent(a, r)[0]
+        x1 = cl if b >= 0 else cl + _tangent(b, r)[0]
+        out.append((x0, x1, Curve(x0, x1, CUP, cl, cv, r)))
+    if a <= 0 < b:
+        out.append((cl, cr, Curve(cl, cr, LINE, cl, v, 0.0)))
+    if b > 0:
+        x0 = cr if a <= 0 else cr + _tangent(a, r)[0]
+        x1 = u + w if b == math.inf else cr + _tangent(b, r)[0]
+        out.append((x0, x1, Curve(x0, x1, CUP, cr, cv, r)))
+
+
+def _sweep(chain: List[Point], w: float, r: float) -> List[Piece]:
+    """Lower outline of the blade swept along the convex chain (front
+    positions by increasing u, slopes increasing): the Minkowski sum of the
+    front outline and the chain, taken in order of slope."""
+    out: List[Piece] = []
+    slope = -math.inf
+    for (u0, v0), (u1, v1) in zip(chain, chain[1:]):
+        s = (v1 - v0) / (u1 - u0)
+        _blade(out, u0, v0, w, r, slope, s)
+        if s < 0:
+            du, dv = _tangent(s, r)
+            du, dv = r + du, r + dv
+        elif s > 0:
+            du, dv = _tangent(s, r)
+            du, dv = w - r + du, r + dv
+        else:
+            du, dv = r, 0.0
+        out.append((u0 + du, u1 + du, Curve(u0 + du, u1 + du, LINE, u0 + du, v0 + dv, s)))
+        slope = s
+    _blade(out, chain[-1][0], chain[-1][1], w, r, slope, math.inf)
+    return [piece for piece in out if piece[1] > piece[0]]
+
+
+def lower_hull(pts: List[Point]) -> List[Point]:
+    """The lower convex hull of the points (the lowest at each u): a convex
+    chain below all of them, by increasing u."""
+    lowest = {}
+    for u, v in pts:
+        if u not in lowest or v < lowest[u]:
+            lowest[u] = v
+    hull: List[Point] = []
+    for p in sorted(lowest.items()):
+        while len(hull) >= 2:
+            (u0, v0), (u1, v1) = hull[-2], hull[-1]
+            if (u1 - u0) * (p[1] - v0) - (v1 - v0) * (p[0] - u0) <= 0:  # hull[-1] on or above the chord
+                hull.pop()
+            else:
+                break
+        hull.append(p)
+    return hull
