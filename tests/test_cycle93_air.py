@@ -60,9 +60,10 @@ def air_feed(call, tool, start):
 def test_contour_and_finishing_passes_feed_less_through_air(extra, limit):
     """mm of pass feeds that remove nothing. Before, the passes traced the
     whole profile (down both walls to the plunges' bottoms, along the oblique
-    base): 17.6, 5.7, 22.3 and 12.2 mm; now 7.1, 3.9, 1.3 and 8.6 (what
-    remains: short links and skims the feed takes where a move's blade only
-    grazes what is left)."""
+    base): 17.6, 5.7, 22.3 and 12.2 mm; moves tested one by one against a
+    polygon field (branch air2) 6.8, 3.8, 0.6 and 8.7; stretches between plunge
+    positions tested whole against the exact field 6.7, 3.8, 0.6 and 8.6 (what
+    remains: short links, and the ends of stretches that cut elsewhere)."""
     air, total = air_feed(Cycle93(**dict(BENCH, **extra)), BLADE, START)
     assert air < limit, (air, total)
 
@@ -77,6 +78,29 @@ def test_the_r1_groove_feeds_less_than_with_full_passes():
     finally:
         cycle93_material.MaterialTop.cuts = cuts
     assert skipping < full - 20.0, (skipping, full)
+
+
+@pytest.mark.parametrize(
+    "extra, limit", [(dict(rci1=1.0, rci2=1.0), 11.0), (dict(rco1=2.0, rco2=2.0, rci1=2.0, rci2=2.0), 20.0)],
+    ids=["R1 base", "4 x R2"],
+)
+def test_a_pass_does_not_feed_down_a_wall_the_last_plunge_cleared(extra, limit):
+    """mm fed by the contour and finishing passes in all. Before (corners as
+    inscribed polygons, a stand above 1e-6 counted as material), the right
+    pass's descent along the wall at u = 20 - 1e-10 (the trace's float, the
+    last plunge at 20) was found to cut: the corner polygon's nearly vertical
+    first side turned that shift into a stand over the noise, and 9 mm were
+    fed down the slot: 18.3 and 25.5 mm fed in all; now 9.5 and 17.8."""
+    assert air_feed(Cycle93(**dict(BENCH, **extra)), BLADE, START)[1] < limit
+
+
+def test_finishing_skips_what_the_roughing_passes_ran_on_the_same_profile():
+    """With edge radii and no allowances the finishing profile is the
+    roughing one below the edges: its passes there would retrace the roughing
+    passes through air (15.7 mm of air feed); they are skipped (5.0 mm left:
+    links and grazes)."""
+    air, _total = air_feed(Cycle93(**dict(BENCH, rco1=2.0, rco2=2.0, rci1=2.0, rci2=2.0)), BLADE, START)
+    assert air < 7.0, air
 
 
 # Grooves where a blade's corner drawn as one chord per arc skipped moves that
