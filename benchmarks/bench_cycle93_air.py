@@ -4,30 +4,31 @@
 
 For the six reference grooves of bench_machining_time.py (5 mm blade, r0.2)
 and one with every feature (flanks 15 and 10 degrees, chamfers and radii at
-all four corners, allowances, ANGC 5), the time of one ``Cycle93.expand`` (best of a few rounds of ``--calls``
-calls each), once as the engine runs it (contour and finishing passes fed
-only where material remains: cycle93_material / cycle93_passes) and once
-with the tracking replaced by a stub that feeds every pass move and records
-nothing (full passes, as before issue 9 item 12). The difference is what the
-tracking adds per call; the rest (the envelope, the plunges) is the same in
-both.
+all four corners, allowances, ANGC 5), the time of one ``Cycle93.expand``
+(best of a few rounds of ``--calls`` calls each, process CPU time: steady on
+a loaded machine), once as the engine runs it (contour and finishing passes
+fed only where material remains: cycle93_material / cycle93_passes) and once
+with the tracking replaced by a stub that feeds every pass stretch (full
+passes, as before issue 9 item 12). The difference is what the tracking adds
+per call; the rest (the envelope, the plunges) is the same in both.
 
-Last run (ms per call: tracked / full / tracking), before (fadb78c, branch
-air) and after (branch air2: one walk along field and blade per test or cut,
-a test stopping at the first stand, swept fronts as Minkowski sums):
+Last run (CPU ms per call: tracked / full / tracking), before (branch air2
+merged on main's exact envelope: a polygon field lowered after every fed
+move, each move tested) and after (branch air3: the plunges' material in
+closed form, each stretch between plunge positions tested whole, the passes'
+own cuts not tracked):
 
   groove     before                     after
-  rect        0.48 /  0.12 /  0.36       0.31 /  0.12 /  0.19
-  R1 base    33.2  / 11.9  / 21.4       21.0  / 12.2  /  8.8
-  flanks 15   8.50 /  0.79 /  7.72       4.64 /  0.80 /  3.84
-  ANGC 12     7.59 /  0.91 /  6.68       4.48 /  0.90 /  3.58
-  narrow      0.11 /  0.06 /  0.05       0.09 /  0.06 /  0.03
-  deep        0.55 /  0.17 /  0.38       0.36 /  0.18 /  0.19
-  all        49.4  /  9.9  / 39.4       26.1  /  9.8  / 16.2
+  rect        0.45 /  0.26 /  0.20       0.26 /  0.25 /  0.01
+  R1 base     5.03 /  0.69 /  4.34       1.13 /  0.72 /  0.41
+  flanks 15   2.74 /  0.38 /  2.36       0.63 /  0.40 /  0.23
+  ANGC 12     1.90 /  0.37 /  1.53       0.62 /  0.40 /  0.21
+  narrow      0.22 /  0.19 /  0.03       0.20 /  0.20 /  0.01
+  deep        0.50 /  0.29 /  0.20       0.30 /  0.29 /  0.01
+  all         9.46 /  0.87 /  8.59       1.50 /  0.93 /  0.58
 
 The target (issue 9 item 11: a CYCLE93 call under 3 ms, the tracking well
-under 1 ms of it) is not reached: the tracking still lowers the field once
-per fed move (about 40 us each, 160 to 290 per call on the featured grooves).
+under 1 ms of it) is met on these grooves and on bench_cycle93_radii.py's.
 """
 
 import argparse
@@ -74,10 +75,10 @@ def per_call_ms(call, settings, calls, rounds=5):
     call.expand(state, settings)
     best = float("inf")
     for _ in range(rounds):
-        t0 = time.perf_counter()
+        t0 = time.process_time()
         for _ in range(calls):
             call.expand(state, settings)
-        best = min(best, (time.perf_counter() - t0) / calls)
+        best = min(best, (time.process_time() - t0) / calls)
     return 1000 * best
 
 
