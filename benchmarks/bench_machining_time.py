@@ -37,6 +37,17 @@ to 0.1 mm above the depth reached):
   ANGC 12      30    83.39 + 1.24 =  84.62   67.19 + 1.40 = 68.58    30.00
   narrow        4     9.00 + 0.23 =   9.23    6.84 + 0.26 =  7.10     6.00
   deep         54   108.00 + 1.46 = 109.46   78.84 + 1.76 = 80.60    60.00
+
+Contour and finishing passes fed only where material remains (issue 9 item
+12, second part): total seconds before (main, with the free-off) and after:
+
+  groove     before   after
+  rect        45.11   45.11
+  R1 base     61.58   55.32
+  flanks 15   55.70   54.63
+  ANGC 12     68.58   56.17
+  narrow       7.10    7.10
+  deep        83.61   83.61
 """
 
 import argparse

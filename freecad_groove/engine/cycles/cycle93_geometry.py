@@ -26,6 +26,8 @@ from .cycle93_constants import (
     PATH_TOLERANCE,
     cycle93_error,
 )
+from .cycle93_material import MaterialTop
+from .cycle93_passes import feed_where_material
 from .cycle93_plunges import plunges
 from .cycle93_size import ExpansionSize, plunge_count
 from .cycle93_warnings import NoRoom, no_room
@@ -504,46 +506,38 @@ class GrooveGeometry:
         for u, v in approach:
             go("r", u, v)
 
-        full_depth = plunges(self, positions, go, out)
-        self._profile_passes(full_depth, go)
+        material = MaterialTop(self.final_top[0][0], self.final_top[-1][0], self.slope)
+        plunges(self, positions, go, out, material)
+        self._profile_passes(go, material, positions)
 
         # Back to the start point the way the approach came.
         for u, v in self._retreat(us, vs, last[0], along_first):
             go("r", u, v)
         return out
 
-    def _profile_passes(self, full_depth, go):
+    def _profile_passes(self, go, material, steps):
         """Step 3: take the plunges' staircase off flanks, base corners and an
         oblique base; step 4: finishing on the final profile, unless the
-        roughing already ran on it (no allowances, no edge features)."""
+        roughing already ran on it (no allowances, no edge features). Both
+        feed only where material remains (``material``), one move per width
+        step at most (split at the plunge positions ``steps``)."""
         p = self.params
-        m = self.slope
-        staircase = p["ANG1"] > 0 or p["ANG2"] > 0 or p["RCI1"] != 0 or p["RCI2"] != 0 or m != 0
+        staircase = p["ANG1"] > 0 or p["ANG2"] > 0 or p["RCI1"] != 0 or p["RCI2"] != 0 or self.slope != 0
         if staircase:
-            if m != 0 or not full_depth:
-                self._contour_passes(self.rough_env, self.rough_top, go, None)
-            else:
-                self._contour_passes(self.rough_env, self.rough_top, go, (full_depth[0], full_depth[-1]))
+            self._contour_passes(self.rough_env, self.rough_top, go, material, steps)
         if self.rough_top != self.final_top:
-            self._contour_passes(self.final_env, self.final_top, go, None)
+            self._contour_passes(self.final_env, self.final_top, go, material, steps)
 
-    def _contour_passes(self, env, top, go, stop_at):
+    def _contour_passes(self, env, top, go, material, steps):
         """From each edge of the opening toward the middle along the envelope."""
         r, w = self.tool.corner_radius, self.tool.width
         left, right = self.opening(top)
         ua = left - r
         ub = right - w + r
         mid = 0.5 * (ua + ub)
-        # Between the first and the last full-depth plunge the plunges left
-        # nothing: the passes need only reach those.
-        ends = (mid, mid) if stop_at is None else stop_at
-        steps = self.plunge_positions()
-        for start, end in ((ua, ends[0]), (ub, ends[1])):
-            go("r", start, self.clearance(start))
-            pts = split_at(env.trace(start, end, PATH_TOLERANCE), steps)
-            for u, v in pts:
-                go("f", u, v)
-            go("r", end, self.clearance(end))
+        for start in (ua, ub):
+            pts = split_at(env.trace(start, mid, PATH_TOLERANCE), steps)
+            feed_where_material(self, pts, go, material, steps, top, env, top is self.rough_top)
 
     def _leg_clear(self, u_from, u_to, level):
         """True when a blade moving along u at ``level`` stays above the contour."""

@@ -26,6 +26,7 @@ from .cycle93_constants import (
     REENTRY_CLEARANCE_INCH,
     REENTRY_CLEARANCE_MM,
 )
+from .cycle93_material import MaterialTop
 from .cycle93_size import infeed_count
 
 if TYPE_CHECKING:  # the geometry imports this module
@@ -59,19 +60,16 @@ def base_envelope(geo: "GrooveGeometry") -> Envelope:
     return Envelope(line, geo.tool.width, geo.tool.corner_radius)
 
 
-def plunges(geo: "GrooveGeometry", positions: List[float], go: Go, out: List[Move]) -> List[float]:
+def plunges(geo: "GrooveGeometry", positions: List[float], go: Go, out: List[Move], material: MaterialTop) -> None:
     """Steps 1 and 2: plunges in equal infeeds with chip-breaking retracts
     (VRT up, then a rapid back down the blade's own slot to the re-entry
     clearance), DWT at the bottom of those that reach the base, the free-off
-    from the second plunge on, then out; returns the u of the plunges that
-    reached the deepest bottom."""
+    from the second plunge on, then out; each slot is cleared in ``material``."""
     p = geo.params
     vrt, idep, dwt = p["VRT"], p["IDEP"], p["DWT"]
     reentry = min(vrt, REENTRY_CLEARANCE_MM if geo.metric else REENTRY_CLEARANCE_INCH)
     bottoms = [geo.rough_env.lowest(u) for u in positions]
     base = base_envelope(geo)
-    deepest = min(bottoms)
-    full_depth = []
     previous = None
     for u, bottom in zip(positions, bottoms):
         top = geo.contour_top(u)
@@ -97,6 +95,4 @@ def plunges(geo: "GrooveGeometry", positions: List[float], go: Go, out: List[Mov
         # the freed blade is (an oblique contour): VRT above it either way.
         go("r", freed, max(top + vrt, geo.clearance(freed)))
         previous = (u, bottom)
-        if bottom <= deepest + 1e-6:
-            full_depth.append(u)
-    return full_depth
+        material.clear_slot(u, freed, bottom, geo.tool.width, geo.tool.corner_radius)

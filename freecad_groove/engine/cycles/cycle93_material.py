@@ -1,0 +1,276 @@
+"""What material the CYCLE93 plunges leave, exactly, so that the contour and
+finishing passes (steps 3 and 4) feed only where there is something to cut.
+
+The blade only moves paraxially and the profile is a function of u, so what
+stands after the plunges is everything below a height field over u: the
+lowest level the plunges cleared in each column, the contour line where they
+did not reach. Each plunge (with its free-off along the bottom) clears a slot
+whose floor is the blade's front outline at the plunge's bottom: a circular
+arc of the corner radius at each end and the flat front between them. The
+field is the lower envelope of those outlines and the contour line, built
+once per call from closed-form curves (``envelope_curves``: arcs stay arcs),
+no polygons and no grid.
+
+A pass is tested a stretch at a time (``cuts``): the blade swept along a
+convex chain of front positions (the lower hull of the stretch's points,
+which lies below the stretch, so its sweep holds the stretch's) has a lower
+outline made of the blade's arcs, its flat front and the chain's segments.
+Between the breakpoints of the field and of that outline their difference is
+monotone, convex, or concave with its peak where a field line has an arc's
+slope, so its highest value is found at a handful of points, exactly. Where
+the hull dips below the stretch (over a bump the blade rolls around), the
+outline is raised to the profile the blade's envelope keeps it on (the
+``floor``): the real blade never goes below it. Both only lower the outline
+under the real sweep, so a stretch found not to cut leaves at most
+MATERIAL_MARGIN (and the floor's chord tolerance) of material.
+
+The passes' own cuts are not added to the field (it stays an upper bound of
+what stands): a finishing pass skips instead the stretches the roughing
+passes already ran on the same envelope (``note_pass``).
+"""
+
+import math
+from bisect import bisect_left, bisect_right
+from typing import List, Optional, Tuple
+
+from ..envelope import Envelope
+from ..envelope_curves import CAP, CUP, LINE, Curve, crossings, upper_envelope, value
+from .cycle93_constants import PATH_TOLERANCE
+
+Point = Tuple[float, float]
+Piece = Tuple[float, float, Curve]  # x from, x to, the curve (real levels, not negated)
+
+# Material thinner than this (mm or in) under a stretch of a pass counts as
+# already cut: a little over the passes' own path tolerance (PATH_TOLERANCE)
+# and half the 0.001 a program writes; it also absorbs the float noise
+# between the plunges' bottoms and the passes' points (different computations).
+MATERIAL_MARGIN = 0.0005
+# How far the profile's polyline (its arcs chorded toward more material) may
+# stand above the profile the envelope keeps the blade on.
+FLOOR_TOL = PATH_TOLERANCE
+# A blade side within this of a wall only slides along it.
+SIDE_EPS = 1e-7
+
+
+class MaterialTop:
+    """The plunges' field over the columns [lo, hi]: the contour line (slope
+    ``slope``) lowered by each slot. Stored negated, as the upper envelope of
+    the negated curves (``envelope_curves`` builds upper envelopes)."""
+
+    def __init__(self, lo: float, hi: float, slope: float) -> None:
+        self.lo, self.hi = lo, hi
+        self._curves = [Curve(lo, hi, LINE, 0.0, 0.0, -slope)]
+        self._starts: List[float] = []
+        self._pieces: List[Optional[Curve]] = []
+        self.passed: Optional[Tuple[Envelope, float, float]] = None  # see note_pass
+
+    def clear_slot(self, u_from: float, u_to: float, bottom: float, width: float, radius: float) -> None:
+        """A plunge to ``bottom`` at u_from, freed off along the bottom to u_to."""
+        a, b = min(u_from, u_to), max(u_from, u_to)
+        r, top = radius, -(bottom + radius)
+        for lo, hi, curve in (
+            (a, a + r, Curve(a, a + r, CAP, a + r, top, r)),
+            (a + r, b + width - r, Curve(a + r, b + width - r, LINE, a, -bottom, 0.0)),
+            (b + width - r, b + width, Curve(b + width - r, b + width, CAP, b + width - r, top, r)),
+        ):
+            if hi > lo:
+                self._curves.append(curve)
+        self._starts = []
+
+    def note_pass(self, env: Envelope, lo: float, hi: float) -> None:
+        """The roughing contour passes ran over blade positions [lo, hi] on
+        ``env`` (``cycle93_passes.covered`` reads it)."""
+        self.passed = (env, lo, hi)
+
+    def _field(self) -> Tuple[List[float], List[Optional[Curve]]]:
+        if not self._starts:
+            self._starts, self._pieces = upper_envelope(self._curves, self.lo, self.hi)
+        return self._starts, self._pieces
+
+    def cuts(self, chain: List[Point], width: float, radius: float, floor: List[Point]) -> bool:
+        """Whether the blade swept along the convex ``chain`` of front
+        positions, never below the material top ``floor`` (the profile its
+        envelope keeps it on), stands under more than MATERIAL_MARGIN of the
+        field."""
+        return self.exceeds(_sweep(chain, width, radius), floor, MATERIAL_MARGIN)
+
+    def stand(self, u: float, v: float, width: float) -> float:
+        """Highest stand of the field above level v over the columns (u, u + w),
+        SIDE_EPS in from both ends (its pieces are lines and cups: their ends
+        hold their tops)."""
+        starts, pieces = self._field()
+        a, b = u + SIDE_EPS, u + width - SIDE_EPS
+        k = max(bisect_right(starts, a) - 1, 0)
+        best = -math.inf
+        while k < len(pieces):
+            lo = max(starts[k], a)
+            if lo >= b:
+                break
+            hi = min(starts[k + 1], b) if k + 1 < len(starts) else b
+            if pieces[k] is not None:
+                best = max(best, -value(pieces[k], lo), -value(pieces[k], hi))
+            k += 1
+        return best - v
+
+    def exceeds(self, outline: List[Piece], floor: List[Point], limit: float) -> bool:
+        """Whether the field stands more than ``limit`` above the piecewise
+        ``outline`` raised to ``floor`` less FLOOR_TOL, strictly inside the
+        outline's columns (SIDE_EPS in from its ends). Between breakpoints of
+        field and outline the difference is monotone, convex, or concave with
+        its peak where a field line has an outline arc's slope; only where it
+        exceeds the limit is the floor brought in, piece by piece."""
+        starts, pieces = self._field()
+        a, b = outline[0][0] + SIDE_EPS, outline[-1][1] - SIDE_EPS
+        cuts = {x for piece in outline for x in piece[:2] if a < x < b}
+        cuts.update(x for x in starts[bisect_right(starts, a):bisect_right(starts, b)] if x < b)
+        xs = sorted(cuts.union((a, b)))
+        j = 0
+        for x0, x1 in zip(xs, xs[1:]):
+            mid = 0.5 * (x0 + x1)
+            while outline[j][1] <= mid and j + 1 < len(outline):
+                j += 1
+            field, low = pieces[max(bisect_right(starts, mid) - 1, 0)], outline[j][2]
+            if field is None:
+                continue
+            top = max(-value(field, x) - value(low, x) for x in _candidates(field, low, x0, x1))
+            if top > limit and _floored(field, low, floor, x0, x1, limit):
+                return True
+        return False
+
+
+def _candidates(field: Curve, low: Curve, x0: float, x1: float) -> List[float]:
+    """The ends of (x0, x1) and, inside, where the field (a line) has the slope
+    of the outline (an arc): field minus outline peaks at one of them."""
+    out = [x0, x1]
+    if field.kind == LINE and low.kind == CUP:
+        m = -field.size  # the field is stored negated
+        x = low.cu + low.size * m / math.sqrt(1.0 + m * m)
+        if x0 < x < x1:
+            out.append(x)
+    return out
+
+
+def _floored(field: Curve, low: Curve, floor: List[Point], x0: float, x1: float, limit: float) -> bool:
+    """Whether the field stands more than ``limit`` over (x0, x1) above the
+    outline ``low`` raised to the floor less FLOOR_TOL: per straight piece of
+    the floor, at the candidates and where the outline crosses the floor."""
+    i = max(bisect_right(floor, (x0, math.inf)) - 1, 0)
+    while i + 1 < len(floor) and floor[i][0] < x1:
+        (u0, v0), (u1, v1) = floor[i], floor[i + 1]
+        i += 1
+        y0, y1 = max(u0, x0), min(u1, x1)
+        if u1 <= u0 or y1 <= y0:
+            continue
+        line = Curve(u0, u1, LINE, u0, v0 - FLOOR_TOL, (v1 - v0) / (u1 - u0))
+        for y in _candidates(field, low, y0, y1) + [y for y in crossings(low, line) if y0 < y < y1]:
+            if -value(field, y) - max(value(low, y), value(line, y)) > limit:
+                return True
+    return False
+
+
+def _candidates(field: Curve, low: Curve, x0: float, x1: float) -> List[float]:
+    """The ends of (x0, x1) and, inside, where the field (a line) has the slope
+    of the outline (an arc): field minus outline peaks at one of them."""
+    out = [x0, x1]
+    if field.kind == LINE and low.kind == CUP:
+        m = -field.size  # the field is stored negated
+        x = low.cu + low.size * m / math.sqrt(1.0 + m * m)
+        if x0 < x < x1:
+            out.append(x)
+    return out
+
+
+def _floored(field: Curve, low: Curve, floor: List[Point], x0: float, x1: float, limit: float) -> bool:
+    """Whether the field stands more than ``limit`` over (x0, x1) above the
+    outline ``low`` raised to the floor less FLOOR_TOL: per straight piece of
+    the floor, at the candidates and where the outline crosses the floor."""
+    i = max(bisect_right(floor, (x0, math.inf)) - 1, 0)
+    while i + 1 < len(floor) and floor[i][0] < x1:
+        (u0, v0), (u1, v1) = floor[i], floor[i + 1]
+        i += 1
+        y0, y1 = max(u0, x0), min(u1, x1)
+        if u1 <= u0 or y1 <= y0:
+            continue
+        line = Curve(u0, u1, LINE, u0, v0 - FLOOR_TOL, (v1 - v0) / (u1 - u0))
+        for y in _candidates(field, low, y0, y1) + [y for y in crossings(low, line) if y0 < y < y1]:
+            if -value(field, y) - max(value(low, y), value(line, y)) > limit:
+                return True
+    return False
+
+
+def top_at(top: List[Point], x: float) -> Point:
+    """(level just left of x, just right of x) of a material top (points by
+    increasing u, a vertical step as two points at one u)."""
+    i = bisect_left(top, (x, -math.inf))
+    j = bisect_right(top, (x, math.inf))
+    if i < j:
+        return top[i][1], top[j - 1][1]
+    if i == 0 or i >= len(top):
+        return -math.inf, -math.inf
+    (u0, v0), (u1, v1) = top[i - 1], top[i]
+    v = v0 + (v1 - v0) * (x - u0) / (u1 - u0)
+    return v, v
+
+
+def _tangent(s: float, r: float) -> Point:
+    """Offset from a lower arc's centre to its point of slope s."""
+    k = 1.0 / math.sqrt(1.0 + s * s)
+    return r * s * k, -r * k
+
+
+def _blade(out: List[Piece], u: float, v: float, w: float, r: float, a: float, b: float) -> None:
+    """The part of the front outline of the blade at (u, v) whose slopes lie
+    in [a, b): left arc (slopes below 0), flat (0), right arc (above 0)."""
+    cl, cr, cv = u + r, u + w - r, v + r
+    if a < 0:
+        x0 = u if a == -math.inf else cl + _tangent(a, r)[0]
+        x1 = cl if b >= 0 else cl + _tangent(b, r)[0]
+        out.append((x0, x1, Curve(x0, x1, CUP, cl, cv, r)))
+    if a <= 0 < b:
+        out.append((cl, cr, Curve(cl, cr, LINE, cl, v, 0.0)))
+    if b > 0:
+        x0 = cr if a <= 0 else cr + _tangent(a, r)[0]
+        x1 = u + w if b == math.inf else cr + _tangent(b, r)[0]
+        out.append((x0, x1, Curve(x0, x1, CUP, cr, cv, r)))
+
+
+def _sweep(chain: List[Point], w: float, r: float) -> List[Piece]:
+    """Lower outline of the blade swept along the convex chain (front
+    positions by increasing u, slopes increasing): the Minkowski sum of the
+    front outline and the chain, taken in order of slope."""
+    out: List[Piece] = []
+    slope = -math.inf
+    for (u0, v0), (u1, v1) in zip(chain, chain[1:]):
+        s = (v1 - v0) / (u1 - u0)
+        _blade(out, u0, v0, w, r, slope, s)
+        if s < 0:
+            du, dv = _tangent(s, r)
+            du, dv = r + du, r + dv
+        elif s > 0:
+            du, dv = _tangent(s, r)
+            du, dv = w - r + du, r + dv
+        else:
+            du, dv = r, 0.0
+        out.append((u0 + du, u1 + du, Curve(u0 + du, u1 + du, LINE, u0 + du, v0 + dv, s)))
+        slope = s
+    _blade(out, chain[-1][0], chain[-1][1], w, r, slope, math.inf)
+    return [piece for piece in out if piece[1] > piece[0]]
+
+
+def lower_hull(pts: List[Point]) -> List[Point]:
+    """The lower convex hull of the points (the lowest at each u): a convex
+    chain below all of them, by increasing u."""
+    lowest = {}
+    for u, v in pts:
+        if u not in lowest or v < lowest[u]:
+            lowest[u] = v
+    hull: List[Point] = []
+    for p in sorted(lowest.items()):
+        while len(hull) >= 2:
+            (u0, v0), (u1, v1) = hull[-2], hull[-1]
+            if (u1 - u0) * (p[1] - v0) - (v1 - v0) * (p[0] - u0) <= 0:  # hull[-1] on or above the chord
+                hull.pop()
+            else:
+                break
+        hull.append(p)
+    return hull

@@ -1,0 +1,153 @@
+"""Steps 3 and 4 of CYCLE93 fed only where material remains.
+
+A contour or finishing pass follows the blade's envelope over a profile
+(``Envelope.trace``), split at the plunge positions. Most of it runs where
+the plunges have already cut. Each stretch between two plunge positions is
+decided whole: fed when the blade swept along it would cut more than
+MATERIAL_MARGIN of what the plunges left (``MaterialTop.cuts``), skipped
+otherwise, or skipped without a test when the roughing passes already ran it
+on the same envelope (``covered``: a finishing pass over a stretch where the
+final profile is the roughing one). Between two fed runs the blade either
+feeds on through the air of the gap or rapids out to the clearance VRT above
+the contour, across, and down to a re-entry clearance above the material left
+under the blade, whichever takes less time when a rapid runs RAPID_FEED_RATIO
+times as fast as the feed (the machining-time benchmark's rates: 10,000 and
+100 mm/min). A rapid never runs through material: out of a stretch the blade
+rises through the columns it has just cut, across at the clearance, and down
+only to REENTRY_CLEARANCE above the highest material the plunges left under
+the blade (an upper bound of what stands).
+"""
+
+import math
+from bisect import bisect_left, bisect_right
+from typing import TYPE_CHECKING, Callable, List, Tuple
+
+from ..envelope import Envelope
+from .cycle93_constants import REENTRY_CLEARANCE_INCH, REENTRY_CLEARANCE_MM
+from .cycle93_material import SIDE_EPS, MaterialTop, lower_hull
+
+if TYPE_CHECKING:  # the geometry imports this module
+    from .cycle93_geometry import GrooveGeometry
+
+Point = Tuple[float, float]
+Go = Callable[[str, float, float], None]
+
+# Rapid rate over feed rate that decides between feeding through a gap and
+# rapiding around it (the benchmark's 10,000 and 100 mm/min).
+RAPID_FEED_RATIO = 100.0
+# A trace point this close to a plunge position along u is at it (split_at puts them there exactly).
+STEP_EPS = 1e-9
+
+
+def _groups(pts: List[Point], steps: List[float]) -> List[Tuple[int, int]]:
+    """(first, last) point indexes of the stretches between the plunge
+    positions ``steps`` (ascending): the trace is split there (``split_at``),
+    so each stretch takes at most one tooth. One point is one stretch."""
+    bounds = [0]
+    for k in range(1, len(pts) - 1):
+        u = pts[k][0]
+        i = bisect_left(steps, u - STEP_EPS)
+        if i < len(steps) and steps[i] <= u + STEP_EPS:
+            bounds.append(k)
+    bounds.append(len(pts) - 1)
+    return list(zip(bounds, bounds[1:])) if len(pts) > 1 else [(0, 0)]
+
+
+def _element(env: Envelope, x: float) -> Tuple[Point, Point, object]:
+    """The element of the envelope's top over column x (not at a vertex)."""
+    pts = env.points
+    k = max(bisect_right(pts, (x, math.inf)) - 1, 0)
+    return pts[k], pts[min(k + 1, len(pts) - 1)], env.arcs.get(k)
+
+
+def _same_profile(a: Envelope, b: Envelope, lo: float, hi: float) -> bool:
+    """Whether the two envelopes' tops are made of the same elements over the
+    columns (lo, hi), vertices and vertical steps included."""
+    xs = sorted({lo, hi}.union(u for u, _v in a.points + b.points if lo < u < hi))
+    for x in xs[1:-1]:
+        if [p for p in a.points if p[0] == x] != [p for p in b.points if p[0] == x]:
+            return False
+    return all(_element(a, 0.5 * (x0 + x1)) == _element(b, 0.5 * (x0 + x1)) for x0, x1 in zip(xs, xs[1:]))
+
+
+def covered(material: MaterialTop, env: Envelope, lo: float, hi: float) -> bool:
+    """Whether the roughing passes already ran the blade positions [lo, hi]
+    on this same envelope: a pass on another envelope (the finishing one)
+    whose top is the roughing top under the blade there would retrace them."""
+    if material.passed is None or material.passed[0] is env:
+        return False
+    rough, a, b = material.passed
+    w = env.width
+    return a - STEP_EPS <= lo and hi <= b + STEP_EPS and _same_profile(env, rough, lo + SIDE_EPS, hi + w - SIDE_EPS)
+
+
+def _stretches(pts: List[Point], material: MaterialTop, width: float, radius: float,
+               steps: List[float], top: List[Point], env: Envelope) -> List[List[int]]:
+    """[first, last] point indexes of the runs of stretches that cut
+    something; a stretch is tested whole (the blade swept along its lower
+    hull, below it). A trace of one point (a blade as wide as the opening)
+    is a plunge to it: [0, 0] when material stands above the blade there."""
+    runs: List[List[int]] = []
+    for first, last in _groups(pts, steps):
+        part = pts[first:last + 1]
+        lo, hi = min(u for u, _v in part), max(u for u, _v in part)
+        if covered(material, env, lo, hi) or not material.cuts(lower_hull(part), width, radius, top):
+            continue
+        if runs and runs[-1][1] == first:
+            runs[-1][1] = last
+        else:
+            runs.append([first, last])
+    return runs
+
+
+def _entry(geo: "GrooveGeometry", material: MaterialTop, at: Point) -> float:
+    """Level the blade may rapid down to above ``at``: REENTRY_CLEARANCE (at
+    most VRT) over the highest material under it, never below ``at``."""
+    u, v = at
+    w = geo.tool.width
+    stand = max(material.stand(u, v, w), 0.0)
+    gap = min(geo.params["VRT"], REENTRY_CLEARANCE_MM if geo.metric else REENTRY_CLEARANCE_INCH)
+    return min(v + stand + gap, geo.clearance(u))
+
+
+def _length(pts: List[Point]) -> float:
+    return sum(math.dist(p, q) for p, q in zip(pts, pts[1:]))
+
+
+def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, material: MaterialTop,
+                        steps: List[float], top: List[Point], env: Envelope, rough: bool) -> None:
+    """Feed the stretches of the trace ``pts`` on the envelope of ``top``
+    that cut, linked the cheaper way; the blade comes from and goes back to
+    the clearance. A roughing pass (``rough``) is noted in ``material``."""
+    w, r = geo.tool.width, geo.tool.corner_radius
+    runs = _stretches(pts, material, w, r, steps, top, env)
+    if rough:
+        us = [u for u, _v in pts] + ([material.passed[1], material.passed[2]] if material.passed else [])
+        material.note_pass(env, min(us), max(us))
+    here = None  # the point the blade stands on, None at the clearance
+    for first, last in runs:
+        start = pts[first]
+        if here is not None:
+            gap = pts[here:first + 1]
+            end = pts[here]
+            entry = _entry(geo, material, start)
+            around = (geo.clearance(end[0]) - end[1]) + math.dist(
+                (end[0], geo.clearance(end[0])), (start[0], geo.clearance(start[0]))
+            ) + (geo.clearance(start[0]) - entry)
+            if around / RAPID_FEED_RATIO + (entry - start[1]) < _length(gap):
+                go("r", end[0], geo.clearance(end[0]))
+                here = None
+            else:
+                for q in gap[1:]:
+                    go("f", *q)
+        if here is None:
+            entry = _entry(geo, material, start)
+            go("r", start[0], geo.clearance(start[0]))
+            go("r", start[0], entry)
+            go("f", *start)
+        for q in pts[first + 1:last + 1]:
+            go("f", *q)
+        here = last
+    if here is not None:
+        end = pts[here]
+        go("r", end[0], geo.clearance(end[0]))
