@@ -142,6 +142,18 @@ def test_face_groove_at_angc_45_leaves_exactly_what_is_reported():
      GroovingTool(1.8, 0.05, reference="plus")),
     # Exactly the blade's width between two walls: only the blade flush with both reaches the floor.
     ("CYCLE93(15, 0, 3.57, 0.8, 0, 0, 0, 0.1, 0, 0, 0, 0, 0, 0.3, 0, 11, 0)", GroovingTool(3.57, 0.05)),
+    # Stuck positions the search over the arcs' chords missed (the exact envelope's kinks find them): a base
+    # chamfer beside an edge radius; steep contours with large edge radii (RCO1) rolled over by the blade.
+    ("CYCLE93(32.81, 5.74, 7.71, 6.91, 0, 0, 0, 0, 0.27, 0, -1.06, 0, 0.27, 2.8, 0, 13, 2)",
+     GroovingTool(3.84, 0.26, reference="plus")),
+    ("CYCLE93(32.91, 1.24, 6.33, 6.94, 146.2, 0, 11.7, 1.2, -0.92, 0, 0, 0.1, 0, 1.72, 0, 17, 0)",
+     GroovingTool(3.68, 0.21, reference="plus")),
+    ("CYCLE93(36.05, -3.69, 5.83, 7.44, 66.5, 9.9, 0, 0.44, 0, 0.51, 0.9, 0.22, 0.48, 3.53, 0, 15, 0)",
+     GroovingTool(1.55, 0.18, reference="plus")),
+    ("CYCLE93(21.96, -5.69, 12.36, 6.17, 56.3, 0, 0, 0.99, -0.8, 0.37, 0, 0, 0.35, 2.84, 0, 6, 0)",
+     GroovingTool(3.89, 0.42, reference="plus")),
+    ("CYCLE93(37.31, 3.46, 4.32, 4.58, 73.5, 0, 13.6, 0.54, 0, 0.33, -0.93, 0, 0.31, 2.38, 0, 3, 2)",
+     GroovingTool(1.88, 0.48)),
 ])
 def test_found_by_generated_grooves_leaves_exactly_what_is_reported(call, tool):
     assert_left_is_what_is_warned(Cycle93.parse(call), tool)
