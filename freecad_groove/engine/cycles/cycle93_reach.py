@@ -55,10 +55,9 @@ Piece = Tuple[float, float, int, float, float, Optional[Arc]]
 
 __all__ = ["Unreachable", "REACH_TOLERANCE_MM", "REACH_TOLERANCE_INCH", "unreachable_regions", "reach_warnings"]
 
-# Material left shallower than this (along the plunge axis), or thinner than
-# this on average (its area over the length of profile under it), is not
-# reported: the simulation's tolerance, five times the chord tolerance of the
-# passes (which leave up to that much along the arcs).
+# Material left shallower than this (along the plunge axis) is not reported:
+# the simulation's tolerance. The computation is exact (no chords), so no
+# other threshold is needed: every sliver deeper than this is named.
 REACH_TOLERANCE_MM = 0.001
 REACH_TOLERANCE_INCH = 0.00004
 CONTACT = 1e-7  # the outline this close to the profile touches it
@@ -66,12 +65,18 @@ STEP = 1e-12  # a profile element this narrow is a vertical step (as in the enve
 WALL_GAP = 1e-8  # a blade side this close to a vertical step stands flush against it
 
 
+# The profile's corners in order along it: the parameter and the words of the warning.
+CORNER_NAMES = (("RCO1", "edge corner 1"), ("RCI1", "base corner 1"), ("RCI2", "base corner 2"),
+                ("RCO2", "edge corner 2"))
+
+
 @dataclass(frozen=True)
 class Unreachable:
     """Material the blade cannot reach: the columns ``u_from``..``u_to`` (groove
-    frame) beside base corner ``corner`` (1: RCI1's side, 2: RCI2's), its
-    ``area`` and largest ``depth`` along the plunge axis (program units),
-    that depth at column ``at``."""
+    frame) beside the corner named by ``parameter`` (RCO1, RCI1, RCI2, RCO2:
+    the one whose element lies nearest) on side ``corner`` (1: the start
+    point's, 2: the other), its ``area`` and largest ``depth`` along the
+    plunge axis (program units), that depth at column ``at``."""
 
     corner: int
     u_from: float
@@ -79,6 +84,7 @@ class Unreachable:
     area: float
     depth: float
     at: float
+    parameter: str = "RCI1"
 
 
 class _Profile:
@@ -130,15 +136,6 @@ def _profile_integral(piece: Piece, a: float, b: float) -> float:
     (cu, cv), big = arc.center, arc.radius
     bulge = _circle_integral(b - cu, big) - _circle_integral(a - cu, big)
     return cv * (b - a) + (bulge if arc.bump else -bulge)
-
-
-def _profile_length(piece: Piece, a: float, b: float) -> float:
-    """Length of the profile over [a, b] within the piece."""
-    _x0, _x1, _kind, _f0, q, arc = piece
-    if arc is None:
-        return math.hypot(b - a, q * (b - a))
-    (cu, _cv), big = arc.center, arc.radius
-    return big * abs(math.asin(max(-1.0, min(1.0, (b - cu) / big))) - math.asin(max(-1.0, min(1.0, (a - cu) / big))))
 
 
 class _Blade:
@@ -221,7 +218,7 @@ def _circle_integral(t: float, r: float) -> float:
 
 
 def _gaps(blade: _Blade, profile: _Profile, edges: List[float], columns: Point) -> List[Tuple[float, ...]]:
-    """(from, to, area, depth, column of that depth, length of profile) of each gap between consecutive contacts of
+    """(from, to, area, depth, column of that depth) of each gap between consecutive contacts of
     the blade with the profile (or a wall flush with its side, or one of ``edges``), within ``columns``."""
     pieces: List[Piece] = []
     for px0, px1, f0, q, arc in profile.under(blade.u, blade.u + blade.width):
@@ -261,14 +258,13 @@ def _contacts(blade: _Blade, pieces: List[Piece], steps: List[Point]) -> List[fl
 def _gap(blade: _Blade, pieces: List[Piece], a: float, b: float, slope: float) -> Tuple[float, ...]:
     """The gap between the outline and the profile over a..b, below the
     contour line v = slope * u (the stock's top: above it there is nothing to cut)."""
-    area = depth = length = 0.0
+    area = depth = 0.0
     at = a
     for piece in pieces:
         x0, x1, kind = piece[:3]
         lo, hi = max(x0, a), min(x1, b)
         if hi <= lo:
             continue
-        length += _profile_length(piece, lo, hi)
         cuts = [lo] + sorted(x for x in blade.crossings(kind, slope) if lo < x < hi) + [hi]
         for c0, c1 in zip(cuts, cuts[1:]):
             mid = 0.5 * (c0 + c1)
@@ -283,7 +279,7 @@ def _gap(blade: _Blade, pieces: List[Piece], a: float, b: float, slope: float) -
                 gap = min(blade.outline(x), slope * x) - _level(piece, x)
                 if gap > depth:
                     depth, at = gap, x
-    return a, b, area, depth, at, length
+    return a, b, area, depth, at
 
 
 def _turning(blade: _Blade, kind: int, piece: Piece, slope: float) -> List[float]:
@@ -311,21 +307,20 @@ def unreachable_regions(geometry: "GrooveGeometry", tolerance: Optional[float] =
     lo, hi = left - radius, right - width + radius
     env = geometry.final_env
     profile = _Profile(env.points, env.arcs, geometry.slope)
-    spans = []
-    for index in (1, 2):
-        ends = geometry.final_corners[index].element()[0]
-        spans.append((min(p[0] for p in ends), max(p[0] for p in ends)))
+    spans = [(min(p[0] for p in ends), max(p[0] for p in ends))
+             for ends in (corner.element()[0] for corner in geometry.final_corners)]
     stuck = {lo, hi} | env.walls(lo, hi) | set(env.kinks(lo, hi))
     blades = [_Blade(u, env.lowest(u), width, radius) for u in sorted(stuck)]
     regions: List[Unreachable] = []
     for blade in blades:
         # At the ends of the passes' range the blade goes no further: its side bounds what it reaches.
         edges = [edge for edge, end in ((blade.u, lo), (blade.u + width, hi + width)) if abs(edge - end) <= WALL_GAP]
-        for a, b, area, depth, at, length in _gaps(blade, profile, edges, (left, right)):
-            # Thinner on average than the tolerance: slivers the chords of the passes leave along an arc.
-            thick = depth > tolerance and area > tolerance * length
-            if thick and not _lower(blades, blade, at) and not any(r.u_from < b and a < r.u_to for r in regions):
-                regions.append(Unreachable(_nearest(spans, a, b), a, b, area, depth, at))
+        for a, b, area, depth, at in _gaps(blade, profile, edges, (left, right)):
+            if depth > tolerance and not _lower(blades, blade, at) and not any(
+                    r.u_from < b and a < r.u_to for r in regions):
+                nearest = _nearest(spans, a, b)
+                regions.append(Unreachable(1 if nearest < 2 else 2, a, b, area, depth, at,
+                                           CORNER_NAMES[nearest][0]))
     return sorted(regions, key=lambda r: r.u_from)
 
 
@@ -336,35 +331,40 @@ def _lower(blades: List[_Blade], blade: _Blade, x: float) -> bool:
     return any(other.u <= x <= other.u + other.width and other.outline(x) < mine for other in blades)
 
 
-def _nearest(spans: List[Tuple[float, float]], a: float, b: float) -> int:
-    """The base corner (1 or 2) whose element lies nearest the columns a..b."""
-    distances = [max(first - b, a - last, 0.0) for first, last in spans]
-    return 1 if distances[0] <= distances[1] else 2
+def _nearest(spans: List[Point], a: float, b: float) -> int:
+    """The corner (0..3: RCO1, RCI1, RCI2, RCO2) whose element lies nearest the
+    columns a..b, a base corner before an edge at the same distance."""
+    def key(index: int) -> Tuple[float, int]:
+        first, last = spans[index]
+        distance = max(first - b, a - last, 0.0)
+        return (distance if distance > WALL_GAP else 0.0, index in (0, 3))
+    return min(range(4), key=key)
 
 
 def _amount(value: float, decimals: int) -> str:
-    """value to ``decimals`` places, or to two significant digits when that rounds to 0."""
+    """value to ``decimals`` places, or to two significant digits when that rounds to 0 (no exponent)."""
     text = "%.*f" % (decimals, value)
-    if float(text) == 0:
-        text = "%.2g" % value
+    if float(text) == 0 and value > 0:
+        text = "%.*f" % (1 - math.floor(math.log10(value)), value)
     return text
 
 
 def reach_warnings(geometry: "GrooveGeometry") -> List[CycleWarning]:
-    """One warning per base corner where the blade leaves material."""
+    """One warning per corner (base corners, and the edges where the passes
+    start and end) where the blade leaves material."""
     regions = unreachable_regions(geometry)
     tool = geometry.tool
     units = "mm" if geometry.metric else "in"
     decimals = 2 if geometry.metric else 4
     out = []
-    for corner in (1, 2):
-        mine = [r for r in regions if r.corner == corner]
+    for parameter, where in CORNER_NAMES:
+        mine = [r for r in regions if r.parameter == parameter]
         if not mine:
             continue
         area = sum(r.area for r in mine)
         depth = max(r.depth for r in mine)
-        message = "%s %s² up to %s %s deep at base corner %d cannot be reached by a %s %s flat blade (r%s)" % (
-            _amount(area, decimals), units, _amount(depth, decimals), units, corner, format_value(tool.width), units,
+        message = "%s %s² up to %s %s deep at %s cannot be reached by a %s %s flat blade (r%s)" % (
+            _amount(area, decimals), units, _amount(depth, decimals), units, where, format_value(tool.width), units,
             format_value(tool.corner_radius))
-        out.append(CycleWarning(NAME, "RCI%d" % corner, message))
+        out.append(CycleWarning(NAME, parameter, message))
     return out
