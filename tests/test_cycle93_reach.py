@@ -8,6 +8,7 @@ from shapely.geometry import LineString, Polygon
 from test_cycle93_simulation import SEED_CALL, grooves, simulated
 
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
+from freecad_groove.engine.cycles import cycle93
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.cycles.cycle93_reach import REACH_TOLERANCE_MM, unreachable_regions
 
@@ -76,6 +77,28 @@ def test_a_sliver_at_an_edge_radius_is_named_at_its_edge_corner():
     assert edge.text == ("CYCLE93: 0.000047 mm² up to 0.0014 mm deep at edge corner 1 cannot be reached by a 2.39 mm "
                          "flat blade (r0.37)")
     assert_left_is_what_is_warned(call, GroovingTool(2.39, 0.37))
+
+
+def test_a_program_line_builds_its_groove_once_for_validation_moves_and_warnings(monkeypatch):
+    # The translator validates, expands and asks for the warnings of each call: one geometry serves all three
+    # (the reach warning works on the envelope the expansion traced), and the same call again builds none.
+    from freecad_groove.engine.translator import translate_program
+    built = []
+
+    class Counted(cycle93.GrooveGeometry):
+        def __init__(self, *args):
+            built.append(args[0])
+            super().__init__(*args)
+
+    monkeypatch.setattr(cycle93, "GrooveGeometry", Counted)
+    # A groove no other test has built.
+    program = "S500 M3\nG95 G90 F0.2\nG0 X80 Z65\n%s\nM2\n" % SEED_CALL.replace("30, 25, 12,", "30, 25.25, 12,")
+    settings_ = Settings(tool=GroovingTool(5.0, 0.4))
+    warnings = []
+    text = translate_program(program, "sinumerik", settings_, warnings=warnings)
+    assert len(built) == 1 and [w.parameter for _line, w in warnings] == ["RCI1", "RCI2"]
+    assert translate_program(program, "sinumerik", settings_) == text
+    assert len(built) == 1
 
 
 def test_small_noise_is_not_reported():
