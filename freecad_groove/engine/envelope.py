@@ -22,7 +22,7 @@ from bisect import bisect_right
 from typing import Dict, List, Optional, Set, Tuple
 
 from .envelope_contacts import EDGE_EPS, Arc, top_curves
-from .envelope_curves import Curve, chords, upper_envelope, value
+from .envelope_curves import Curve, chords, slope, upper_envelope, value
 
 Point = Tuple[float, float]
 
@@ -30,6 +30,7 @@ __all__ = ["EDGE_EPS", "Arc", "Envelope", "arc_points"]
 
 JUMP = 1e-9  # a change of level this large where two pieces meet is a wall: move straight along it
 SAME_U = 1e-7  # points closer than this along u are at the same u (no sliver moves)
+KINK = 1e-9  # two pieces whose slopes differ more than this where they meet make a kink
 
 
 class Envelope:
@@ -100,24 +101,25 @@ class Envelope:
                 out.update(c for c in (u1, u1 - self.width) if lo < c < hi)
         return out
 
-    def breakpoints(self, lo: float, hi: float) -> List[float]:
-        """Blade positions in [lo, hi] where a side edge, a corner or the flat
-        front passes a vertex of the top, or a corner starts rolling along one
-        of its lines: where the piece of the top that holds the blade up may
-        change (``cycle93_reach`` searches between them)."""
-        r, w = self.radius, self.width
-        offsets = (0.0, r, w - r, w) if r > 0 else (0.0, w)
-        out = {lo, hi}
-        for pu, _pv in self.points:
-            out.update(c for c in (pu - off for off in offsets) if lo < c < hi)
-        if r > 0:
-            for index, ((u1, v1), (u2, v2)) in enumerate(zip(self.points, self.points[1:])):
-                if u2 - u1 <= 1e-12 or v1 == v2 or index in self.arcs:
-                    continue
-                q = (v2 - v1) / (u2 - u1)
-                s = r - r * (-q) / math.sqrt(1 + q * q) if q < 0 else w - r + r * q / math.sqrt(1 + q * q)
-                out.update(c for c in (u1 - s, u2 - s) if lo < c < hi)
-        return sorted(out)
+    def kinks(self, lo: float, hi: float) -> List[float]:
+        """Blade positions in (lo, hi) where two pieces of the lowest level meet
+        at an angle or a step: where the blade touches the top at two places
+        (a smooth hand-over from one piece to the next, one contact rolling
+        on, is left out)."""
+        starts, pieces = self._built()
+        out = []
+        for index in range(bisect_right(starts, lo), len(starts)):
+            u = starts[index]
+            if u >= hi:
+                break
+            before, after = pieces[index - 1], pieces[index]
+            if before is None or after is None:
+                continue
+            jump = abs(value(before, u) - value(after, u)) > JUMP
+            turn = slope(before, u) - slope(after, u)
+            if jump or not abs(turn) <= KINK:  # an infinite or NaN turn (a vertical tangent) counts
+                out.append(u)
+        return out
 
 
 def _without_slivers(pts: List[Point]) -> List[Point]:

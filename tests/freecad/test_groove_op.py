@@ -770,3 +770,33 @@ def test_a_recompute_reports_the_cycles_warnings_once(shop, monkeypatch):
     assert [m for m in printed if "CYCLE93" in m] == ["%s: %s: groove 1: %s\n" % (op.Label, plan.face.name, text)]
     assert [warning.text for warning in plan.warnings] == [text]
     assert plan.geometry.roughs_to_final
+
+
+# The seed example, CYCLE93(35, 60, 30, 25, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0): a groove 30 wide and 25
+# deep (radius) into a cone at ANGC 12 through X35 Z60 (radius), its +Z edge at Z60: the cone of a shaft from Z0
+# to Z80, the groove's +Z edge at Position 20 from the face's +Z end.
+TAN_12 = math.tan(math.radians(12))
+SEED_CONE = [(0, 0), (35 - 60 * TAN_12, 0), (35 + 20 * TAN_12, 80), (0, 80), (0, 0)]
+SEED_OP = dict(position=20, width=30, depth=25, flank_angle1=15, flank_angle2=16, base_corner1=2,
+               base_corner1_type="Chamfer", base_corner2=2, base_corner2_type="Chamfer", base_allowance=1,
+               flank_allowance=1, infeed=10, dwell=1)
+
+
+def test_the_seed_example_op_reports_the_material_its_5_mm_blade_cannot_reach(doc, monkeypatch):
+    # The oblique base runs down into the chamfer RCI2: a flat 5 mm blade rests on both and leaves the wedge
+    # between (issue 9 item 2), which the user reads in the report view, with the op's and the face's names.
+    printed = []
+    monkeypatch.setattr(FreeCAD.Console, "PrintWarning", printed.append)
+    doc, shaft, job, tc = make_shop(doc, shape=shaft_shape(SEED_CONE))
+    cone = face_name(shaft.Shape, "cone", {"cone": lambda f: f.surface == "cone"})
+    op = make_groove(job, (shaft, cone), tool_width=5, tool_corner_radius=0.4, **SEED_OP)
+    assert op_error(op) is None, op_error(op)
+    (plan,) = op.Proxy.current_plan(op)
+    seed = Cycle93.parse("CYCLE93(35, 60, 30, 25, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)")
+    assert [getattr(plan.cycle, name) for name in ("axfa", "axsa", "widg", "depg", "angc", "rci1", "rci2", "typ")] \
+        == pytest.approx([getattr(seed, name) for name in ("axfa", "axsa", "widg", "depg", "angc", "rci1", "rci2",
+                                                            "typ")], abs=1e-9)
+    wedge = "CYCLE93: 1.49 mm² up to 0.68 mm deep at base corner 2 cannot be reached by a 5 mm flat blade (r0.4)"
+    assert "%s: %s: groove 1: %s\n" % (op.Label, plan.face.name, wedge) in printed
+    assert [(warning.parameter, warning.text) for warning in plan.warnings if warning.parameter == "RCI2"] == [
+        ("RCI2", wedge)]

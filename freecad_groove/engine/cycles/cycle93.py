@@ -62,6 +62,7 @@ same double, without an exponent (Siemens writes exponents as EX).
 import math
 import re
 from dataclasses import dataclass, fields
+from functools import lru_cache
 from typing import ClassVar, List, Optional, Tuple
 
 from ..moves import MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, MachineState, Move
@@ -207,8 +208,12 @@ class Cycle93:
         return MINUS_Z if external else PLUS_Z
 
     def geometry(self, settings: Settings = DEFAULT_SETTINGS, metric: bool = True) -> GrooveGeometry:
-        """Validate and return the groove's GrooveGeometry."""
-        return GrooveGeometry(self, settings, metric)
+        """Validate and return the groove's GrooveGeometry: built once per
+        (call, settings, metric) while it is among the last GEOMETRY_CACHE_SIZE
+        used, so that validate(), expand() and warnings() of one call (the
+        translator's sequence; the op's expansions from each candidate start)
+        share it. Read it, never change it."""
+        return _cached_geometry(self, settings, metric)
 
     # -- expansion ----------------------------------------------------------
     def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
@@ -218,5 +223,16 @@ class Cycle93:
 
     def warnings(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[CycleWarning]:
         """What the expansion from ``state`` cannot do as programmed: allowances
-        that leave the blade no room (roughing then runs on the final profile)."""
+        that leave the blade no room (roughing then runs on the final profile),
+        material the blade cannot reach. On the geometry expand() just used."""
         return cycle93_warnings(self.geometry(settings, state.metric))
+
+
+# A few geometries, not one per call of a program: memory stays flat however
+# long the program (the command line streams it).
+GEOMETRY_CACHE_SIZE = 16
+
+
+@lru_cache(maxsize=GEOMETRY_CACHE_SIZE)
+def _cached_geometry(call: Cycle93, settings: Settings, metric: bool) -> GrooveGeometry:
+    return GrooveGeometry(call, settings, metric)
