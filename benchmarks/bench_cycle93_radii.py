@@ -8,8 +8,10 @@ W 25, DEPG 10, IDEP 2, VRT 0 (1 mm), cut with a 5 mm blade of corner radius
 then RCO2, RCI1, RCI2), then come one with 1 mm chamfers on all four corners
 and one with everything (ANGC 12, flanks 15/16, RCO 2, RCI 1, allowances
 FAL1 0.3 FAL2 0.2). For each: the median time of one ``Cycle93.expand``
-(geometry and moves, from the call to the move list) over ``--calls`` calls,
-and the number of moves.
+(geometry and moves, from the call to the move list; the geometry cache is
+emptied before each call, so nothing is reused) over ``--calls`` calls, the
+same with ``warnings()`` after it (what the command line and the op do per
+call), and the number of moves.
 
 Target (issue 9, item 11): under 3 ms a call on the 2-core test machine
 with any radii and chamfers.
@@ -24,7 +26,7 @@ import time
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
 from freecad_groove.engine import GroovingTool, MachineState, Settings  # noqa: E402
-from freecad_groove.engine.cycles.cycle93 import Cycle93  # noqa: E402
+from freecad_groove.engine.cycles.cycle93 import Cycle93, _cached_geometry  # noqa: E402
 
 BLADE = GroovingTool(5.0, 0.4)
 START = MachineState(x=53.0, z=5.0, feed=0.1)
@@ -42,13 +44,17 @@ GROOVES = [
 ]
 
 
-def time_per_call(call, settings, calls):
-    """Median seconds of one expansion over ``calls`` calls, and the moves."""
+def time_per_call(call, settings, calls, warnings=False):
+    """Median seconds of one expansion (and its warnings) from an empty
+    geometry cache over ``calls`` calls, and the moves."""
     moves = call.expand(START, settings)
     times = []
     for _ in range(calls):
+        _cached_geometry.cache_clear()
         t0 = time.perf_counter()
         call.expand(START, settings)
+        if warnings:
+            call.warnings(START, settings)
         times.append(time.perf_counter() - t0)
     return statistics.median(times), len(moves)
 
@@ -60,11 +66,12 @@ def main():
     settings = Settings(tool=BLADE)
     print("CYCLE93 expand, 5 mm blade r0.4, W25 DEPG10 (Python %s, median of %d calls)"
           % (sys.version.split()[0], args.calls))
-    print("%-12s %10s %7s" % ("groove", "ms/call", "moves"))
+    print("%-12s %10s %18s %7s" % ("groove", "ms/call", "with warnings", "moves"))
     for name, kw in GROOVES:
         call = Cycle93(**dict(BASE, **kw))
         secs, moves = time_per_call(call, settings, args.calls)
-        print("%-12s %10.2f %7d" % (name, secs * 1000, moves))
+        with_warnings, _moves = time_per_call(call, settings, args.calls, warnings=True)
+        print("%-12s %10.2f %18.2f %7d" % (name, secs * 1000, with_warnings * 1000, moves))
 
 
 if __name__ == "__main__":
