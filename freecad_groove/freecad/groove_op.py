@@ -296,20 +296,37 @@ class ObjectGroove(PathOp.ObjectOp):
 
     def _restored_plans(self, obj: object) -> Optional[list[GroovePlan]]:
         """The plans the opened document saved, when their fingerprint is that
-        of the op's inputs now (kept from then on); None otherwise."""
-        saved, self._saved_plans = getattr(self, "_saved_plans", None), None
-        if not saved:
+        of the op's inputs now (kept from then on); None otherwise. The Job's
+        other Groove ops that still hold saved plans are checked at the same
+        time (a post reads them next), the inputs they share read once."""
+        if not getattr(self, "_saved_plans", None):
             return None
         try:
-            stamp = plan_cache.fingerprint(obj, self._parent_job(obj))
-            plans = plan_cache.unpack(saved, stamp)
-            if plans is None:
-                return None
-            self._plans, self._fingerprint = plans, stamp
-        except Exception as e:  # plan again
+            job = self._parent_job(obj)
+        except ValueError as e:
+            self._saved_plans = None
             FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
             return None
-        return self._plans
+        memo: dict = {}  # plan_cache.fingerprint's digests of the shared inputs
+        self._restore(obj, job, memo)
+        for other in getattr(getattr(job, "Operations", None), "Group", None) or []:
+            proxy = getattr(other, "Proxy", None)
+            if isinstance(proxy, ObjectGroove) and getattr(proxy, "_saved_plans", None) \
+                    and getattr(proxy, "_plans", None) is None and getattr(proxy, "error", None) is None \
+                    and not ({"Touched", "Invalid"} & set(other.State)):
+                proxy._restore(other, job, memo)
+        return getattr(self, "_plans", None)
+
+    def _restore(self, obj: object, job: object, memo: dict) -> None:
+        """Take the saved plans as the op's plans when their fingerprint matches (then, or never)."""
+        saved, self._saved_plans = self._saved_plans, None
+        try:
+            stamp = plan_cache.fingerprint(obj, job, memo)
+            plans = plan_cache.unpack(saved, stamp)
+            if plans is not None:
+                self._plans, self._fingerprint = plans, stamp
+        except Exception as e:  # plan again
+            FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
 
     def dumps(self) -> Optional[dict]:
         """The proxy's saved state: the op's plans with their fingerprint
