@@ -322,9 +322,8 @@ class ObjectGroove(PathOp.ObjectOp):
         saved, self._saved_plans = self._saved_plans, None
         try:
             stamp = plan_cache.fingerprint(obj, job, memo)
-            plans = plan_cache.unpack(saved, stamp)
-            if plans is not None:
-                self._plans, self._fingerprint = plans, stamp
+            if stamp == saved.fingerprint:
+                self._plans, self._fingerprint = saved.plans, stamp
         except Exception as e:  # plan again
             FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
 
@@ -336,10 +335,16 @@ class ObjectGroove(PathOp.ObjectOp):
         if plans is not None and stamp and getattr(self, "error", None) is None:
             return {"plans": plan_cache.pack(plans, stamp)}
         saved = getattr(self, "_saved_plans", None)
-        return {"plans": saved} if saved else None
+        return {"plans": saved.text} if saved else None
 
     def loads(self, state: object) -> None:
-        self._saved_plans = state.get("plans") if isinstance(state, dict) else None
+        """Read the saved plans as the document opens (plan_cache.read), so
+        that the first post only checks their fingerprint (_restored_plans)."""
+        try:
+            self._saved_plans = plan_cache.read(state.get("plans") if isinstance(state, dict) else None)
+        except Exception as e:  # never a reason not to open the document: the post plans again
+            self._saved_plans = None
+            FreeCAD.Console.PrintLog("Groove: saved plans not read: %s: %s\n" % (type(e).__name__, e))
 
     # -- properties -------------------------------------------------------------
     def _add_missing_properties(self, obj: object) -> None:

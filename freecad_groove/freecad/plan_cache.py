@@ -37,7 +37,7 @@ import os
 import re
 import struct
 import zlib
-from typing import Optional
+from typing import NamedTuple, Optional
 
 from .. import __version__
 from ..engine import GroovingTool, MachineState, Settings
@@ -263,20 +263,34 @@ def _moves(data: dict) -> list[list[Move]]:
     return out
 
 
-def unpack(text: str, stamp: Optional[str] = None) -> Optional[list[GroovePlan]]:
-    """The plans of a pack() text (their ``geometry`` None); None when it is
-    not one, or when ``stamp`` is given and is not its fingerprint."""
-    data = _unpacked(text)
-    if data is None or (stamp is not None and data["fingerprint"] != stamp):
-        return None
-    if data["fields"] != {k: _names(c) for k, c in DATACLASSES.items()}:  # saved by other code (unpack(text) only)
+class SavedPlans(NamedTuple):
+    """What an op's proxy read from the opened document: the pack() text (saved
+    again as it is while not used), its fingerprint and its plans."""
+
+    text: str
+    fingerprint: str
+    plans: list[GroovePlan]
+
+
+def read(text: object) -> Optional[SavedPlans]:
+    """The SavedPlans of a pack() text; None when it is not one (or none)."""
+    data = _unpacked(text) if isinstance(text, str) and text else None
+    if data is None or data["fields"] != {k: _names(c) for k, c in DATACLASSES.items()}:  # saved by other code
         return None
     faces = [_face(row) for row in data["faces"]]
     settings = [_settings(row) for row in data["settings"]]
     columns = data["plans"]
-    return [GroovePlan(faces[face], index, position, Cycle93(*cycle), settings[setting], MachineState(*start),
-                       start_on, [LinkMove(x, z) for x, z in link], moves, None,
-                       [CycleWarning(*w) for w in warnings])
-            for face, setting, index, position, cycle, start, start_on, link, warnings, moves in zip(
-                columns["face"], columns["settings"], columns["index"], columns["position"], columns["cycle"],
-                columns["start"], columns["start_on"], columns["link"], columns["warnings"], _moves(data["moves"]))]
+    plans = [GroovePlan(faces[face], index, position, Cycle93(*cycle), settings[setting], MachineState(*start),
+                        start_on, [LinkMove(x, z) for x, z in link], moves, None,
+                        [CycleWarning(*w) for w in warnings])
+             for face, setting, index, position, cycle, start, start_on, link, warnings, moves in zip(
+                 columns["face"], columns["settings"], columns["index"], columns["position"], columns["cycle"],
+                 columns["start"], columns["start_on"], columns["link"], columns["warnings"], _moves(data["moves"]))]
+    return SavedPlans(text, data["fingerprint"], plans)
+
+
+def unpack(text: str, stamp: Optional[str] = None) -> Optional[list[GroovePlan]]:
+    """The plans of a pack() text (their ``geometry`` None); None when it is
+    not one, or when ``stamp`` is given and is not its fingerprint."""
+    saved = read(text)
+    return saved.plans if saved is not None and (stamp is None or saved.fingerprint == stamp) else None
