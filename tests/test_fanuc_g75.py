@@ -259,6 +259,7 @@ def test_haas_inch_retract_setting():
         (FanucG75(e=-0.5, X=40.0, P=2000), ("R(e)=-0.5", "not less than 0")),
         (FanucG75(e=0.12345, X=40.0, P=2000), ("R(e)=0.12345", "4 decimal places")),
         (FanucG75(X=40.0, P=2000, F=0.0), ("F=0", "greater than 0")),
+        (FanucG75(X=40.0, P=2000, F=0.0019685), ("F=0.0019685", "6 decimal places")),
         (FanucG74(X=30.0, P=2000), ("G74", "Z:", "must be programmed (Z or W")),
         (FanucG74(Z=-4.0, P=2000), ("Q:", "must be programmed")),
         (HaasG75(X=40.0), ("I:", "must be programmed")),
@@ -343,6 +344,7 @@ def test_a_word_with_too_many_digits_is_named_and_shortened(cls, text, word):
 
 value = st.integers(-999999999, 999999999).map(lambda n: n / 10000)
 positive = st.integers(1, 999999999).map(lambda n: n / 10000)
+feeds = st.integers(1, 99999999999).map(lambda n: n / 1000000)  # F: 6 decimals
 not_negative = st.integers(0, 999999999).map(lambda n: n / 10000)
 count = st.integers(1, 99999999)
 optional = lambda s: st.none() | s  # noqa: E731
@@ -359,10 +361,20 @@ def models(draw):
     words[cls.PECK] = draw(count if fanuc else positive)
     words[cls.PITCH] = draw(optional(st.just(0) | count if fanuc else not_negative))
     words[cls.RELIEF] = draw(optional(not_negative))
-    words["F"] = draw(optional(positive))
+    words["F"] = draw(optional(feeds))
     if fanuc:
         words["e"] = draw(optional(not_negative))
     return cls(**words)
+
+
+@pytest.mark.parametrize("cls", [FanucG75, HaasG75])
+def test_an_inch_feed_per_revolution_keeps_six_decimals(cls):
+    """0.05 mm/rev in inch is 0.0019685 in/rev: F0.001969 is written and read back as it is, where 4 decimals
+    (F0.002) would cut 1.6 % faster; the other words stay at 4 decimals."""
+    peck = {cls.PECK: 800 if cls is FanucG75 else 0.08}
+    model = cls(X=2.0, F=0.001969, **peck).validate()
+    assert "F0.001969" in model.emit().split()
+    assert cls.parse(model.emit()) == model
 
 
 @given(models())

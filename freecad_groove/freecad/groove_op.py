@@ -33,13 +33,16 @@ the face) and each of ``GrooveCount`` grooves:
    model alone without stock), then one axis at a time: G0 Z along the
    outside of the stock, then G0 X in, to a start point on the cylinder or
    below the part; G0 X above the stock, then G0 Z down, to one beyond the
-   +Z end (internal and face grooves).
+   +Z end (internal and face grooves). After the last groove the op goes
+   back to the safe start point the same way, reversed (links.py retreat),
+   so the tool ends at clearance as after CAM's own ops.
    Apart from that the stock is not taken into account: the op assumes the
    part was turned to the model's contour before grooving.
 
 The Path: a comment with the op's label (the base class), G18, then per
-groove a comment naming the face and the call, the link rapids (G0), and the
-engine's expansion: G0, G1 with F = the op's feed (cutting.py: FeedPerRev, the
+groove a comment naming the face and the call, the link rapids (G0), the
+engine's expansion and, after the last groove, the rapids back to the safe
+start point. The expansion: G0, G1 with F = the op's feed (cutting.py: FeedPerRev, the
 tool controller's HorizFeed, the default) in FreeCAD's internal mm/s like every
 CAM op (a feed per revolution at the first groove's spindle speed; the posts
 write the op's own feed and spindle, cutting.py), G4 P<seconds>.
@@ -76,7 +79,7 @@ from ..engine.numbers import format_value
 from . import plan_cache
 from .cutting import CuttingData, cutting_data
 from .faces import GrooveFace, analyse_face, element_name
-from .groove_plan import GroovePlan, plan_groove
+from .groove_plan import GroovePlan, blade_origin, plan_groove
 from .groove_properties import (  # noqa: F401 - this module's API too
     CHAMFER_MEASURES,
     DERIVED,
@@ -160,13 +163,7 @@ def path_commands(plans: list[GroovePlan], feed_mm_per_s: float) -> list:
     for plan in plans:
         commands.append(Path.Command(_comment("%s groove %d: %s" % (plan.face.name, plan.index + 1,
                                                                     plan.cycle.emit()))))
-        for step in plan.link:
-            words = {}
-            if step.x is not None:
-                words["X"] = step.x
-            if step.z is not None:
-                words["Z"] = step.z
-            commands.append(Path.Command("G0", words))
+        commands.extend(_link_commands(plan.link))
         for move in plan.moves:
             if move.kind == RAPID:
                 commands.append(Path.Command("G0", {"X": move.x, "Z": move.z}))
@@ -174,7 +171,14 @@ def path_commands(plans: list[GroovePlan], feed_mm_per_s: float) -> list:
                 commands.append(Path.Command("G1", {"X": move.x, "Z": move.z, "F": feed_mm_per_s}))
             elif move.kind == DWELL:
                 commands.append(Path.Command("G4", {"P": move.p}))
+        commands.extend(_link_commands(plan.retreat))
     return commands
+
+
+def _link_commands(steps: list) -> list:
+    """A G0 per link step [LinkMove], with the axes it moves."""
+    return [Path.Command("G0", {axis: value for axis, value in zip("XZ", step) if value is not None})
+            for step in steps]
 
 
 def op_error(obj: object) -> Optional[str]:
@@ -497,6 +501,8 @@ class ObjectGroove(PathOp.ObjectOp):
                 previous = plans[-1] if plans else None
                 plans.append(plan_groove(face, index, self.position(obj, index), call, settings, envelope, feed,
                                          previous, origin))
+        last = plans[-1]
+        last.retreat = envelope.retreat(last.start_point, last.start_on, blade_origin(origin, last.cycle, settings))
         return plans
 
     def plan_with(self, obj: object, values: dict) -> list[GroovePlan]:

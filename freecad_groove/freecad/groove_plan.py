@@ -57,6 +57,8 @@ class GroovePlan:
               start point (for the first groove: a G0 to the op's safe start point
               first, links.SafeEnvelope.safe_start) to ``start``
     moves     the engine's expansion of ``cycle`` from ``start``
+    retreat   G0 moves [LinkMove] after the groove, back to the op's safe start
+              point (links.SafeEnvelope.retreat): the op's last groove only
     geometry  ``cycle.geometry(settings)``: the groove's profile (the preview draws it)
     warnings  the call's CycleWarnings (what it cannot do as programmed: allowances
               that leave the blade no room); the op prints them on each recompute
@@ -71,6 +73,7 @@ class GroovePlan:
     start_on: str
     link: list[LinkMove] = field(default_factory=list)
     moves: list[Move] = field(default_factory=list)
+    retreat: list[LinkMove] = field(default_factory=list)
     geometry: Optional[GrooveGeometry] = None
     warnings: list[CycleWarning] = field(default_factory=list)
 
@@ -217,5 +220,5 @@ def plan_groove(face: GrooveFace, index: int, position: float, call: Cycle93, se
         link = envelope.link(None, None, (start.x, start.z), start_on, first_origin)
     else:
         link = envelope.link(previous.start_point, previous.start_on, (start.x, start.z), start_on)
-    return GroovePlan(face, index, position, call, settings, start, start_on, link, moves, geometry,
-                      cycle93_warnings(geometry))
+    return GroovePlan(face, index, position, call, settings, start, start_on, link, moves, geometry=geometry,
+                      warnings=cycle93_warnings(geometry))

@@ -216,3 +216,11 @@ class SafeEnvelope:
         writer.onto(target_on, levels, x=target[0], z=target[1])
         writer.go(x=target[0], z=target[1])
         return moves + writer.moves
+
+    def retreat(self, last: Point, last_on: str, origin: Point) -> list[LinkMove]:
+        """G0 moves from the op's last start point ``last`` (on the envelope
+        surface ``last_on``) back to its safe start point ``origin``: the way
+        the first link would come in from there, reversed, one axis at a time
+        (a program ends where a CAM op leaves the tool: at clearance)."""
+        way_in = [(step.x, step.z) for step in self.link(None, None, last, last_on, origin)]
+        return [LinkMove(*point) for point in reversed(way_in[:-1])]

@@ -59,7 +59,7 @@ from .groove_plan import GroovePlan
 from .groove_properties import DERIVED, PROPERTIES
 from .links import LinkMove
 
-FORMAT = 2  # of the saved data; a new format never reads an old one
+FORMAT = 3  # of the saved data (2: a plan keeps its retreat; 3: column-wise); a new format never reads an old one
 # Property types left out of an object's fingerprint: outputs (Path), shapes
 # (digested on their own), the proxy, expressions (their results are values).
 SKIPPED_TYPES = ("Part::PropertyPartShape", "Path::PropertyPath", "App::PropertyPythonObject",
@@ -224,6 +224,7 @@ def pack(plans: list[GroovePlan], stamp: str) -> str:
         "cycle": [_row(plan.cycle) for plan in plans], "start": [_row(plan.start) for plan in plans],
         "start_on": [plan.start_on for plan in plans],
         "link": [[[step.x, step.z] for step in plan.link] for plan in plans],
+        "retreat": [[[step.x, step.z] for step in plan.retreat] for plan in plans],
         "warnings": [[[w.cycle, w.parameter, w.message] for w in plan.warnings] for plan in plans],
     }
     data = {"format": FORMAT, "fingerprint": stamp, "fields": {k: _names(c) for k, c in DATACLASSES.items()},
@@ -291,11 +292,12 @@ def read(text: object) -> Optional[SavedPlans]:
     settings = [_settings(row) for row in data["settings"]]
     columns = data["plans"]
     plans = [GroovePlan(faces[face], index, position, Cycle93(*cycle), settings[setting], MachineState(*start),
-                        start_on, [LinkMove(x, z) for x, z in link], moves, None,
-                        [CycleWarning(*w) for w in warnings])
-             for face, setting, index, position, cycle, start, start_on, link, warnings, moves in zip(
+                        start_on, [LinkMove(x, z) for x, z in link], moves, [LinkMove(x, z) for x, z in retreat],
+                        None, [CycleWarning(*w) for w in warnings])
+             for face, setting, index, position, cycle, start, start_on, link, retreat, warnings, moves in zip(
                  columns["face"], columns["settings"], columns["index"], columns["position"], columns["cycle"],
-                 columns["start"], columns["start_on"], columns["link"], columns["warnings"], _moves(data["moves"]))]
+                 columns["start"], columns["start_on"], columns["link"], columns["retreat"], columns["warnings"],
+                 _moves(data["moves"]))]
     return SavedPlans(text, data["fingerprint"], plans)
 
 

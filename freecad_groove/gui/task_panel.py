@@ -46,11 +46,13 @@ from .widgets import (
     ERROR_LABEL,
     WARNING_LABEL,
     QuantityFields,
+    ScaledPicture,
     add_error_label,
     add_label,
     child,
     connect_changed,
     fill_combo,
+    fit_narrow_docks,
     load_form,
     mark_invalid,
     mark_warned,
@@ -58,12 +60,11 @@ from .widgets import (
     select_data,
     show_error,
     show_warnings,
-    svg_pixmap,
 )
 
 translate = FreeCAD.Qt.translate
 
-DIAGRAM_SIZE = (320, 151)  # px: the groove picture (groove_section.svg is 360 x 170)
+DIAGRAM_SIZE = (360, 170)  # px: the groove picture at most (groove_section.svg is 360 x 170)
 PREVIEW_DELAY_MS = 20  # coalesces the signals of one edit into one re-plan
 
 # (widget name, op property): quantity fields (Gui::QuantitySpinBox)
@@ -78,14 +79,15 @@ GROOVE_QUANTITIES = (
 CORNERS = ("EdgeCorner1", "EdgeCorner2", "BaseCorner1", "BaseCorner2")
 
 # Enumeration texts as shown (translated); the op stores the untranslated value.
+# Short: a combo box is as wide as its longest text, and the page must fit 1.0's narrow dock.
 CORNER_TYPE_TEXT = {
     "None": FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "None"),
     "Radius": FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Radius"),
     "Chamfer": FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Chamfer"),
 }
 CHAMFER_MEASURE_TEXT = {
-    groove_op.CHAMFER_MEASURES[0]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Chamfer length (CHF)"),
-    groove_op.CHAMFER_MEASURES[1]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Leg length (CHR)"),
+    groove_op.CHAMFER_MEASURES[0]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Length (CHF)"),
+    groove_op.CHAMFER_MEASURES[1]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Leg (CHR)"),
 }
 
 
@@ -96,6 +98,8 @@ class BaseGeometryPage(PathOpGui.TaskPanelBaseGeometryPage):
         form = super().getForm()
         self.kind_label = add_label(form, "grooveKind")
         add_error_label(form)
+        # Now: FreeCAD's task view sets its minimum width from the pages once, when it shows them.
+        fit_narrow_docks(form)
         return form
 
     def supportsEdges(self):
@@ -137,11 +141,8 @@ class GroovePage(PathOpGui.TaskPanelPage):
         for name in ("edgeCorner1Type", "edgeCorner2Type", "baseCorner1Type", "baseCorner2Type"):
             fill_combo(child(form, name), CORNER_TYPE_TEXT)
         fill_combo(form.chamferMeasure, CHAMFER_MEASURE_TEXT)
-        diagram = child(form, "diagram")
-        diagram.setPixmap(svg_pixmap(os.path.join(PANELS, "groove_section.svg"), DIAGRAM_SIZE[0], DIAGRAM_SIZE[1]))
-        # The picture never sets the page's width: in a narrow task dock its sides are cut, not the fields.
-        diagram.setSizePolicy(QtGui.QSizePolicy.Ignored, QtGui.QSizePolicy.Fixed)
-        diagram.setAlignment(QtCore.Qt.AlignCenter)
+        # The picture follows the dock's width (never sets it): whole, smaller in a narrow dock.
+        self.diagram = ScaledPicture(child(form, "diagram"), os.path.join(PANELS, "groove_section.svg"), *DIAGRAM_SIZE)
         # The message goes first: the page is taller than the task view.
         error = child(form, ERROR_LABEL)
         error.parentWidget().layout().removeWidget(error)
@@ -344,6 +345,11 @@ class GrooveTaskPanel(PathOpGui.TaskPanel):
     while the groove is invalid."""
 
     def __init__(self, obj, deleteOnReject, opPage, selectionFactory):
+        # Before CAM's panel shows the op and hides the model and stock: that marks the document modified.
+        self.gui_document = FreeCADGui.getDocument(obj.Document.Name)
+        self.was_modified = self.gui_document.Modified
+        self.looks_before = document_looks(obj.Document)
+        self.applied = False  # Apply wrote the panel's values into the op
         super().__init__(obj, deleteOnReject, opPage, selectionFactory)
         self.groove_page = opPage
         tool_page = ToolPage(obj, obj.Proxy.opFeatures(obj))
@@ -371,6 +377,11 @@ class GrooveTaskPanel(PathOpGui.TaskPanel):
             reversed_order = at == 0 and len(self.form) > 1
             self.form.insert(at + 1 if reversed_order else at, page.form)
 
+    def setupUi(self):
+        super().setupUi()
+        for page in self.featurePages:  # FreeCAD's own pages too, now filled (1.1's tool controller editor)
+            fit_narrow_docks(page.form)
+
     @property
     def valid(self) -> bool:
         return self.groove_page.error is None
@@ -388,6 +399,7 @@ class GrooveTaskPanel(PathOpGui.TaskPanel):
 
     def modifyStandardButtons(self, buttonBox):
         super().modifyStandardButtons(buttonBox)
+        fit_narrow_docks(buttonBox)  # OK, Cancel, Apply: three 80 px buttons are wider than 1.0's dock
         self.update_buttons()
 
     def _refuse(self):
@@ -400,13 +412,42 @@ class GrooveTaskPanel(PathOpGui.TaskPanel):
     def accept(self, resetEdit=True):
         if self._refuse():
             return False
+        unchanged = not self.isDirty() and self._left_alone()
         super().accept(resetEdit)
+        self._keep_unmodified(unchanged)
         return True
 
+    def reject(self, resetEdit=True):
+        unchanged = self._left_alone()
+        result = super().reject(resetEdit)
+        self._keep_unmodified(unchanged)
+        return result
+
     def clicked(self, button):
-        if button == QtGui.QDialogButtonBox.Apply and self._refuse():
-            return
+        if button == QtGui.QDialogButtonBox.Apply:
+            if self._refuse():
+                return
+            self.applied = self.applied or self.isDirty()
         super().clicked(button)
+
+    def _left_alone(self) -> bool:
+        """An existing op, and nothing applied: the panel wrote nothing into it."""
+        return not self.deleteOnReject and not self.applied
+
+    def _keep_unmodified(self, unchanged: bool) -> None:
+        """A document that was saved stays unmodified when the panel changed
+        nothing in it: CAM's panel changes only the Visibility of the op, model,
+        stock and Job while it is open, which is not worth asking to save.
+        Called once the panel is closed: every object must be shown or hidden
+        as before, and no object added (a grooving tool controller)."""
+        if unchanged and not self.was_modified and document_looks(self.gui_document.Document) == self.looks_before:
+            self.gui_document.Modified = False
+
+
+def document_looks(doc: object) -> dict:
+    """{object name: whether it is shown} of every object of ``doc``."""
+    return {o.Name: bool(o.ViewObject.Visibility) if getattr(o, "ViewObject", None) is not None else None
+            for o in doc.Objects}
 
 
 class ViewProvider(PathOpGui.ViewProvider):

@@ -37,15 +37,83 @@ def load_form(name: str) -> object:
     return form
 
 
+FIELD_SAMPLE = "00.00 mm"  # a field always shows this much text whole
+FIELD_FRAME = 30  # px: a spin box's frame, margins and up/down buttons beside its text
+BUTTON_PADDING = 16  # px: a push button's frame and margins beside its text
+COMBO_WIDE = 110  # px: a combo box wider than this (a tool controller's name) may elide
+COMBO_CHARS = 8  # its own width then, in characters
+FORM_ROW = 190  # px: a form row in a group box of 1.0's default combo view
+WRAP_WIDER_THAN = 200  # px: a label whose one line is wider than this wraps
+
+
 def fit_narrow_docks(form: object) -> None:
-    """Let a page fit the task dock's default width: a spin box's size hint
-    is the text of its largest value with the unit (wider than any real
-    value), so spin boxes take the width their row leaves instead; labels
-    wrap (the message labels already do)."""
+    """Let a page fit the task dock's default width (FreeCAD 1.0's combo
+    view is the narrowest). Idempotent: the panel runs it again on FreeCAD's
+    own pages once they are filled.
+
+    A spin box's size hint is the text of its largest value with the unit
+    (wider than any real value), so wide spin boxes take the width their row
+    leaves, but never less than FIELD_SAMPLE; a form's labels go above its
+    fields when a row does not fit 1.0's dock; long one-line labels wrap; push buttons may
+    shrink to their text (the style's 80 px minimum makes a row of three wider
+    than the dock)."""
     for box in form.findChildren(QtGui.QAbstractSpinBox):
-        box.setSizePolicy(QtGui.QSizePolicy.Ignored, box.sizePolicy().verticalPolicy())
+        least = text_width(box, FIELD_SAMPLE) + FIELD_FRAME
+        if box.sizeHint().width() > least or box.sizePolicy().horizontalPolicy() == QtGui.QSizePolicy.Ignored:
+            box.setSizePolicy(QtGui.QSizePolicy.Ignored, box.sizePolicy().verticalPolicy())
+            box.setMinimumWidth(least)
     for layout in form.findChildren(QtGui.QFormLayout):
-        layout.setRowWrapPolicy(QtGui.QFormLayout.WrapLongRows)
+        choose_form_rows(layout)
+    for label in form.findChildren(QtGui.QLabel):
+        if label.text() and not label.wordWrap() and label.sizeHint().width() > WRAP_WIDER_THAN:
+            label.setWordWrap(True)
+    for button in form.findChildren(QtGui.QPushButton):
+        needed = text_width(button, button.text()) + BUTTON_PADDING
+        if not button.icon().isNull():
+            needed += button.iconSize().width() + BUTTON_PADDING // 2
+        if button.text() and needed < button.sizeHint().width():
+            button.setMinimumWidth(needed)
+    for combo in form.findChildren(QtGui.QComboBox):
+        if combo.sizeHint().width() > COMBO_WIDE:
+            fit_combo(combo)
+    for view in form.findChildren(QtGui.QAbstractItemView):  # FreeCAD's face list would stay 256 px wide
+        view.setSizePolicy(QtGui.QSizePolicy.Expanding, view.sizePolicy().verticalPolicy())
+
+
+def fit_combo(combo: object) -> None:
+    """A combo box with long texts (a tool controller's name) as wide as its
+    row allows: its own width is that of COMBO_CHARS characters at most
+    (longer texts are elided in the box, whole in its list)."""
+    longest = max([len(combo.itemText(i)) for i in range(combo.count())] + [1])
+    combo.setMinimumContentsLength(min(longest, COMBO_CHARS))
+    combo.setSizeAdjustPolicy(QtGui.QComboBox.AdjustToMinimumContentsLengthWithIcon)
+    combo.setSizePolicy(QtGui.QSizePolicy.Expanding, combo.sizePolicy().verticalPolicy())
+
+
+def choose_form_rows(layout: object) -> None:
+    """A form's rows side by side (label, field) where both fit in FORM_ROW
+    px, else every label above its field. Chosen once, not as the dock
+    resizes: Qt's WrapLongRows leaves a field it moved under its label where
+    the wider layout put it, cut off at the right, and wrapping labels get
+    squeezed letter by letter. A form whose .ui asks for WrapAllRows keeps it."""
+    if layout.rowWrapPolicy() == QtGui.QFormLayout.WrapAllRows:
+        return
+    labels = fields = 0
+    for row in range(layout.rowCount()):
+        label = layout.itemAt(row, QtGui.QFormLayout.LabelRole)
+        field = layout.itemAt(row, QtGui.QFormLayout.FieldRole)
+        labels = max(labels, label.sizeHint().width() if label is not None else 0)
+        fields = max(fields, field.minimumSize().width() if field is not None else 0)
+    side_by_side = labels + max(layout.horizontalSpacing(), 6) + fields <= FORM_ROW
+    layout.setRowWrapPolicy(QtGui.QFormLayout.DontWrapRows if side_by_side else QtGui.QFormLayout.WrapAllRows)
+
+
+def text_width(widget: object, text: str) -> int:
+    """Width in px of ``text`` in the widget's font."""
+    metrics = widget.fontMetrics()
+    if hasattr(metrics, "horizontalAdvance"):
+        return metrics.horizontalAdvance(text)
+    return metrics.width(text)
 
 
 def child(form: object, name: str) -> object:
@@ -63,6 +131,36 @@ def svg_pixmap(path: str, width: int, height: int) -> object:
     QtSvg.QSvgRenderer(path).render(painter)
     painter.end()
     return pixmap
+
+
+class ScaledPicture(QtCore.QObject):
+    """Draws an SVG into a QLabel at the label's width, at most ``width`` x
+    ``height`` px and keeping that ratio: the picture never sets the page's
+    width and, in a narrow dock, shrinks instead of losing its sides."""
+
+    def __init__(self, label: object, path: str, width: int, height: int):
+        super().__init__(label)
+        self.label, self.path, self.size, self.drawn = label, path, (width, height), None
+        label.setSizePolicy(QtGui.QSizePolicy.Ignored, QtGui.QSizePolicy.Fixed)
+        label.setMinimumSize(0, 0)
+        label.setAlignment(QtCore.Qt.AlignCenter)
+        label.installEventFilter(self)
+        self.draw(width)
+
+    def eventFilter(self, watched: object, event: object) -> bool:
+        if event.type() == QtCore.QEvent.Resize:
+            self.draw(watched.width())
+        return False
+
+    def draw(self, available: int) -> None:
+        """Render the picture as wide as ``available`` px allow (no change: nothing to do)."""
+        width = max(1, min(int(available), self.size[0]))
+        if width == self.drawn:
+            return
+        self.drawn = width
+        height = max(1, round(width * self.size[1] / self.size[0]))
+        self.label.setPixmap(svg_pixmap(self.path, width, height))
+        self.label.setFixedHeight(height)
 
 
 def fill_combo(combo: object, texts: dict) -> None:

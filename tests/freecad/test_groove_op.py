@@ -142,6 +142,15 @@ def first_link(start, on="side", safe=SAFE_START):
     return [(sx, sz), (x, sz), (x, z)] if on == "top" else [(sx, sz), (sx, z), (x, z)]
 
 
+def way_back(start, on="side", safe=SAFE_START):
+    """The rapids after the op's last groove, from its start point back to the
+    safe start point: the first link's steps reversed ("top": up in Z above
+    the stock, then out in X; else out in X beyond the stock's radius, then
+    up in Z)."""
+    (x, z), (sx, sz) = start, safe
+    return [(x, sz), (sx, sz)] if on == "top" else [(sx, z), (sx, sz)]
+
+
 TOOL = GroovingTool(BLADE, 0.2)  # tool_width 3, tool_corner_radius 0.2, the minus reference corner
 FEED_MM_S = FEED_MM_MIN / 60.0  # the tool controller's feed as the Path holds it (FreeCAD's mm/s)
 # A tool controller without feed or speed (a new Job's): the op's defaults, 0.05 mm/rev at 500 rpm, in mm/s
@@ -155,14 +164,18 @@ PATH_FORM = {
 }
 
 
-def groove_path(link, call, start, tool=TOOL, feed=FEED_MM_S):
+def groove_path(link, call, start, tool=TOOL, feed=FEED_MM_S, retreat=()):
     """The Path the op must write for one groove, after its comment: every
     link step a G0 with the axes it moves, then the engine's expansion of
-    ``call`` from ``start`` (x, z) with ``tool`` in PATH_FORM (``feed`` in mm/s)."""
-    path = [("G0", {axis: value for axis, value in zip("XZ", step) if value is not None}) for step in link]
+    ``call`` from ``start`` (x, z) with ``tool`` in PATH_FORM (``feed`` in mm/s),
+    then the ``retreat`` steps (the op's last groove) as G0."""
+    def rapids(steps):
+        return [("G0", {axis: value for axis, value in zip("XZ", step) if value is not None}) for step in steps]
+
+    path = rapids(link)
     for move in call.expand(MachineState(x=start[0], z=start[1]), Settings(tool=tool)):
         path.append(PATH_FORM[move.kind](move, feed))
-    return path
+    return path + rapids(retreat)
 
 
 def case_path(key, start=None, tool=TOOL, feed=FEED_MM_S, safe=SAFE_START, **words):
@@ -173,7 +186,8 @@ def case_path(key, start=None, tool=TOOL, feed=FEED_MM_S, safe=SAFE_START, **wor
     words = dict(dict(widg=kw.get("width", 4.0), depg=kw.get("depth", 2.0), typ=typ), **words)
     call = cycle93(axfa, axsa, angc=angc, **words)
     start = STARTS[key] if start is None else start
-    return groove_path(first_link(start, "top" if key == "bore" else "side", safe), call, start, tool, feed)
+    on = "top" if key == "bore" else "side"
+    return groove_path(first_link(start, on, safe), call, start, tool, feed, way_back(start, on, safe))
 
 
 def assert_same_moves(actual, expected, tol=1e-6):
@@ -262,8 +276,9 @@ def test_several_grooves_pitch_toward_minus_z(shop):
     moves = path_moves(op)
     # the blade 3 wide over each groove's +Z edge, from one to the next along Z on the safe cylinder
     expected = []
-    for axsa, link in ((28.0, first_link((R_SAFE, 25.0))), (22.0, [(R_SAFE, 19.0)]), (16.0, [(R_SAFE, 13.0)])):
-        expected += groove_path(link, cycle93(20.0, axsa, 5, dwt=0.5), (R_SAFE, axsa - BLADE))
+    for axsa, link, back in ((28.0, first_link((R_SAFE, 25.0)), ()), (22.0, [(R_SAFE, 19.0)], ()),
+                             (16.0, [(R_SAFE, 13.0)], way_back((R_SAFE, 13.0)))):
+        expected += groove_path(link, cycle93(20.0, axsa, 5, dwt=0.5), (R_SAFE, axsa - BLADE), retreat=back)
     assert_same_moves(moves, expected)
     assert any(n == "G4" and p["P"] == pytest.approx(0.5) for n, p in moves)
 
@@ -401,11 +416,13 @@ def test_spherical_and_toroidal_faces_do_not_break_grooves_elsewhere(doc):
     assert op_error(op) is None
     assert path_moves(op)
     # the ball's top is Z70: the op starts 1 mm beyond the default stock (the model's bounding box, which
-    # OCC makes loose around the torus, grown 1 mm), outside the radius of its corner, then stays out of the ball
+    # OCC makes loose around the torus, grown 1 mm), outside the radius of its corner, stays out of the ball and
+    # goes back there at the end
     stock = job.Stock.Shape.BoundBox
     assert stock.ZMax == pytest.approx(71.0) and min(stock.XMax, stock.YMax) >= 22.0 + 1.0
-    first, *rest = path_moves(op)
-    assert first == ("G0", {"X": pytest.approx(math.hypot(stock.XMax, stock.YMax) + 1.0), "Z": pytest.approx(72.0)})
+    first, *rest, last = path_moves(op)
+    safe = ("G0", {"X": pytest.approx(math.hypot(stock.XMax, stock.YMax) + 1.0), "Z": pytest.approx(72.0)})
+    assert first == safe and last == safe  # it ends where it started
     assert max(words["Z"] for _n, words in rest if "Z" in words) < 71.0 + 1e-9
     sphere = next(i + 1 for i, f in enumerate(shape.Faces) if isinstance(f.Surface, Part.Sphere))
     bad = make_groove(job, (shaft, "Face%d" % sphere))
@@ -503,8 +520,9 @@ def test_bore_open_toward_minus_z_is_entered_from_below(doc):
     # from the safe start point (the R20 x 50 body's default stock) down outside the stock to the start point's
     # level below the part, in to the start point; the Job's own tool controller feeds at 0
     start = (5.0, -4.0)
-    expected = groove_path(first_link(start, "bottom", safe_start(20.0, 50.0)), cycle93(6.0, 30.0, 7, depg=1.0),
-                           start, feed=DEFAULT_FEED_MM_S)
+    safe = safe_start(20.0, 50.0)
+    expected = groove_path(first_link(start, "bottom", safe), cycle93(6.0, 30.0, 7, depg=1.0),
+                           start, feed=DEFAULT_FEED_MM_S, retreat=way_back(start, "bottom", safe))
     assert_same_moves(path_moves(op), expected)
 
 
@@ -523,9 +541,9 @@ def test_face_groove_inside_a_recess_is_approached_along_z(doc):
     _rapids_outside(op, part)
     # a column over the first plunge (the blade's minus corner 3 inside the groove's outer edge R14.5)
     start = (14.5 - BLADE, 31.0)
-    expected = groove_path(first_link(start, "top", safe_start(20.0, 30.0)), cycle93(14.5, 25.0, 6, 90.0, widg=3.5),
-                           start,
-                           feed=DEFAULT_FEED_MM_S)
+    safe = safe_start(20.0, 30.0)
+    expected = groove_path(first_link(start, "top", safe), cycle93(14.5, 25.0, 6, 90.0, widg=3.5),
+                           start, feed=DEFAULT_FEED_MM_S, retreat=way_back(start, "top", safe))
     assert_same_moves(path_moves(op), expected)
     # the shoulder-like outer end face (R15..R20 at Z30) is reached radially
     rim = _find(part, lambda f: f.surface == "plane" and abs(f.z_min - 30) < 1e-9 and f.r_min > 14)
@@ -551,8 +569,9 @@ def test_steep_cone_takes_a_face_groove(doc):
     _rapids_outside(op, part)
     # on the safe cylinder R31, 1 mm above the cone where the blade (R23..26) plunges first: at R23
     start = (31.0, 10 + (30 - 23) * TAN_30 + 1.0)
-    expected = groove_path(first_link(start, safe=safe_start(30.0, 10 + h)), cycle93(26.0, 10 + 4 * TAN_30, 6, 120.0),
-                           start, feed=DEFAULT_FEED_MM_S)
+    safe = safe_start(30.0, 10 + h)
+    expected = groove_path(first_link(start, safe=safe), cycle93(26.0, 10 + 4 * TAN_30, 6, 120.0),
+                           start, feed=DEFAULT_FEED_MM_S, retreat=way_back(start, safe=safe))
     assert_same_moves(path_moves(op), expected)
 
 
@@ -571,7 +590,7 @@ def test_one_op_on_several_faces_links_along_the_envelope(shop):
     bore_start, cylinder_start, end_start = (5.0, Z_TOP), (R_SAFE, 25.0 - BLADE), (R_SAFE, Z_BOTTOM)
     expected = groove_path(first_link(bore_start, "top"), cycle93(6.0, 55.0, 7, depg=1.0), bore_start)
     expected += groove_path([(R_SAFE, Z_TOP), cylinder_start], cycle93(20.0, 25.0, 5, depg=1.0), cylinder_start)
-    expected += groove_path([end_start], cycle93(11.0, 0.0, 8, 90.0, depg=1.0), end_start)
+    expected += groove_path([end_start], cycle93(11.0, 0.0, 8, 90.0, depg=1.0), end_start, retreat=way_back(end_start))
     assert_same_moves(path_moves(op), expected)
     for plan in plans[1:]:
         prev = None
@@ -593,10 +612,11 @@ def _replace_stock(shop, stock):
 
 
 @pytest.mark.parametrize("key", ["cylinder", "shoulder", "left_end", "bore"])
-def test_the_op_starts_at_the_safe_point_and_leaves_it_outside_the_stock(shop, key):
+def test_the_op_starts_and_ends_at_the_safe_point_outside_the_stock(shop, key):
     """A bar R25 from Z-1 to Z65 (5 mm over the R20 x Z0..60 shaft's radius and +Z end): the first move is a rapid
     to the safe start point 1 mm (the clearance) outside the bar and beyond its end, X26 Z66; the link rapids from
-    there stay out of the bar but the last, which enters it straight at the first groove's start point."""
+    there stay out of the bar but the last, which enters it straight at the first groove's start point. After the
+    groove the op goes back to X26 Z66 the same way: out of the bar straight, then outside it."""
     doc, _shaft, job, _tc = shop
     placement = FreeCAD.Placement(V(0, 0, -1), FreeCAD.Rotation())
     _replace_stock(shop, PathStock.CreateCylinder(job, 25.0, 66.0, placement))
@@ -609,6 +629,12 @@ def test_the_op_starts_at_the_safe_point_and_leaves_it_outside_the_stock(shop, k
     bar = SafeEnvelope([job.Stock.Shape], 1.0)
     assert bar.model_radius == pytest.approx(25.0) and (bar.z_min, bar.z_max) == (pytest.approx(-1), pytest.approx(65))
     for a, b in zip(link, link[1:-1]):
+        assert not bar.hits(a, b), (a, b)
+    (x, z), on = STARTS[key], "top" if key == "bore" else "side"
+    back = [(x, 66.0), (26.0, 66.0)] if on == "top" else [(26.0, z), (26.0, 66.0)]
+    assert [tuple(step) for step in plan.retreat] == back
+    assert_same_moves(path_moves(op)[-2:], [("G0", {"X": x, "Z": z}) for x, z in back])
+    for a, b in zip(back, back[1:]):
         assert not bar.hits(a, b), (a, b)
 
 

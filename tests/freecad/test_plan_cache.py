@@ -142,7 +142,7 @@ def test_restored_plans_are_the_saved_ones(shop):
 
     def types(plans):  # 1 and 1.0 are equal but are not written alike: the saved data keeps each value's type
         return [([type(v) for v in dataclasses.astuple(p.cycle)], [[type(v) for v in move] for move in p.moves],
-                 [[type(v) for v in step] for step in p.link]) for p in plans]
+                 [[type(v) for v in step] for step in p.link + p.retreat]) for p in plans]
 
     assert types(restored) == types(plans)
     assert plan_cache.saved_fingerprint(plan_cache.pack(plans, stamp)) == stamp

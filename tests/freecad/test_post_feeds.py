@@ -199,6 +199,18 @@ def test_inches_writes_inch_values_and_feeds(shop, name):
                                                                                  abs=0.0026)
 
 
+@pytest.mark.parametrize("name", NAMES)
+def test_inch_feeds_per_revolution_keep_six_decimals(shop, name):
+    """0.05 mm/rev is 0.0019685 in/rev: every F word of the inch programs, native (the pecking cycles' F
+    included) and expanded, is that to the output's 6 decimals (0.001969), not 4 (0.002, 1.6 % faster)."""
+    op = groove(shop, "cylinder", width=3, position=2, groove_count=3, pitch=5, feed_per_rev=0.05, spindle_speed=600)
+    for options in ("--inches", "--expand-cycles --inches"):
+        feeds = f_words(export(name, [op], options), name)
+        assert feeds, (name, options)
+        for feed in feeds:
+            assert feed == pytest.approx(0.05 / MM, abs=5e-7), (name, options, feed)
+
+
 def test_the_unit_schema_does_not_change_the_numbers(shop):
     op = groove(shop, "cylinder", feed_per_rev=0.08, spindle_speed=700)
     before = {name: (export(name, [op]), export(name, [op], "--inches")) for name in NAMES}

@@ -177,6 +177,8 @@ def expected_events(op, name, precision=None, diameter=True, shift=(0.0, 0.0)):
                 out.append(("G4", m.p))
             else:
                 out.append(("G0" if m.kind == RAPID else "G1", xr(m.x), zr(m.z), feed if m.kind == FEED else None))
+        for x, z in plan.retreat:  # the op's last groove: back to its safe start point
+            out.append(("G0", xr(x), zr(z), None))
     return out
 
 

@@ -63,6 +63,9 @@ def _expected_moves(plans, dx, dz, feed):
             expected.append([mv.kind, mv.x + dx, mv.z + dz, feed if mv.kind == FEED else None, mv.p])
             if mv.kind != DWELL:
                 x, z = mv.x, mv.z
+        for lx, lz in plan.retreat:  # the op's last groove: back to its safe start point
+            x, z = lx, lz
+            expected.append([RAPID, x + dx, z + dz, None, 0.0])
     return expected
 
 

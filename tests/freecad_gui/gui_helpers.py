@@ -87,9 +87,8 @@ def task_button(panel, which):
     return button
 
 
-def screenshot(name):
-    """Save the main window (task panel and 3D view) as <name>.png and the 3D
-    view alone as <name>-3d.png."""
+def screenshot_folder():
+    """Where screenshots go (made if missing), or None: not saved."""
     share = os.environ.get("FREECAD_GROOVE_SHARE", "")
     folder = os.environ.get("FREECAD_GROOVE_SCREENSHOTS", "screenshots")
     if not os.path.isabs(folder):
@@ -97,6 +96,26 @@ def screenshot(name):
             return None
         folder = os.path.join(share, folder)
     os.makedirs(folder, exist_ok=True)
+    return folder
+
+
+def screenshot_widget(name, widget):
+    """Save one widget (a dock: the picture cropped to it) as <name>.png."""
+    folder = screenshot_folder()
+    if folder is None:
+        return None
+    process(0.05)
+    path = os.path.join(folder, name + ".png")
+    widget.grab().save(path)
+    return path
+
+
+def screenshot(name):
+    """Save the main window (task panel and 3D view) as <name>.png and the 3D
+    view alone as <name>-3d.png."""
+    folder = screenshot_folder()
+    if folder is None:
+        return None
     process(0.05)
     path = os.path.join(folder, name + ".png")
     FreeCADGui.getMainWindow().grab().save(path)

@@ -69,13 +69,15 @@ def test_the_op_recomputes_to_the_path_it_saved(saved):
     # starts at the safe start point, 1 mm (the clearance) outside the radius
     # of the saved Job's stock (its box's corner) and beyond its +Z end, and
     # comes down in Z outside it to the start point's Z before moving in X,
-    # where bfb45ff's went out to X21 from wherever the tool was. The rest is
-    # as saved.
+    # where bfb45ff's went out to X21 from wherever the tool was; at the end
+    # it goes back out in X and up in Z to the safe start point, where
+    # bfb45ff's stayed at the start point. The rest is as saved.
     assert path[3:5] == [("G0", {"X": 21.0}), ("G0", {"X": 21.0, "Z": 22.5})]
     stock = PathUtils.findParentJob(op).Stock.Shape
     safe_x = round(max(math.hypot(v.X, v.Y) for v in stock.Vertexes) + 1.0, 6)
     safe_z = round(stock.BoundBox.ZMax + 1.0, 6)
     path[3:4] = [("G0", {"X": safe_x, "Z": safe_z}), ("G0", {"X": safe_x, "Z": 22.5})]
+    path += [("G0", {"X": safe_x, "Z": 22.5}), ("G0", {"X": safe_x, "Z": safe_z})]
     now = path_commands(op)
     assert without_chip_break_reentries(now) == path
     assert len(now) > len(path)

@@ -22,7 +22,9 @@ Choices the manuals leave open (each a named constant here, each with a test):
   groove-spacing word that caused it (a typo like I0.0001 must not hang FreeCAD).
 * Number format (emit): every word except Fanuc's P/Q is written with a decimal
   point and trailing zeros dropped: ``X20.``, ``X20.5``, ``F0.1``, ``D0.``. At
-  most ``DECIMALS`` (4) decimals and magnitude below ``MAX_WORD`` (100000):
+  most ``DECIMALS`` (4) decimals, F at most ``F_DECIMALS`` (6: a feed per
+  revolution in inch, 0.05 mm/rev = F0.001969, where 4 would be 1.6 % off;
+  Fanuc reads in/rev to 0.000001), and magnitude below ``MAX_WORD`` (100000):
   validate() refuses other values, so emit() never rounds and
   ``parse(emit(m)) == m`` holds for every valid model.
 * parse() refuses a non-zero word written without a decimal point (``X20``):
@@ -43,6 +45,7 @@ from ..settings import DEFAULT_SETTINGS, Settings
 from ..warnings import CycleWarning
 
 DECIMALS = 4
+F_DECIMALS = 6
 MAX_WORD = 100000.0
 MAX_COUNT = 99999999  # Fanuc P/Q: 8 digits
 TOLERANCE = 1e-7  # far below the 0.0001 word resolution, far above float noise
@@ -50,9 +53,14 @@ TOLERANCE = 1e-7  # far below the 0.0001 word resolution, far above float noise
 # ---------------------------------------------------------------- numbers, words
 
 
-def format_number(value: float) -> str:
+def decimals(letter: str) -> int:
+    """How many decimals the word ``letter`` may have."""
+    return F_DECIMALS if letter == "F" else DECIMALS
+
+
+def format_number(value: float, letter: str = "") -> str:
     """A decimal word value as written: always a decimal point, no trailing zeros."""
-    return format_decimal(value, DECIMALS)
+    return format_decimal(value, decimals(letter))
 
 
 def check_number(cycle: str, letter: str, value: object, counted: bool = False) -> None:
@@ -71,8 +79,8 @@ def check_number(cycle: str, letter: str, value: object, counted: bool = False) 
         raise CycleError(letter, value, "must be a finite number", cycle=cycle)
     if not abs(value) < MAX_WORD:
         raise CycleError(letter, value, "must be less than %d in magnitude" % MAX_WORD, cycle=cycle)
-    if round(value, DECIMALS) != value:
-        raise CycleError(letter, value, "must have at most %d decimal places" % DECIMALS, cycle=cycle)
+    if round(value, decimals(letter)) != value:
+        raise CycleError(letter, value, "must have at most %d decimal places" % decimals(letter), cycle=cycle)
 
 
 _WORD = re.compile(r"([A-Z])([+-]?(?:\d+\.?\d*|\.\d+))")
@@ -463,7 +471,7 @@ class PeckingCycle:
         for letter in self.WORDS:
             value = getattr(self, letter)
             if value is not None:
-                parts.append(letter + (str(value) if letter in self.COUNTED else format_number(value)))
+                parts.append(letter + (str(value) if letter in self.COUNTED else format_number(value, letter)))
         return " ".join(parts)
 
     def emit(self) -> str:

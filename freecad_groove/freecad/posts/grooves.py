@@ -69,6 +69,7 @@ class GrooveOutput:
         write_group = self._group_writer()
         for group in face_groups(plans):
             write_group(group)
+        self.retreat(plans[-1])
 
     def _plans(self) -> List[Any]:
         """The op's groove plans (kept by the op while it is up to date)."""
@@ -100,6 +101,13 @@ class GrooveOutput:
             if last and not to_start and here == target:
                 return
             self.program.rapid(x, z)
+
+    def retreat(self, plan: Any) -> None:
+        """The op's rapids back to its safe start point after ``plan`` (its
+        last groove, which every writer leaves at that groove's start point)."""
+        shift = corner_shift(plan, self.program.options.reference)
+        for x, z in plan.retreat:
+            self.program.rapid(x + shift.dx, z + shift.dz)
 
     def rapid_to(self, plan: Any, point: Any, force: bool = False) -> None:
         """A rapid to ``point`` (anything with x and z, model coordinates of the plan)."""

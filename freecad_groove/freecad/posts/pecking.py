@@ -29,7 +29,7 @@ PECKING_PROPERTIES = {"I": "Infeed", "K": "Infeed", "P": "Infeed", "Q": "Infeed"
                       "F": "FeedPerRev (or the tool controller's HorizFeed)", "e": "Retract", "R(e)": "Retract"}
 SAME = 1e-9  # lengths closer than this are the same (blade width, start points)
 EQUAL_SPACING = 1e-6  # how far a groove of a set may be off its pitch
-FEED_DECIMALS = 4
+FEED_DECIMALS = 6  # as the expanded moves' F (targets.py): inch feeds per revolution need them
 
 
 class NotNative(Exception):
