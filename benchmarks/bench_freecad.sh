@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Run benchmarks/bench_freecad.py inside FreeCAD (headless) and print its figures.
+# Run benchmarks/bench_freecad.py, then bench_freecad_fresh.py twice, inside FreeCAD (headless) and print
+# their figures.
 #
 #   benchmarks/bench_freecad.sh          FreeCAD 1.1
 #   benchmarks/bench_freecad.sh 1.0      another label of `scripts/freecad-roots list`
@@ -17,4 +18,8 @@ cd "$(dirname "$(readlink -f "$0")")/.."
 
 # Short: FreeCAD 1.1 crashes on a -c text of 256 characters or more.
 CODE="import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT'] + '/benchmarks/bench_freecad.py').read())"
-run_benchmark bench_freecad "${1:-1.1}" 'exec freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$1"' "$CODE"
+FRESH="import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT'] + '/benchmarks/bench_freecad_fresh.py').read())"
+# (a), (b), then (c): a fresh FreeCAD for each post's first post after opening the document (b) saved
+run_benchmark bench_freecad "${1:-1.1}" 'freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$1" &&
+    FREECAD_GROOVE_BENCH_FRESH=ours freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$2" &&
+    FREECAD_GROOVE_BENCH_FRESH=freecad freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$2"' "$CODE" "$FRESH"

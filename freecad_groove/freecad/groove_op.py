@@ -300,20 +300,36 @@ class ObjectGroove(PathOp.ObjectOp):
 
     def _restored_plans(self, obj: object) -> Optional[list[GroovePlan]]:
         """The plans the opened document saved, when their fingerprint is that
-        of the op's inputs now (kept from then on); None otherwise."""
-        saved, self._saved_plans = getattr(self, "_saved_plans", None), None
-        if not saved:
+        of the op's inputs now (kept from then on); None otherwise. The Job's
+        other Groove ops that still hold saved plans are checked at the same
+        time (a post reads them next), the inputs they share read once."""
+        if not getattr(self, "_saved_plans", None):
             return None
         try:
-            stamp = plan_cache.fingerprint(obj, self._parent_job(obj))
-            plans = plan_cache.unpack(saved, stamp)
-            if plans is None:
-                return None
-            self._plans, self._fingerprint = plans, stamp
-        except Exception as e:  # plan again
+            job = self._parent_job(obj)
+        except ValueError as e:
+            self._saved_plans = None
             FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
             return None
-        return self._plans
+        memo: dict = {}  # plan_cache.fingerprint's digests of the shared inputs
+        self._restore(obj, job, memo)
+        for other in getattr(getattr(job, "Operations", None), "Group", None) or []:
+            proxy = getattr(other, "Proxy", None)
+            if isinstance(proxy, ObjectGroove) and getattr(proxy, "_saved_plans", None) \
+                    and getattr(proxy, "_plans", None) is None and getattr(proxy, "error", None) is None \
+                    and not ({"Touched", "Invalid"} & set(other.State)):
+                proxy._restore(other, job, memo)
+        return getattr(self, "_plans", None)
+
+    def _restore(self, obj: object, job: object, memo: dict) -> None:
+        """Take the saved plans as the op's plans when their fingerprint matches (then, or never)."""
+        saved, self._saved_plans = self._saved_plans, None
+        try:
+            stamp = plan_cache.fingerprint(obj, job, memo)
+            if stamp == saved.fingerprint:
+                self._plans, self._fingerprint = saved.plans, stamp
+        except Exception as e:  # plan again
+            FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
 
     def dumps(self) -> Optional[dict]:
         """The proxy's saved state: the op's plans with their fingerprint
@@ -323,10 +339,16 @@ class ObjectGroove(PathOp.ObjectOp):
         if plans is not None and stamp and getattr(self, "error", None) is None:
             return {"plans": plan_cache.pack(plans, stamp)}
         saved = getattr(self, "_saved_plans", None)
-        return {"plans": saved} if saved else None
+        return {"plans": saved.text} if saved else None
 
     def loads(self, state: object) -> None:
-        self._saved_plans = state.get("plans") if isinstance(state, dict) else None
+        """Read the saved plans as the document opens (plan_cache.read), so
+        that the first post only checks their fingerprint (_restored_plans)."""
+        try:
+            self._saved_plans = plan_cache.read(state.get("plans") if isinstance(state, dict) else None)
+        except Exception as e:  # never a reason not to open the document: the post plans again
+            self._saved_plans = None
+            FreeCAD.Console.PrintLog("Groove: saved plans not read: %s: %s\n" % (type(e).__name__, e))
 
     # -- properties -------------------------------------------------------------
     def _add_missing_properties(self, obj: object) -> None:

@@ -9,6 +9,7 @@ tests/freecad/run_suite.py in FreeCAD 1.1 and 1.0.
 import dataclasses
 
 import FreeCAD
+import Part
 import pytest
 import test_groove_op as tg
 from documents import DATA, opened, reopened
@@ -95,11 +96,21 @@ def _change_tool_bit(op, model):
     setattr(bit, name, getattr(bit, name).Value + 1.0)
 
 
+def _change_model_label(op, model):
+    model.Label = "Bar"  # the posts name each groove's face by it
+
+
+def _change_stock(op, model):
+    # a larger stock moves the safe start point the first groove is linked from
+    op.Proxy._parent_job(op).Stock.Shape = Part.makeCylinder(30, 80, FreeCAD.Vector(0, 0, -5))
+
+
 def _change_engine(op, model, monkeypatch):
     monkeypatch.setattr(plan_cache, "engine_stamp", lambda: "another version")
 
 
-CHANGES = [_change_width, _change_model_shape, _change_model_placement, _change_tool_controller, _change_tool_bit]
+CHANGES = [_change_width, _change_model_shape, _change_model_placement, _change_model_label, _change_stock,
+           _change_tool_controller, _change_tool_bit]
 
 
 @pytest.mark.parametrize("change", CHANGES + [_change_engine], ids=lambda f: f.__name__)
@@ -128,6 +139,12 @@ def test_restored_plans_are_the_saved_ones(shop):
     stamp = plan_cache.fingerprint(op, shop[2])
     restored = plan_cache.unpack(plan_cache.pack(plans, stamp))
     assert restored == [dataclasses.replace(plan, geometry=None) for plan in plans]
+
+    def types(plans):  # 1 and 1.0 are equal but are not written alike: the saved data keeps each value's type
+        return [([type(v) for v in dataclasses.astuple(p.cycle)], [[type(v) for v in move] for move in p.moves],
+                 [[type(v) for v in step] for step in p.link + p.retreat]) for p in plans]
+
+    assert types(restored) == types(plans)
     assert plan_cache.saved_fingerprint(plan_cache.pack(plans, stamp)) == stamp
     assert plan_cache.saved_fingerprint("not saved plans") is None
 
@@ -141,3 +158,64 @@ def test_documents_saved_before_open_and_post(path, plan_calls):
             text = _post(op)
             assert "G1" in text, op.Label
         assert plan_calls[0] >= len(ops)  # they saved no plans
+
+
+def _three_ops(shop):
+    """Three Groove ops on the cylinder of the shaft, in one Job."""
+    ops = [_grooves(shop)]
+    for position in (12, 14):
+        ops.append(tg.groove(shop, "cylinder", position=position))
+        assert op_error(ops[-1]) is None, op_error(ops[-1])
+    return ops
+
+
+@pytest.fixture
+def shape_digests(monkeypatch):
+    """The Shape digests plan_cache takes, counted: [count]."""
+    calls = [0]
+    digest = plan_cache._shape_digest
+
+    def counted(shape):
+        calls[0] += 1
+        return digest(shape)
+
+    monkeypatch.setattr(plan_cache, "_shape_digest", counted)
+    return calls
+
+
+def test_the_first_post_after_reopening_reads_each_shared_input_once(shop, tmp_path, plan_calls, shape_digests):
+    # the ops' Base and the Job's model are one object: its Shape, and the stock's, are digested once for all
+    names = [op.Name for op in _three_ops(shop)]
+    with reopened(shop[0], tmp_path / "a.FCStd") as doc2:
+        ops = [doc2.getObject(name) for name in names]
+        calls, digests = plan_calls[0], shape_digests[0]
+        demo.load_post("linuxcnc").export([ops[0].ToolController] + ops, "-", "")
+        assert plan_calls[0] == calls
+        assert shape_digests[0] - digests == 2  # the shaft and the stock
+
+
+def test_saved_plans_are_read_as_the_document_opens(shop, tmp_path, plan_calls, monkeypatch):
+    # the first post only checks their fingerprint
+    op = _grooves(shop)
+    name, before = op.Name, _post(op)
+    with reopened(shop[0], tmp_path / "a.FCStd") as doc2:
+        reads = []
+        monkeypatch.setattr(plan_cache, "read", lambda text: reads.append(text))
+        calls = plan_calls[0]
+        assert _post(doc2.getObject(name)) == before
+        assert (reads, plan_calls[0]) == ([], calls)
+
+
+def test_an_op_changed_while_closed_plans_again_its_siblings_do_not(shop, tmp_path, plan_calls):
+    # the first post checks every Groove op of the Job at once: the changed one plans again, alone
+    names = [op.Name for op in _three_ops(shop)]
+    with reopened(shop[0], tmp_path / "a.FCStd") as doc2:
+        ops = [doc2.getObject(name) for name in names]
+        ops[1].Width = 3.5
+        for obj in doc2.Objects:
+            obj.purgeTouched()
+        calls = plan_calls[0]
+        texts = [_post(op) for op in ops]
+        assert plan_calls[0] == calls + 1
+        assert texts[1] == _fresh_post(ops[1])
+        assert [_post(op) for op in ops] == texts
