@@ -2,7 +2,8 @@
 #
 # FreeCAD puts this folder on sys.path, so `import freecad_groove` works in
 # scripts and in freecadcmd. Here the lathe posts in postprocessors/ are added
-# to CAM's post list (freecad_groove/freecad/registration.py). That module is
+# to CAM's post list, and (FreeCAD 1.1) the grooving blade to CAM's tool bit
+# shapes once CAM loads them (freecad_groove/freecad/registration.py). That module is
 # loaded by its file name: importing it as freecad_groove.freecad.registration
 # would first import the whole FreeCAD layer (about a second). A failure only
 # prints a warning: it must never stop FreeCAD from starting.
@@ -19,6 +20,7 @@ def _freecad_groove_register_posts():
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     module.register()
+    module.register_shapes()
 
 
 try:

@@ -13,8 +13,13 @@ this module registers a ToolBitShape subclass "Grooving" (FreeCAD picks the
 shape class by the Body's label) and a ToolBit subclass for it, which is the
 bit's Proxy. A saved document therefore imports this module when it is
 reopened, which registers the shape class before FreeCAD restores the bit;
-the shape file is not in FreeCAD's asset store, so the restored bit reloads
-it from the add-on (ToolBitGrooving.onDocumentRestored).
+FreeCAD finds the shape file in its asset store (shape_assets.py below), and
+where it does not (that store not installed) the restored bit reloads it from
+the add-on (ToolBitGrooving.onDocumentRestored).
+
+The shape is listed in 1.1's tool library shape chooser (and its icon
+resources/tools/grooving.svg drawn there) through shape_assets.py, which
+registration.register_shapes installs when CAM loads its tool bits.
 
 FreeCAD 1.0 (Path.Tool.Bit): the bit is a plain Bit made from the shape file
 by its absolute path (ToolBit.BitShape); its Shape-group properties come
@@ -83,6 +88,13 @@ if NEW_TOOLBITS:
             width = self.get_property_str("Width", "?", precision=3)
             radius = self.get_property_str("CornerRadius", "?", precision=3)
             return FreeCAD.Qt.translate("CAM", "%s grooving blade, corner radius %s") % (width, radius)
+
+        def attach_to_obj(self, tool_doc_obj, label=None):
+            super().attach_to_obj(tool_doc_obj, label=label)
+            # However the bit was made (make_grooving_bit, CAM's shape chooser
+            # and tool library), FreeCAD's ops need a Diameter: the width.
+            if {"Diameter", "Width"} <= set(tool_doc_obj.PropertiesList):
+                tool_doc_obj.setExpression("Diameter", "Width")
 
         def onDocumentRestored(self, obj):
             super().onDocumentRestored(obj)
