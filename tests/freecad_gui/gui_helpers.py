@@ -87,9 +87,9 @@ def task_button(panel, which):
     return button
 
 
-def screenshot(name):
+def screenshot(name, widget=None):
     """Save the main window (task panel and 3D view) as <name>.png and the 3D
-    view alone as <name>-3d.png."""
+    view alone as <name>-3d.png; or ``widget`` (a dialog) alone as <name>.png."""
     share = os.environ.get("FREECAD_GROOVE_SHARE", "")
     folder = os.environ.get("FREECAD_GROOVE_SCREENSHOTS", "screenshots")
     if not os.path.isabs(folder):
@@ -99,6 +99,9 @@ def screenshot(name):
     os.makedirs(folder, exist_ok=True)
     process(0.05)
     path = os.path.join(folder, name + ".png")
+    if widget is not None:
+        widget.grab().save(path)
+        return path
     FreeCADGui.getMainWindow().grab().save(path)
     # The 3D view rendered on its own as well: grabbing the window leaves it
     # blank in FreeCAD 1.0 under Xvfb.
