@@ -77,7 +77,7 @@ def _in_the_chooser(seen):
 def _in_the_editor(seen):
     """Inside the tool library editor: press "Add tool bit", then close it."""
     try:
-        editor = wait_for(lambda: _dialog_with("addToolBitButton"), what="the tool library editor")
+        editor = wait_for(lambda: _dialog_with("addToolBitButton"), timeout=30, what="the tool library editor")
         QtCore.QTimer.singleShot(200, lambda: _in_the_chooser(seen))
         editor.findChild(QtCore.QObject, "addToolBitButton").click()  # returns when the chooser closes
         process(0.2)
@@ -99,9 +99,15 @@ def test_the_shape_chooser_offers_the_grooving_blade():
     before = _local_toolbits()
     seen = {}
     QtCore.QTimer.singleShot(200, lambda: _in_the_editor(seen))
-    QtCore.QTimer.singleShot(WATCHDOG_MS, _close_modal_dialogs)
-    FreeCADGui.runCommand("CAM_ToolBitLibraryOpen")  # modal: returns when the editor closes
-    process(0.2)
+    watchdog = QtCore.QTimer()  # stopped below: it must not close a later test's dialogs
+    watchdog.setSingleShot(True)
+    watchdog.timeout.connect(_close_modal_dialogs)
+    watchdog.start(WATCHDOG_MS)
+    try:
+        FreeCADGui.runCommand("CAM_ToolBitLibraryOpen")  # modal: returns when the editor closes
+        process(0.2)
+    finally:
+        watchdog.stop()
     assert "error" not in seen, seen["error"]
     assert seen["label"] == "Grooving blade" and "Grooving blade" in seen["entries"], seen
     assert "Endmill" in seen["entries"]
