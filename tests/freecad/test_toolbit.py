@@ -7,6 +7,7 @@ grooves, posts and survives save and reopen; 1.0 has no such chooser.
 """
 
 import json
+import math
 import os
 import subprocess
 import sys
@@ -63,6 +64,24 @@ def test_tool_controller_with_a_grooving_blade(shop):
     assert tc2.Tool.Length.Value == pytest.approx(30) and tc2.Tool.Width.Value == pytest.approx(2)
     with pytest.raises(TypeError):
         toolbit.make_grooving_tool_controller(job, 2, 0.1, Flutes=2)
+
+
+def _width_at(bit, z):
+    """The blade solid's width across the cut (X) at height ``z`` above its cutting edge."""
+    return max(e.BoundBox.XLength for e in bit.Shape.slice(FreeCAD.Vector(0, 0, 1), z))
+
+
+@pytest.mark.parametrize("radius", [0.5, 0, 1.5])
+def test_the_blade_is_drawn_with_its_corner_radius(doc, radius):
+    bit = toolbit.make_grooving_bit(doc, 3, radius)
+    doc.recompute()
+    assert bit.Shape.isValid() and len(bit.Shape.Solids) == 1
+    # A sharp blade is drawn with 1 um, a full radius with 99.9 % of the half width (a fillet needs both).
+    r = min(max(radius, 0.001), 3 * 0.4995)
+    # 0.1 above the cutting edge each corner is r - sqrt(r^2 - (r - 0.1)^2) in from its side (0 if r <= 0.1).
+    inset = r - math.sqrt(r * r - (r - 0.1) ** 2) if r > 0.1 else 0
+    assert _width_at(bit, 0.1) == pytest.approx(3 - 2 * inset, abs=1e-3)
+    assert _width_at(bit, 2) == pytest.approx(3)
 
 
 def test_the_op_reads_the_blades_width_and_corner_radius(shop):
