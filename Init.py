@@ -2,10 +2,11 @@
 #
 # FreeCAD puts this folder on sys.path, so `import freecad_groove` works in
 # scripts and in freecadcmd. Here the lathe posts in postprocessors/ are added
-# to CAM's post list (freecad_groove/freecad/registration.py). That module is
-# loaded by its file name: importing it as freecad_groove.freecad.registration
-# would first import the whole FreeCAD layer (about a second). A failure only
-# prints a warning: it must never stop FreeCAD from starting.
+# to CAM's post list, and (FreeCAD 1.1) the grooving blade to CAM's tool bit
+# shapes once CAM loads them (freecad_groove/freecad/registration.py). That
+# module is loaded by its file name, so a start imports nothing but it (the
+# standard library); CAM's modules and ours load when CAM is used. A failure
+# only prints a warning: it must never stop FreeCAD from starting.
 
 
 def _freecad_groove_register_posts():
@@ -19,6 +20,7 @@ def _freecad_groove_register_posts():
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     module.register()
+    module.register_shapes()
 
 
 try:

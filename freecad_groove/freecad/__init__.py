@@ -12,6 +12,14 @@ builds on it.
     api.py                make_groove(): a groove op in a job from a script
 """
 
-from .api import make_groove
-
 __all__ = ["make_groove"]
+
+
+def __getattr__(name):
+    # Loaded on first use: toolbit.py (imported when CAM's tool bits load, and
+    # by saved documents) must not pull in the op and its imports of CAM.
+    if name == "make_groove":
+        from .api import make_groove
+
+        return make_groove
+    raise AttributeError("module %r has no attribute %r" % (__name__, name))

@@ -1,4 +1,7 @@
-"""Make FreeCAD's CAM workbench find the posts in this add-on's postprocessors/.
+"""Make FreeCAD's CAM workbench find the posts in this add-on's postprocessors/
+(:func:`register`) and, in FreeCAD 1.1, the grooving blade among its tool bit
+shapes (:func:`register_shapes`, see shape_assets.py; it waits for CAM to
+import ``Path.Tool`` the same way as the posts wait for ``Path.Preferences``).
 
 FreeCAD's development version has a route for add-ons: it reads the
 ``<Postprocessor>`` entry of an installed add-on's package.xml, and
@@ -45,6 +48,7 @@ POSTS_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path
                          "postprocessors")
 TARGET = "Path.Preferences"
 FUNCTION = "searchPathsPost"
+SHAPES_TARGET = "Path.Tool"  # register_shapes: FreeCAD 1.1's tool bit assets are set up by then
 ADD_FUNCTION = "addAddonPostPath"  # FreeCAD's development version (after 1.1)
 _MARK = "_freecad_groove_post_dirs"  # on the wrapper: the list of folders it appends
 _HOOK = "_freecad_groove_post_hook"  # on the finder
@@ -94,36 +98,38 @@ def _wrap(module, folder):
 
 
 class _Loader(importlib.abc.Loader):
-    """Runs the real loader, then wraps the function."""
+    """Runs the real loader, then the hook's action on the module."""
 
-    def __init__(self, loader, folder):
+    def __init__(self, loader, hook):
         self._loader = loader
-        self._folder = folder
+        self._hook = hook
 
     def create_module(self, spec):
         return self._loader.create_module(spec)
 
     def exec_module(self, module):
         self._loader.exec_module(module)
-        _remove_hooks()
+        _remove_hooks(self._hook.target)
         try:
-            _wrap(module, self._folder)
+            self._hook.action(module)
         except Exception as e:  # never break FreeCAD's own import
-            _warn("freecad-groove: could not add the lathe posts to the CAM post list: %s" % e)
+            _warn("freecad-groove: %s: %s" % (self._hook.failure, e))
 
     def __getattr__(self, name):  # get_source, get_filename, ... of the real loader
         return getattr(self._loader, name)
 
 
 class _Hook(importlib.abc.MetaPathFinder):
-    """Waits for ``Path.Preferences`` to be imported."""
+    """Waits for module ``target`` to be imported, then runs ``action(module)``."""
 
-    def __init__(self, folder):
-        self.folder = folder
+    def __init__(self, target, action, failure):
+        self.target = target
+        self.action = action
+        self.failure = failure  # what did not happen, for the warning
         setattr(self, _HOOK, True)
 
     def find_spec(self, name, path=None, target=None):
-        if name != TARGET:
+        if name != self.target:
             return None
         for finder in list(sys.meta_path):
             if getattr(finder, _HOOK, False):
@@ -138,20 +144,30 @@ class _Hook(importlib.abc.MetaPathFinder):
             return None
         if spec.loader is None or not hasattr(spec.loader, "exec_module"):
             return spec
-        spec.loader = _Loader(spec.loader, self.folder)
+        spec.loader = _Loader(spec.loader, self)
         return spec
 
 
-def _hooks():
-    return [f for f in sys.meta_path if getattr(f, _HOOK, False)]
+def _hooks(target=TARGET):
+    return [f for f in sys.meta_path if getattr(f, _HOOK, False) and getattr(f, "target", TARGET) == target]
 
 
-def _remove_hooks():
-    for hook in _hooks():
+def _remove_hooks(target=TARGET):
+    for hook in _hooks(target):
         try:
             sys.meta_path.remove(hook)
         except ValueError:
             pass
+
+
+def _after_import(target, action, failure):
+    """Run ``action(module)`` once ``target`` is imported (a pending action
+    for ``target`` is replaced)."""
+    hooks = _hooks(target)
+    if hooks:
+        hooks[0].action, hooks[0].failure = action, failure
+        return
+    sys.meta_path.insert(0, _Hook(target, action, failure))
 
 
 def _warn(text):
@@ -168,14 +184,11 @@ def register(folder=POSTS_DIR):
     post search path for this session. Safe to call any number of times."""
     module = sys.modules.get(TARGET)
     if module is not None and hasattr(module, FUNCTION):
-        _remove_hooks()
+        _remove_hooks(TARGET)
         _wrap(module, folder)
         return
-    hooks = _hooks()
-    if hooks:
-        hooks[0].folder = folder
-        return
-    sys.meta_path.insert(0, _Hook(folder))
+    _after_import(TARGET, lambda module: _wrap(module, folder),
+                  "could not add the lathe posts to the CAM post list")
 
 
 def unregister(folder=POSTS_DIR):
@@ -201,3 +214,32 @@ def is_registered(folder=POSTS_DIR):
     import Path.Preferences
 
     return any(p and _same(p, folder) for p in Path.Preferences.searchPathsPost())
+
+
+def _install_shapes(module):
+    if not hasattr(module, "cam_assets"):  # FreeCAD 1.0: no asset based tool bits
+        return
+    from freecad_groove.freecad import shape_assets
+
+    shape_assets.install(module.cam_assets)
+
+
+def register_shapes():
+    """Put the grooving blade among FreeCAD 1.1's built-in tool bit shapes
+    (freecad_groove.freecad.shape_assets) once CAM imports ``Path.Tool``, or
+    now if it has. Nothing in FreeCAD 1.0. Safe to call any number of times."""
+    module = sys.modules.get(SHAPES_TARGET)
+    if module is not None:
+        _remove_hooks(SHAPES_TARGET)
+        _install_shapes(module)
+        return
+    _after_import(SHAPES_TARGET, _install_shapes, "could not add the grooving shape to CAM's tool bit shapes")
+
+
+def unregister_shapes():
+    """Undo :func:`register_shapes`."""
+    _remove_hooks(SHAPES_TARGET)
+    if SHAPES_TARGET in sys.modules:
+        from freecad_groove.freecad import shape_assets
+
+        shape_assets.uninstall()

@@ -22,8 +22,8 @@ The layout is what both tool bit systems read from a shape file:
   non-zero Diameter; the tool bit drives it from Width),
 - the blade's solid, an AdditiveBox whose size follows the parameters by
   expressions: Width across the cut (X), CuttingEdgeHeight (the reach of
-  the blade, Y) and Length along the tool axis (Z). The corner radius is a
-  parameter only: it is not drawn.
+  the blade, Y) and Length along the tool axis (Z); a fillet "Corners" rounds
+  the two front corners with CornerRadius (see _round_front_corners).
 """
 
 
@@ -67,9 +67,29 @@ def _make_grooving_shape():
     doc.recompute()
     if box.Shape.isNull() or not body.Shape.Solids:
         raise RuntimeError("the grooving blade body has no solid")
+    _round_front_corners(doc, body, box)
     doc.saveAs(out)
     FreeCAD.closeDocument(doc.Name)
     return out
+
+
+def _round_front_corners(doc, body, box):
+    """A fillet of CornerRadius on the two edges at the ends of the cutting
+    edge (parallel to Y at Z = 0, X = +-Width/2). A fillet needs a radius
+    above 0 and below half the width: a sharp blade is drawn with 1 um, a
+    full-radius one with 99.9 % of Width / 2 (the op reads the parameter,
+    not this solid)."""
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(box.Shape.Edges)
+             if abs(e.BoundBox.ZMax) < 1e-9 and e.BoundBox.YLength > 1e-6]
+    if len(names) != 2:
+        raise RuntimeError("expected the blade's two front edges, found %s" % names)
+    fillet = doc.addObject("PartDesign::Fillet", "Corners")
+    body.addObject(fillet)
+    fillet.Base = (box, names)
+    fillet.setExpression("Radius", "min(max(Attributes.CornerRadius; 0.001 mm); Attributes.Width * 0.4995)")
+    doc.recompute()
+    if not fillet.isValid() or not body.Shape.Solids:
+        raise RuntimeError("the blade's corner fillet failed: %s" % fillet.getStatusString())
 
 
 _make_grooving_shape()
