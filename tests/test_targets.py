@@ -320,3 +320,14 @@ def test_rs274_reads_inch_program():
     moves = [feed(0.812345, 0.5), rapid(1.0, 0.5), rapid(1.0, -0.25), feed(0.5, -0.25, 2.5)]
     canon = run_rs274(write_program(moves, "linuxcnc", state))
     assert not canonical_matches([rapid(1.0, 0.5)] + moves, canon, tol=1e-4)  # rs274 prints 4 decimals
+
+
+@pytest.mark.parametrize("axis", ["y", "c"])
+def test_a_lathe_target_refuses_a_move_on_an_axis_it_cannot_write(axis):
+    """A move that sets Y or C (mill-style and cylinder-interpolation cycles) is refused by the lathe targets,
+    naming the axis, instead of being written without it."""
+    for target in ("linuxcnc", "fanuc"):
+        with pytest.raises(ProgramError, match="%s cannot be written for %s: its output has no %s axis"
+                           % (axis.upper(), target, axis.upper())):
+            Writer(target).write([Move("G1", 10.0, 0.0, 0.1, **{axis: 5.0})])
+    assert Writer("linuxcnc").write([Move("G1", 10.0, 0.0, 0.1)])  # lathe moves as before

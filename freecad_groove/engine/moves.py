@@ -23,6 +23,13 @@ class Move(NamedTuple):
     x, z  target (radius, absolute); for DWELL the position held.
     f     feed for FEED moves, None = the feed already in force.
     p     dwell time in seconds for DWELL, else 0.
+    y     target Y of a cycle on a machine with a Y axis (mill-style
+          programs; X is then a plain coordinate, not a radius); None: the
+          axis is not moved (every lathe cycle).
+    c     target of the rotary C axis in degrees (cylinder interpolation);
+          None: not moved.
+    A target that cannot write an axis a move sets refuses the move
+    (targets.py) rather than dropping it.
     """
 
     kind: str
@@ -30,6 +37,8 @@ class Move(NamedTuple):
     z: float
     f: Optional[float] = None
     p: float = 0.0
+    y: Optional[float] = None
+    c: Optional[float] = None
 
 
 def rapid(x: float, z: float) -> Move:

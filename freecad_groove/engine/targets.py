@@ -286,6 +286,14 @@ class Writer:
             return self.f_word(self.default_feed)
         return None
 
+    def check_axes(self, move: Move) -> None:
+        """ProgramError when ``move`` sets an axis this lathe output has no
+        word for (Y, C): never drop a motion silently."""
+        extra = [name for name, value in zip(("Y", "C"), move[5:]) if value is not None]
+        if extra:
+            raise ProgramError("a move in %s cannot be written for %s: its output has no %s axis"
+                               % ("/".join(extra), self.spec.name, "/".join(extra)))
+
     def write(self, moves: Iterable[Move], prefix: str = "") -> List[str]:
         """Lines for ``moves`` (moves.Move or equal tuples); updates the modal state.
 
@@ -294,7 +302,8 @@ class Writer:
         out: List[str] = []
         digits = self.digits
         for move in moves:
-            kind, x, z, f, p = move
+            kind, x, z, f, p = move[:5]
+            self.check_axes(move)
             if kind == DWELL:
                 out.append(prefix + self.dwell(p))
                 continue

@@ -48,8 +48,11 @@ class LatheWriter(Writer):
 
     def write(self, moves: Iterable[Move], prefix: str = "") -> List[str]:
         half = 1.0 if self.diameter else 0.5  # the target writer doubles X: hand it half (exact in binary)
+        moves = list(moves)
+        for move in moves:
+            self.check_axes(move)
         moves = [(k, None if x is None else self.out(x * half), None if z is None else self.out(z),
-                  None if f is None else self.out(f), p) for k, x, z, f, p in moves]
+                  None if f is None else self.out(f), p) for k, x, z, f, p, *_extra in moves]
         return super().write(moves, prefix)
 
     def dwell(self, seconds: float) -> str:
