@@ -15,6 +15,8 @@ def snake_case(name):
 
 
 KEYWORDS = {snake_case(n): n for n in SETTABLE}
+# The keywords that give the groove's size: without any, the groove is read from the model.
+DIMENSIONS = tuple(snake_case(n) for n in groove_op.MODEL_VALUES)
 
 
 def _pairs(faces: object) -> list:
@@ -105,6 +107,8 @@ def _create(job: object, faces: list, name: str, tool_controller: object, values
         for model, subs in faces:
             for sub in subs:
                 obj.Proxy.addBase(obj, model, sub)
+        if "model_groove" in values:  # first: dimensions set after it override the model's
+            _set_values(obj, {"model_groove": values["model_groove"]})
         _set_values(obj, values)
     except BaseException:  # nothing half-made stays in the Job
         _remove_new_objects(doc, before)
@@ -129,12 +133,19 @@ def make_groove(job, faces, name="Groove", tool_controller=None, recompute=True,
     that is not in the Job's model, a name that is not one of its faces, a
     value the property refuses) with nothing left behind in the Job.
 
+    Without any of the groove's dimensions (position, width, depth, the
+    flank angles, the corners), the groove is read from the model
+    (model_groove=True): the picked face is a face of a modelled groove and
+    the op takes its position, size, angles and corners from it. With
+    model_groove=True and some dimensions, those override the model's
+    (listed in the op's ModelOverrides).
+
     Every other keyword is an op property in snake_case, in mm, degrees and
     seconds (or a FreeCAD quantity string such as "4 mm"):
     position, width, depth, flank_angle1, flank_angle2, edge_corner1,
     edge_corner1_type ("None"/"Radius"/"Chamfer"), edge_corner2,
     edge_corner2_type, base_corner1, base_corner1_type, base_corner2,
-    base_corner2_type, chamfer_measure ("Chamfer length (CHF)"/"Leg length
+    base_corner2_type, model_groove, model_overrides, chamfer_measure ("Chamfer length (CHF)"/"Leg length
     (CHR)"), base_allowance, flank_allowance, infeed, dwell, retract,
     groove_count, pitch, tool_width, tool_corner_radius, reference_corner
     ("minus"/"plus"), coolant_mode, comment.
@@ -161,6 +172,8 @@ def make_groove(job, faces, name="Groove", tool_controller=None, recompute=True,
             "make_groove() got unknown keyword(s) %s; valid: %s" % (", ".join(unknown), ", ".join(sorted(KEYWORDS)))
         )
     faces = _faces(job, faces)
+    if not any(k in values for k in DIMENSIONS) and "model_groove" not in values:
+        values = dict(values, model_groove=True)
     doc = job.Document
     if FreeCAD.ActiveDocument is None or FreeCAD.ActiveDocument.Name != doc.Name:
         FreeCAD.setActiveDocument(doc.Name)
