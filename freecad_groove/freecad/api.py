@@ -116,6 +116,13 @@ def _create(job: object, faces: list, name: str, tool_controller: object, values
     return obj
 
 
+def _with_model_groove(values: dict) -> dict:
+    """``values`` with model_groove=True when they give no dimension of the groove."""
+    if any(k in values for k in DIMENSIONS) or "model_groove" in values:
+        return values
+    return dict(values, model_groove=True)
+
+
 def make_groove(job, faces, name="Groove", tool_controller=None, recompute=True, **values):
     """Create a Groove operation in ``job`` and return it.
 
@@ -133,13 +140,8 @@ def make_groove(job, faces, name="Groove", tool_controller=None, recompute=True,
     that is not in the Job's model, a name that is not one of its faces, a
     value the property refuses) with nothing left behind in the Job.
 
-    Without any of the groove's dimensions (position, width, depth, the
-    flank angles, the corners), the groove is read from the model
-    (model_groove=True): the picked face is a face of a modelled groove and
-    the op takes its position, size, angles and corners from it. With
-    model_groove=True and some dimensions, those override the model's
-    (listed in the op's ModelOverrides).
-
+    No dimension (position, width, depth, flank angles, corners): the groove
+    is read from the model (model_groove=True); with it, dimensions override.
     Every other keyword is an op property in snake_case, in mm, degrees and
     seconds (or a FreeCAD quantity string such as "4 mm"):
     position, width, depth, flank_angle1, flank_angle2, edge_corner1,
@@ -172,8 +174,7 @@ def make_groove(job, faces, name="Groove", tool_controller=None, recompute=True,
             "make_groove() got unknown keyword(s) %s; valid: %s" % (", ".join(unknown), ", ".join(sorted(KEYWORDS)))
         )
     faces = _faces(job, faces)
-    if not any(k in values for k in DIMENSIONS) and "model_groove" not in values:
-        values = dict(values, model_groove=True)
+    values = _with_model_groove(values)
     doc = job.Document
     if FreeCAD.ActiveDocument is None or FreeCAD.ActiveDocument.Name != doc.Name:
         FreeCAD.setActiveDocument(doc.Name)
