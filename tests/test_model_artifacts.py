@@ -24,7 +24,7 @@ from freecad_groove.engine.moves import Move
 
 WRITER_CODE = exec_code("tests/freecad/write_model_artifacts.py")
 WRITE_TIMEOUT = 600
-CASES = 9  # the parts of model_parts.CASES
+CASES = 10  # the parts of model_parts.CASES
 
 
 @pytest.fixture(scope="session")

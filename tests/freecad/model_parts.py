@@ -38,6 +38,8 @@ CASES = {
                              rci2=0, typ=6),
     "face_internal": Cycle93(axfa=30, axsa=0, widg=4, depg=2, angc=90, ang1=0, ang2=0, rco1=-0.3, rco2=0, rci1=0,
                              rci2=0, typ=8),
+    "face_on_steep_cone": Cycle93(axfa=30, axsa=0, widg=4, depg=2, angc=70, ang1=5, ang2=0, rco1=0, rco2=0,
+                                  rci1=0.3, rci2=0, typ=6),
     "bore": Cycle93(axfa=15, axsa=30, widg=4, depg=2, angc=0, ang1=0, ang2=0, rco1=-0.3, rco2=-0.3, rci1=0,
                     rci2=0.2, typ=7),
     "cut_off": Cycle93(axfa=20, axsa=30, widg=3, depg=8, angc=0, ang1=0, ang2=0, rco1=0, rco2=0, rci1=0, rci2=0,

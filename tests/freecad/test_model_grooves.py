@@ -5,6 +5,8 @@ call (model_parts.py), every face of the groove picked in turn."""
 import dataclasses
 
 import FreeCAD
+import Part
+import Path.Main.Job as PathJob
 import pytest
 from model_parts import CASES, part_shape, undercut_shape
 from parts import make_shop
@@ -130,3 +132,59 @@ def test_an_undercut_gives_the_ops_one_line_error(doc):
     error = op_error(op)
     assert "\n" not in error
     assert "leans 26.565051 degrees back over the base (an undercut" in error and error.startswith("Shaft.")
+
+
+def partdesign_grooved_shaft(doc):
+    """A PartDesign Body: a R20 x 50 cylinder with a PartDesign Groove of a 3 x 4 mm rectangle
+    sketched on the XZ plane (X 18..21, Z 20..24) revolved about the sketch's V axis (Z)."""
+    V = FreeCAD.Vector
+    body = doc.addObject("PartDesign::Body", "Body")
+    cylinder = doc.addObject("PartDesign::AdditiveCylinder", "Cylinder")
+    body.addObject(cylinder)
+    cylinder.Radius, cylinder.Height = 20, 50
+    sketch = doc.addObject("Sketcher::SketchObject", "GrooveSketch")
+    body.addObject(sketch)
+    xz = next(f for f in body.Origin.OriginFeatures if f.Role == "XZ_Plane")
+    setattr(sketch, "AttachmentSupport" if hasattr(sketch, "AttachmentSupport") else "Support", [(xz, "")])
+    sketch.MapMode = "FlatFace"
+    pts = [(18, 20), (21, 20), (21, 24), (18, 24)]
+    for a, b in zip(pts, pts[1:] + pts[:1]):
+        sketch.addGeometry(Part.LineSegment(V(a[0], a[1], 0), V(b[0], b[1], 0)))
+    groove = doc.addObject("PartDesign::Groove", "Groove")
+    body.addObject(groove)
+    groove.Profile = sketch
+    groove.ReferenceAxis = (sketch, ["V_Axis"])
+    groove.Angle = 360
+    doc.recompute()
+    assert groove.isValid()
+    return body
+
+
+def test_a_partdesign_groove_is_read_from_its_body(doc):
+    body = partdesign_grooved_shaft(doc)
+    job = PathJob.Create("Job", [body])
+    doc.recompute()
+    model = job.Model.Group[0]
+    subs = sorted(groove_faces(model.Shape)[0])
+    assert len(subs) == 3  # the base and the two flanks
+    for sub in subs:
+        op = make_groove(job, (body, sub), infeed=1, tool_width=3, tool_corner_radius=0.2)
+        assert op_error(op) is None, op_error(op)
+        call = op.Proxy.current_plan(op)[0].cycle
+        assert (call.axfa, call.axsa, call.widg, call.depg, call.angc, call.typ) == (
+            pytest.approx(20), pytest.approx(24), pytest.approx(4), pytest.approx(2), 0, 5)
+
+
+def test_a_modelled_base_radius_smaller_than_the_blades_corner_is_reported(doc):
+    # base corners R0.1 in the model, the blade's corners r0.4: the op cuts the groove as modelled and says
+    # what stays at each base corner (never a silent approximation)
+    call = dataclasses.replace(CASES["rectangular"], rci1=0.1, rci2=0.1)
+    _doc, part, job, tc = make_shop(doc, shape=part_shape(call))
+    sub = sorted(groove_faces(part.Shape)[0])[0]
+    op = make_groove(job, (part, sub), infeed=1, tool_width=3, tool_corner_radius=0.4)
+    assert op_error(op) is None, op_error(op)
+    plan = op.Proxy.current_plan(op)[0]
+    assert plan.cycle.rci1 == pytest.approx(0.1) and plan.cycle.rci2 == pytest.approx(0.1)
+    texts = plan.warning_texts
+    assert any("base corner 1 cannot be reached by a 3 mm flat blade (r0.4)" in t for t in texts), texts
+    assert any("base corner 2 cannot be reached" in t for t in texts), texts
