@@ -167,3 +167,14 @@ def test_split_contour_and_base_pieces_are_joined():
     outline, first = outline_of([Segment(a, b) for a, b in zip(pts, pts[1:])], (0.0, -1.0))
     found = recognize(outline, first + 2).call
     assert (found.widg, found.depg, found.typ) == (4, 2, 5)
+
+
+def test_a_notch_of_more_than_seven_elements_is_refused_naming_the_count():
+    # a base with two ribs standing on it: eleven segments between the contour's pieces
+    pts = [(-10, 20), (-10, 17), (-11, 17), (-11, 17.5), (-11.5, 17.5), (-11.5, 17), (-12.5, 17), (-12.5, 17.5),
+           (-13, 17.5), (-13, 17), (-14, 17), (-14, 20)]
+    outline, first = outline_of([Segment(a, b) for a, b in zip(pts, pts[1:])], (0.0, -1.0))
+    rule = "from Z-10 X20 to Z-14 X20 has 11 elements: CYCLE93 cuts two flanks, a base and four corners"
+    for picked in (first, first + 3, first + 10):
+        with pytest.raises(NotchError, match=rule):
+            recognize(outline, picked)

@@ -8,6 +8,7 @@ import FreeCAD
 import Part
 import Path.Main.Job as PathJob
 import pytest
+from documents import reopened
 from model_parts import CASES, part_shape, undercut_shape
 from parts import make_shop
 
@@ -188,3 +189,19 @@ def test_a_modelled_base_radius_smaller_than_the_blades_corner_is_reported(doc):
     texts = plan.warning_texts
     assert any("base corner 1 cannot be reached by a 3 mm flat blade (r0.4)" in t for t in texts), texts
     assert any("base corner 2 cannot be reached" in t for t in texts), texts
+
+
+def test_a_model_groove_op_saved_and_reopened_keeps_its_overrides_and_reads_the_model_again(doc, tmp_path):
+    _doc, part, job, tc = make_shop(doc, shape=part_shape(CASES["angled_radii"]))
+    sub = sorted(groove_faces(part.Shape)[0])[0]
+    op = make_groove(job, (part, sub), model_groove=True, depth=3, infeed=1, tool_width=2)
+    assert op_error(op) is None, op_error(op)
+    name, from_model = op.Name, list(op.FromModel)
+    with reopened(doc, tmp_path / "model_groove.FCStd") as doc2:
+        op2 = doc2.getObject(name)
+        assert op2.ModelGroove and list(op2.ModelOverrides) == ["Depth"]  # restoring the values overrides nothing
+        assert list(op2.FromModel) == from_model
+        op2.touch()
+        doc2.recompute()
+        assert op_error(op2) is None and op2.Depth.Value == pytest.approx(3) and op2.Width.Value == pytest.approx(5)
+        assert list(op2.ModelOverrides) == ["Depth"]

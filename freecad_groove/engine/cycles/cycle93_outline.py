@@ -18,7 +18,9 @@ from typing import List, Optional, Sequence, Tuple, Union
 Point = Tuple[float, float]  # (z, radius)
 
 SHAPE_TOLERANCE = 1e-4  # mm: how far a point may stand off the line or arc it should lie on
-MAX_NOTCH_ELEMENTS = 7  # two flanks, a base and four corners
+# How far from the picked element a notch's ends are looked for: beyond CYCLE93's seven elements (two flanks,
+# a base, four corners), so that a longer notch is refused for what it is, not as "no notch".
+NOTCH_SEARCH = 15
 
 
 class NotchError(ValueError):
@@ -208,11 +210,11 @@ def _contour_pair(elements: Sequence[Element], i: int, j: int) -> Optional[Notch
 def find_notch(outline: Sequence[Element], picked: int) -> Notch:
     """The notch of the (tidied) ``outline`` that element ``picked`` belongs
     to: the nearest contour segments of one line before and after it with at
-    most MAX_NOTCH_ELEMENTS elements between them, all in the material.
+    most NOTCH_SEARCH elements between them, all in the material.
     NotchError when there is none."""
     n = len(outline)
     best = None
-    for span in range(2, min(MAX_NOTCH_ELEMENTS + 1, n - 1) + 1):
+    for span in range(2, min(NOTCH_SEARCH + 1, n - 1) + 1):
         for back in range(1, span):
             notch = _contour_pair(outline, picked - back, picked - back + span)
             if notch is not None:
@@ -225,4 +227,4 @@ def find_notch(outline: Sequence[Element], picked: int) -> Notch:
         "the picked %s from %s to %s is in no notch: within %d elements on each side the outline does not "
         "leave a straight contour line into the material and come back to it"
         % ("arc" if isinstance(what, ArcSegment) else "line", fmt_point(what.start), fmt_point(what.end),
-           MAX_NOTCH_ELEMENTS))
+           NOTCH_SEARCH))
