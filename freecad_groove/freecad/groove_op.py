@@ -91,6 +91,7 @@ from .groove_properties import (  # noqa: F401 - this module's API too
     error_properties,
 )
 from .links import SafeEnvelope
+from .model_grooves import MODEL_VALUES, ModelGroove, not_overridden, read_picked_groove
 from .units import feed_mm_per_min, length_mm
 
 # TYP units digit for "right" grooves: (longitudinal, external) -> TYP
@@ -226,6 +227,12 @@ class ObjectGroove(PathOp.ObjectOp):
     def opSetDefaultValues(self, obj: object, job: object) -> None:
         pass
 
+    def opOnChanged(self, obj: object, prop: str) -> None:
+        """A model value set by hand while ModelGroove is on overrides the model's (ModelOverrides)."""
+        if (prop in MODEL_VALUES and getattr(obj, "ModelGroove", False) and not getattr(self, "_writing_model", False)
+                and "Restore" not in obj.State and prop not in obj.ModelOverrides):
+            obj.ModelOverrides = list(obj.ModelOverrides) + [prop]
+
     def opUpdateDepths(self, obj: object) -> None:
         """The milling depth logic works on the Z bounding box; a lathe groove
         has no start/final depth."""
@@ -244,7 +251,8 @@ class ObjectGroove(PathOp.ObjectOp):
         faces = None
         try:
             check_finite(obj)
-            faces = self.groove_faces(obj)
+            model = self._apply_model(obj)  # read once: a model's section costs about 1 ms a face
+            faces = [model.face] if model is not None else self.groove_faces(obj)
             self._write_derived(obj, faces)
             plans = self.plan(obj, faces)
             cutting = cutting_data(obj)
@@ -357,7 +365,7 @@ class ObjectGroove(PathOp.ObjectOp):
                 continue
             obj.addProperty(type_id, name, group, tooltip)
             setattr(obj, name, default)
-            if isinstance(default, list):
+            if type_id == "App::PropertyEnumeration":
                 setattr(obj, name, default[0])
         # Constraints and editor modes are not stored in the document.
         obj.GrooveCount = (max(1, int(obj.GrooveCount)), 1, MAX_GROOVES, 1)
@@ -383,10 +391,37 @@ class ObjectGroove(PathOp.ObjectOp):
             elif abs(length_mm(old) - value) > 1e-12:
                 setattr(obj, name, value)
 
+    # -- grooves read from the model (model_grooves.py) -------------------------
+    def model_groove(self, obj: object) -> ModelGroove:
+        """The modelled groove the picked faces belong to (GrooveInputError naming what does not fit)."""
+        try:
+            return read_picked_groove([(base.Shape, sub, named.Label) for base, named, sub, _n in self._picked(obj)],
+                                      obj.ChamferMeasure == CHAMFER_MEASURES[1])
+        except ValueError as e:
+            raise GrooveInputError(str(e), ("Base",)) from None
+
+    def _apply_model(self, obj: object) -> Optional[ModelGroove]:
+        """ModelGroove: the groove read, its values written (less ModelOverrides), FromModel naming them."""
+        values, model = {}, None
+        if getattr(obj, "ModelGroove", False):
+            model = self.model_groove(obj)
+            values = not_overridden(model.values, obj.ModelOverrides)
+            self._writing_model = True
+            try:
+                for name, value in values.items():
+                    old = getattr(obj, name)
+                    if (abs(old.Value - value) > 1e-12) if hasattr(old, "Value") else old != value:
+                        setattr(obj, name, value)
+            finally:
+                self._writing_model = False
+        if hasattr(obj, "FromModel") and list(obj.FromModel) != list(values):
+            obj.FromModel = list(values)
+        return model
+
     # -- deriving the grooves ---------------------------------------------------
-    def groove_faces(self, obj: object) -> list[GrooveFace]:
-        """GrooveFace of every face in Base (ValueError naming a face that takes no groove)."""
-        faces = []
+    def _picked(self, obj: object) -> list[tuple]:
+        """(part, its model object for names, "FaceN", "Label.FaceN") of every picked element."""
+        picked = []
         job = PathUtils.findParentJob(document_object(obj))
         for base, subs in obj.Base or []:
             if isinstance(subs, str):
@@ -396,15 +431,25 @@ class ObjectGroove(PathOp.ObjectOp):
                 name = element_name(named, sub or "(whole object)")
                 if not sub:
                     raise GrooveInputError("%s: pick a face of the part, not the whole object" % name, ("Base",))
-                try:
-                    shape = base.Shape.getElement(sub)
-                except Exception:
-                    raise GrooveInputError("%s: no such element in the model (did the model change?)" % name,
-                                           ("Base",)) from None
-                try:
-                    faces.append(analyse_face(shape, name))
-                except ValueError as e:
-                    raise GrooveInputError(str(e), ("Base",)) from None
+                picked.append((base, named, sub, name))
+        return picked
+
+    def groove_faces(self, obj: object) -> list[GrooveFace]:
+        """GrooveFace of every face in Base (ValueError naming a face that takes
+        no groove); with ModelGroove, the contour line of the modelled groove."""
+        if getattr(obj, "ModelGroove", False):
+            return [self.model_groove(obj).face]
+        faces = []
+        for base, _named, sub, name in self._picked(obj):
+            try:
+                shape = base.Shape.getElement(sub)
+            except Exception:
+                raise GrooveInputError("%s: no such element in the model (did the model change?)" % name,
+                                       ("Base",)) from None
+            try:
+                faces.append(analyse_face(shape, name))
+            except ValueError as e:
+                raise GrooveInputError(str(e), ("Base",)) from None
         return faces
 
     def settings(self, obj: object) -> Settings:
