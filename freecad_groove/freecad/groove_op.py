@@ -74,7 +74,6 @@ import PathScripts.PathUtils as PathUtils
 from .. import hooks
 from ..engine import GroovingTool, Settings
 from ..engine.cycles.cycle93 import DEFAULT_VRT_MM, Cycle93
-from ..engine.moves import DWELL, FEED, RAPID
 from ..engine.numbers import format_value
 from . import plan_cache
 from .cutting import CuttingData, cutting_data
@@ -92,6 +91,7 @@ from .groove_properties import (  # noqa: F401 - this module's API too
 )
 from .links import SafeEnvelope
 from .model_grooves import MODEL_VALUES, ModelGroove, not_overridden, read_picked_groove
+from .op_path import comment_body, path_commands
 from .units import feed_mm_per_min, length_mm
 
 # TYP units digit for "right" grooves: (longitudinal, external) -> TYP
@@ -118,11 +118,6 @@ class _WithValues:
 def document_object(obj: object) -> object:
     """The FreeCAD object behind ``obj`` (itself, or what _WithValues wraps)."""
     return obj._obj if isinstance(obj, _WithValues) else obj
-
-
-def _comment(text: str) -> str:
-    """A Path comment body: FreeCAD drops inner parentheses."""
-    return "(%s)" % text.replace("(", "[").replace(")", "]")
 
 
 def _corner(obj: object, name: str) -> float:
@@ -155,31 +150,6 @@ def finite_or_error(value: float, what: str, properties: tuple) -> float:
     if not math.isfinite(value):
         raise GrooveInputError("%s=%s: must be a finite number" % (what, value), properties)
     return value
-
-
-def path_commands(plans: list[GroovePlan], feed_mm_per_s: float) -> list:
-    """Path commands (Path.Command) for ``plans``: G18, then per groove a
-    comment, the link rapids and the expanded moves, feeds at ``feed_mm_per_s``."""
-    commands = [Path.Command("G18")]
-    for plan in plans:
-        commands.append(Path.Command(_comment("%s groove %d: %s" % (plan.face.name, plan.index + 1,
-                                                                    plan.cycle.emit()))))
-        commands.extend(_link_commands(plan.link))
-        for move in plan.moves:
-            if move.kind == RAPID:
-                commands.append(Path.Command("G0", {"X": move.x, "Z": move.z}))
-            elif move.kind == FEED:
-                commands.append(Path.Command("G1", {"X": move.x, "Z": move.z, "F": feed_mm_per_s}))
-            elif move.kind == DWELL:
-                commands.append(Path.Command("G4", {"P": move.p}))
-        commands.extend(_link_commands(plan.retreat))
-    return commands
-
-
-def _link_commands(steps: list) -> list:
-    """A G0 per link step [LinkMove], with the axes it moves."""
-    return [Path.Command("G0", {axis: value for axis, value in zip("XZ", step) if value is not None})
-            for step in steps]
 
 
 def op_error(obj: object) -> Optional[str]:
@@ -278,7 +248,7 @@ class ObjectGroove(PathOp.ObjectOp):
         if clear_derived:
             self._write_derived(obj, [])
         self.error = message
-        self.commandlist.append(Path.Command(_comment("%s: %s" % (obj.Label, message))))
+        self.commandlist.append(Path.Command(comment_body("%s: %s" % (obj.Label, message))))
         FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, message))
 
     def current_plan(self, obj: object) -> list[GroovePlan]:
