@@ -154,7 +154,7 @@ class GroovePage(PathOpGui.TaskPanelPage):
         form.layout().insertWidget(0, error)
         error.setVisible(False)
         form.layout().insertWidget(1, new_warning_label(form))
-        model = QtGui.QCheckBox(translate(CONTEXT, "Read the groove from the model"), form)
+        model = QtGui.QCheckBox(translate(CONTEXT, "Groove from the model"), form)
         model.setObjectName("modelGroove")
         model.setToolTip(translate(CONTEXT, "The picked face is a face of a modelled groove (its base, a flank, a "
                                    "corner): its position, size, angles and corners come from the model. A value "
@@ -286,7 +286,7 @@ class GroovePage(PathOpGui.TaskPanelPage):
 
     # -- values from the model ----------------------------------------------------
     def model_box(self) -> object:
-        """The "Read the groove from the model" check box (ModelGroove)."""
+        """The "Groove from the model" check box (ModelGroove)."""
         return child(self.form, "modelGroove")
 
     def model_toggled(self) -> None:

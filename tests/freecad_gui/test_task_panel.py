@@ -32,6 +32,7 @@ from PySide import QtCore, QtGui
 
 from freecad_groove import make_groove  # noqa: E402
 from freecad_groove.gui import task_panel, widgets  # noqa: E402
+from freecad_groove.gui.tool_page import ToolPage  # noqa: E402
 
 Ok, Apply, Cancel = QtGui.QDialogButtonBox.Ok, QtGui.QDialogButtonBox.Apply, QtGui.QDialogButtonBox.Cancel
 TOOL_WIDTH = 3.0  # the default tool bit has no Width: typed into the op's ToolWidth (start_command)
@@ -266,7 +267,7 @@ def test_allowances_that_leave_the_blade_no_room_warn_in_amber_and_ok_stays(shop
     assert flank.styleSheet() == widgets.WARNED_STYLE != widgets.INVALID_STYLE
     assert page.field("BaseAllowance").property("grooveWarned") is not True
     assert task_button(panel, Ok).isEnabled()
-    tool_page = next(p for p in panel.featurePages if isinstance(p, task_panel.ToolPage))
+    tool_page = next(p for p in panel.featurePages if isinstance(p, ToolPage))
     assert widgets.child(tool_page.form, "warningLabel").text() == label.text()
     for area in FreeCADGui.getMainWindow().findChildren(QtGui.QScrollArea):  # the message, for the picture
         if area.isAncestorOf(label):
@@ -379,7 +380,7 @@ def test_only_turned_faces_can_be_picked(shop):
 def test_a_blade_wider_than_the_groove_is_shown_on_the_tool_page(shop):
     doc, job, model = shop
     op, panel, page = start_command(doc, model, "cylinder")
-    tool_page = next(p for p in panel.featurePages if isinstance(p, task_panel.ToolPage))
+    tool_page = next(p for p in panel.featurePages if isinstance(p, ToolPage))
     assert page.field("ToolWidth").isEnabled()  # the default tool bit has no Width
     replan(page, page.field("ToolWidth"), "5 mm")
     assert page.error is not None and "tool width 5" in page.error and "61602" in page.error
@@ -399,7 +400,7 @@ def test_a_blade_wider_than_the_groove_is_shown_on_the_tool_page(shop):
 
 
 def tool_page_of(panel):
-    return next(p for p in panel.featurePages if isinstance(p, task_panel.ToolPage))
+    return next(p for p in panel.featurePages if isinstance(p, ToolPage))
 
 
 def show_page(panel, page):
