@@ -107,13 +107,12 @@ def _plot(args: argparse.Namespace, result) -> None:
 
 def run(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]], report_line) -> int:
     """verify or plot; returns 0 or 1 (findings); bad input raises cli._Failure."""
-    from .verify.program_check import report
-
     result = _check(args, warnings)
     if args.command == "plot":
         _plot(args, result)
     else:
         from .cli import _write_stdout
+        from .verify.program_check import report
 
         _write_stdout((report(result),))
     for line, text in result.findings:

@@ -186,13 +186,21 @@ def _gouge_line(step: Step, check: OpCheck) -> int:
     return step.line
 
 
+def _what(step: Step) -> str:
+    """How the report names a step."""
+    if step.cycle:
+        return step.label
+    first, last = step.lines[0], step.lines[-1]
+    return "the moves of line %d" % first if first == last else "the moves of lines %d-%d" % (first, last)
+
+
 def _findings(steps: list[Step], checks: list[OpCheck]) -> list[tuple[int, str]]:
     found = []
     for step, check in zip(steps, checks):
         if check.gouge_depth:
             found.append((_gouge_line(step, check),
-                          "gouge: %s cuts %.4f mm^2 of the part outside its declared grooves, %.4f mm deep at "
-                          "X%.3f Z%.3f (X a diameter)" % (step.label, check.gouge_area, check.gouge_depth,
+                          "gouge: %s cut %.4f mm^2 of the part outside the declared grooves, %.4f mm deep at "
+                          "X%.3f Z%.3f (X a diameter)" % (_what(step), check.gouge_area, check.gouge_depth,
                                                           2 * check.gouge_at[0], check.gouge_at[1])))
         for hit in check.rapid_hits:
             found.append((hit.command, "collision: G0 X%.3f Z%.3f -> X%.3f Z%.3f passes through %.4g mm^2 of "
@@ -222,7 +230,7 @@ def check_program(name: str, record: RecordingTranslator, stock_spec: Optional[S
 
 
 def _step_line(name: str, step: Step, check: OpCheck, time: MachiningTime) -> str:
-    what = step.label if step.cycle else "moves (lines %d-%d)" % (step.lines[0], step.lines[-1])
+    what = _what(step)
     gouge = "GOUGE %.4f mm^2" % check.gouge_area if check.gouge_depth else "gouge 0"
     rapids = ", %d RAPID(S) THROUGH STOCK" % len(check.rapid_hits) if check.rapid_hits else ""
     return "%s:%d: %s: removed %.4f mm^2, %s, leftover %.4f mm^2, unreachable %.4f mm^2%s, time %s" % (
