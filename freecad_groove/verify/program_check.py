@@ -32,21 +32,22 @@ from dataclasses import dataclass, field
 from typing import Optional
 
 from shapely import Geometry
-from shapely.geometry import MultiPolygon, Polygon
+from shapely.geometry import MultiPolygon, Polygon, box
 
 from freecad_groove.engine.errors import ProgramError
 from freecad_groove.engine.moves import FEED, MINUS_X, MINUS_Z, PLUS_X, RAPID
 from freecad_groove.engine.tool_table import blade_for
 
-from .blade import swept_area
+from .blade import outline_at_origin, swept_area
 from .machining_time import Feeds, MachiningTime, feed_seconds, rapid_seconds
-from .overlay import NOISE_AREA, area, difference, intersection, union_all
+from .overlay import NOISE_AREA, area, difference, intersection, union, union_all
 from .program_record import RecordingTranslator, SpeedState, Step
 from .section import bar_section, groove_region
-from .turning import DEFAULT_TOL, GrooveRun, JobCheck, OpCheck, OpInput, check_ops
+from .turning import DEFAULT_TOL, GrooveRun, JobCheck, OpCheck, OpInput, check_op
 
 Point = tuple[float, float]
 CHUCK_MARGIN = 10.0  # mm of bar below the lowest Z the program reaches (the chuck end)
+WINDOW_MARGIN = 1.0  # mm around what a step's blade sweeps: the window its check works in
 
 
 @dataclass(frozen=True)
@@ -210,6 +211,44 @@ def _findings(steps: list[Step], checks: list[OpCheck]) -> list[tuple[int, str]]
     return sorted(found)
 
 
+def _window(step: Step) -> Geometry:
+    """A box (z, x) holding everything the step's blade sweeps and its grooves (WINDOW_MARGIN more)."""
+    base = outline_at_origin(step.blade, step.plunge)
+    points = [step.start] + [(m.x, m.z) for m in step.moves] + [p for ring in step.grooves for p in ring]
+    xs, zs = [x for x, _z in points], [z for _x, z in points]
+    return box(min(zs) + base[:, 0].min() - WINDOW_MARGIN, min(xs) + base[:, 1].min() - WINDOW_MARGIN,
+               max(zs) + base[:, 0].max() + WINDOW_MARGIN, max(xs) + base[:, 1].max() + WINDOW_MARGIN)
+
+
+def _held_in_window(rest: Geometry, window: Geometry, held):
+    """``held`` for the stock inside ``window``, the stock outside it being ``rest``:
+    a connected piece inside is held (the pieces that fell are gone already)."""
+    def attached(local: Geometry) -> Geometry:
+        if not isinstance(local, MultiPolygon):
+            return local
+        return intersection(held(union(rest, local)), window)
+    return attached
+
+
+def _sweep_steps(steps: list[Step], stock: Geometry, part: Geometry, tol: float) -> tuple[list[OpCheck], Geometry]:
+    """turning.check_op on each step in turn, inside the step's window (so
+    that a step's work does not grow with the grooves already cut); pieces
+    cut free of the chuck end are dropped after each step."""
+    held = held_by_chuck(stock.bounds[0])
+    standing, checks = stock, []
+    for step in steps:
+        window = _window(step)
+        local, rest = intersection(standing, window), difference(standing, window)
+        # the part around the window by as much again: a gouge's depth is measured to its true surface
+        zmin, xmin, zmax, xmax = window.bounds
+        grow = (zmax - zmin) + (xmax - xmin)
+        near = intersection(part, box(zmin - grow, xmin - grow, zmax + grow, xmax + grow))
+        check, after = check_op(_op(step), local, near, tol, _held_in_window(rest, window, held))
+        standing = held(union(rest, after))
+        checks.append(check)
+    return checks, standing
+
+
 def check_program(name: str, record: RecordingTranslator, stock_spec: Optional[StockSpec] = None,
                   rapid_rate: float = 0.0, tol: float = DEFAULT_TOL) -> ProgramCheck:
     """Sweep the recorded program over its stock and judge it (see the module)."""
@@ -220,9 +259,10 @@ def check_program(name: str, record: RecordingTranslator, stock_spec: Optional[S
     stock, note = default_stock(steps, record.first_approach, stock_spec)
     grooves = union_all([groove_region(ring) for step in steps for ring in step.grooves] or [Polygon()])
     part = difference(stock, grooves)
-    job = check_ops([_op(step) for step in steps], stock, part, tol, [note], held_by_chuck(stock.bounds[0]))
-    result = ProgramCheck(name, job, steps, note, [step_time(step, rapid_rate) for step in steps])
-    result.findings = _findings(steps, job.ops)
+    checks, remaining = _sweep_steps(steps, stock, part, tol)
+    result = ProgramCheck(name, JobCheck(stock, part, remaining, checks, [note]), steps, note,
+                          [step_time(step, rapid_rate) for step in steps])
+    result.findings = _findings(steps, checks)
     return result
 
 
