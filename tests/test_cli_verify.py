@@ -232,3 +232,12 @@ def test_plain_arc_into_the_part_is_a_gouge(tmp_path):
     assert result.returncode == 1 and ":10: gouge" in result.stderr.decode()
     extra_g3 = "N75 G00 Z-30.\nN76 G03 Z-40. R5.\nN77 G00 X100.\n"  # over the top: in the air
     assert run("verify", write(tmp_path, GROOVE.format(extra=extra_g3)), *SHARP_3MM).returncode == 0
+
+
+def test_matplotlib_and_shapely_are_imported_lazily():
+    """expand and emit never load shapely or matplotlib; verify loads shapely, not matplotlib."""
+    code = ("import sys; from freecad_groove import cli; import freecad_groove.verify.program_check; "
+            "print('matplotlib' in sys.modules)")
+    assert subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True).stdout == b"False\n"
+    code = "import sys; from freecad_groove import cli; print('shapely' in sys.modules or 'matplotlib' in sys.modules)"
+    assert subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True).stdout == b"False\n"
