@@ -127,6 +127,18 @@ def test_hand_derived_groove_figures(tmp_path):
     assert "removed 15.0000 mm^2" in text and "feeds 6.0 s" in text
 
 
+
+def test_inch_program_is_checked_in_mm():
+    """The same groove in inch: 0.1 in blade (2.54 mm), 0.2 in deep (5.08 mm),
+    0.004 in/rev at 500 rpm over 0.2 in: 6 s; figures in mm."""
+    program = GROOVE.format(extra="").replace("G21", "G20").replace("X50. Z-10.", "X2. Z-0.4").replace(
+        "X40. P1000 F0.1", "X1.6 P1000 F0.004").replace("X100. Z50.", "X4. Z2.")
+    record = record_program(program, "fanuc", DEFAULT_SETTINGS.with_tool(0.1, 0.0, None))
+    result = check_program("part.nc", record)
+    assert result.ok
+    assert result.job.ops[0].removed == pytest.approx(2.54 * 5.08, abs=1e-6)
+    assert result.times[0].feed == pytest.approx(6.0)
+
 def test_hand_written_g1_plunge_outside_the_groove_is_a_gouge(tmp_path):
     program = write(tmp_path, GROOVE.format(extra="N75 G00 Z-20.\nN76 G01 X44. F0.1\nN77 G00 X50.\n"))
     result = run("verify", program, *SHARP_3MM)

@@ -41,7 +41,7 @@ from freecad_groove.engine.tool_table import blade_for
 from .blade import outline_at_origin, swept_area
 from .machining_time import Feeds, MachiningTime, feed_seconds, rapid_seconds
 from .overlay import NOISE_AREA, area, difference, intersection, union, union_all
-from .program_record import RecordingTranslator, SpeedState, Step
+from .program_record import RecordingTranslator, SpeedState, Step, mm_blade
 from .section import bar_section, groove_region
 from .turning import DEFAULT_TOL, GrooveRun, JobCheck, OpCheck, OpInput, check_op
 
@@ -133,7 +133,7 @@ def _fill_blades(steps: list[Step], tools, default_blade) -> None:
         if step.cycle:
             continue
         try:
-            step.blade = blade_for(step.tool, tools, default_blade)
+            step.blade = mm_blade(blade_for(step.tool, tools, default_blade), step.scale)
         except ProgramError as exc:
             raise ProgramError("verify needs the blade cutting these moves: %s" % exc, step.line) from None
         before = [s for s in steps[:index] if s.cycle]

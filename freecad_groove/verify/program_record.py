@@ -68,6 +68,7 @@ class Step:
     line: int
     start: Point
     tool: Optional[int]
+    scale: float = 1.0  # mm per program unit when the step runs (the blade's lengths are program units)
     blade: Optional[GroovingTool] = None
     plunge: Optional[str] = None
     cycle: bool = False
@@ -110,8 +111,8 @@ class RecordingTranslator(Translator):
     def _plain_step(self, start: Point) -> Step:
         """The open plain step of the tool in force, a new one when there is none."""
         last = self.steps[-1] if self.steps else None
-        if last is None or last.cycle or last.tool != self.state.tool:
-            last = Step("moves", self._line, start, self.state.tool)
+        if last is None or last.cycle or last.tool != self.state.tool or last.scale != self._mm():
+            last = Step("moves", self._line, start, self.state.tool, self._mm())
             self.steps.append(last)
         return last
 
@@ -160,7 +161,7 @@ class RecordingTranslator(Translator):
         self._call = (entry, model, start, settings)
 
     def _after_cycle(self, moves) -> None:
-        start = self._position()
+        start, feed = self._position(), self.state.feed
         super()._after_cycle(moves)
         entry, model, machine, settings = self._call
         scale = self._mm()
@@ -168,17 +169,26 @@ class RecordingTranslator(Translator):
             blade = blade_for(self.state.tool, self.tools, settings.tool)
         except ProgramError as exc:
             self._fail("verify needs the blade of %s: %s" % (entry.name, exc))
-        step = Step(entry.name, self._line, start, self.state.tool, blade, cycle=True)
+        step = Step("%s (line %d)" % (entry.name, self._line), self._line, start, self.state.tool, scale,
+                    mm_blade(blade, scale), cycle=True)
         step.moves = [move._replace(x=move.x * scale, z=move.z * scale) for move in moves]
         step.lines = [self._line] * len(moves)
-        step.speeds = [self._speeds(move.f) for move in moves]
+        for move in moves:  # a move without F runs at the last F before it
+            feed = feed if move.f is None else move.f
+            step.speeds.append(self._speeds(feed))
         step.plunge, grooves, air = declared_grooves(entry.name, model, machine, settings, blade)
         step.grooves = [[(x * scale, z * scale) for x, z in ring] for ring in grooves]
         step.air = [[(x * scale, z * scale) for x, z in ring] for ring in air]
-        step.label = "%s (line %d)" % (entry.name, self._line)
         if self.first_approach is None:
             self.first_approach = start
         self.steps.append(step)
+
+
+def mm_blade(blade: GroovingTool, scale: float) -> GroovingTool:
+    """The blade with its width and corner radius in mm (``scale`` mm per program unit)."""
+    if scale == 1.0:
+        return blade
+    return replace(blade, width=blade.width * scale, corner_radius=blade.corner_radius * scale)
 
 
 # ---------------------------------------------------------------- geometry
