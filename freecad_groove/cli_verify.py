@@ -24,6 +24,21 @@ SHAPELY_MISSING = ("verify and plot need the Python package shapely (2.0 or newe
                    "apt install python3-shapely; elsewhere: python3 -m pip install shapely")
 MATPLOTLIB_MISSING = ("plot needs the Python package matplotlib: Debian/Ubuntu: apt install python3-matplotlib; "
                       "elsewhere: python3 -m pip install matplotlib")
+DESCRIPTION = """\
+verify: run every move of a program (cycle calls expanded, plain G0/G1/G2/G3
+blocks, arcs as chords) through the turned section of the stock with the
+blade's outline, and compare with the part the program declares: the stock
+less the grooves its cycle calls describe. A feed cutting anything else is a
+gouge, a rapid entering standing stock a collision. Prints per cycle call and
+in total: removed, gouge, leftover the blade could reach, unreachable,
+machining time. plot: draw that XZ section (-o FILE.svg or FILE.png).
+
+Exit status: 0 no gouge and no collision; 1 a gouge or collision (one line
+PROGRAM:LINE: gouge|collision: ... on stderr each; plot still draws); 2 bad
+input (one line PROGRAM:LINE: message), shapely or matplotlib missing too.
+The stock by default: a bar through the program's first approach point (see
+the README, "verify and plot"); --stock D[xL] gives it.
+"""
 _STOCK = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*(?:[xX]\s*(\d+(?:\.\d*)?|\.\d+))?\s*$")
 
 
@@ -39,7 +54,7 @@ def stock_option(text: str) -> Tuple[float, object]:
 def add_verify_parsers(sub: argparse._SubParsersAction) -> None:
     for command, helptext in (("verify", "simulate a program's moves over the stock: gouges, collisions, figures"),
                               ("plot", "draw a program's XZ section: stock, part, moves, gouges (SVG or PNG)")):
-        parser = sub.add_parser(command, help=helptext, description=__doc__,
+        parser = sub.add_parser(command, help=helptext, description=DESCRIPTION,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
         parser.add_argument("program", metavar="PROGRAM", help="the program to read; - reads standard input")
         parser.add_argument("--dialect", required=True, choices=DIALECTS, help="the control the program is for: "
@@ -87,9 +102,9 @@ def _check(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]):
         raise _Failure.of_program_error(name, exc) from None
 
 
-def _plot(args: argparse.Namespace, result) -> None:
+def _drawer(args: argparse.Namespace):
+    """plot's draw function, checked before the simulation: the picture's format and matplotlib."""
     from .cli import _Failure
-    from .engine.output import write_chunks_atomically
 
     if not args.output.lower().endswith((".svg", ".png")):
         raise _Failure(args.output, 0, "the picture's name must end in .svg or .png")
@@ -98,6 +113,13 @@ def _plot(args: argparse.Namespace, result) -> None:
     except ImportError as exc:
         _missing(exc, ("matplotlib",))
         raise _Failure(args.output, 0, MATPLOTLIB_MISSING) from None
+    return draw
+
+
+def _plot(args: argparse.Namespace, draw, result) -> None:
+    from .cli import _Failure
+    from .engine.output import write_chunks_atomically
+
     data = draw(result, args.output.lower().rsplit(".", 1)[1])
     try:  # bytes through the text writer: Latin-1 maps each byte to one character and back
         write_chunks_atomically(args.output, [data.decode("latin-1")], encoding="latin-1")
@@ -107,9 +129,10 @@ def _plot(args: argparse.Namespace, result) -> None:
 
 def run(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]], report_line) -> int:
     """verify or plot; returns 0 or 1 (findings); bad input raises cli._Failure."""
+    draw = _drawer(args) if args.command == "plot" else None
     result = _check(args, warnings)
-    if args.command == "plot":
-        _plot(args, result)
+    if draw is not None:
+        _plot(args, draw, result)
     else:
         from .cli import _write_stdout
         from .verify.program_check import report

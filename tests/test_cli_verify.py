@@ -149,6 +149,15 @@ def test_hand_written_g1_plunge_outside_the_groove_is_a_gouge(tmp_path):
     assert "3.0000 mm deep at X44.00" in errors[0]  # the bottom of the plunge
 
 
+
+def test_plot_of_a_gouge_exits_1_and_draws(tmp_path):
+    needs_matplotlib()
+    out = tmp_path / "gouge.svg"
+    program = write(tmp_path, GROOVE.format(extra="N75 G00 Z-20.\nN76 G01 X44. F0.1\nN77 G00 X50.\n"))
+    result = run("plot", program, *SHARP_3MM, "-o", str(out))
+    assert result.returncode == 1 and ":10: gouge: " in result.stderr.decode()
+    assert ET.parse(out).getroot().tag.endswith("svg")
+
 def test_rapid_through_standing_stock_is_a_collision(tmp_path):
     program = write(tmp_path, GROOVE.format(extra="N75 G00 X44. Z-20.\n"))
     result = run("verify", program, *SHARP_3MM)
