@@ -530,9 +530,10 @@ def _negative_words(argv):
 
 
 def main(argv=None):
-    """Run the command line; returns the exit status: 0, 1 for a broken pipe,
-    2 for an error (one line PROGRAM:LINE: message on stderr), 128 + the
-    signal's number for SIGINT (130), SIGTERM (143) and SIGHUP (129)."""
+    """Run the command line; returns the exit status: 0, 1 for a broken pipe
+    (and for verify/plot, a gouge or collision found), 2 for an error (one
+    line PROGRAM:LINE: message on stderr), 128 + the signal's number for
+    SIGINT (130), SIGTERM (143) and SIGHUP (129)."""
     previous = _catch_signals()
     name = "freecad_groove"
     try:
