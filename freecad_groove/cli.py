@@ -2,6 +2,10 @@
 
     python3 -m freecad_groove expand PROGRAM --dialect sinumerik [--tool-table FILE] [-o OUT] [--to linuxcnc]
     python3 -m freecad_groove emit cycle93 --tool-width 3 --axfa 35 --axsa 60 ...
+    python3 -m freecad_groove verify PROGRAM --dialect sinumerik --tool-table FILE [--stock D[xL]]
+    python3 -m freecad_groove plot PROGRAM --dialect sinumerik --tool-table FILE -o FILE.svg
+
+(verify and plot: cli_verify.py.)
 
 Thin layer: argument parsing and error reporting; the work is done by
 freecad_groove.engine (translator.iter_translation, targets.write_program and
@@ -64,6 +68,8 @@ from .cli_options import (
     siemens_value,
     start_state,
 )
+from .cli_verify import add_verify_parsers
+from .cli_verify import run as run_verify
 from .engine import registry
 from .engine.input_controls import DIALECTS, INPUT_CONTROLS
 from .engine.output import write_chunks_atomically
@@ -510,6 +516,7 @@ def build_parser():
     add_settings_options(ex)
     add_tool_table_option(ex)
     _add_emit_parsers(sub)
+    add_verify_parsers(sub)
     return parser
 
 
@@ -523,9 +530,10 @@ def _negative_words(argv):
 
 
 def main(argv=None):
-    """Run the command line; returns the exit status: 0, 1 for a broken pipe,
-    2 for an error (one line PROGRAM:LINE: message on stderr), 128 + the
-    signal's number for SIGINT (130), SIGTERM (143) and SIGHUP (129)."""
+    """Run the command line; returns the exit status: 0, 1 for a broken pipe
+    (and for verify/plot, a gouge or collision found), 2 for an error (one
+    line PROGRAM:LINE: message on stderr), 128 + the signal's number for
+    SIGINT (130), SIGTERM (143) and SIGHUP (129)."""
     previous = _catch_signals()
     name = "freecad_groove"
     try:
@@ -542,7 +550,7 @@ def main(argv=None):
 
 def _run_name(args):
     """The name an error of this run starts with."""
-    if args.command == "expand":
+    if args.command in ("expand", "verify", "plot"):
         return _program_name(args.program)
     return "emit %s" % args.cycle_name
 
@@ -550,13 +558,16 @@ def _run_name(args):
 def _run(args, name):
     warnings: List[Tuple[int, CycleWarning]] = []
     try:
+        status = 0
         if args.command == "expand":
             _expand(args, warnings)
+        elif args.command in ("verify", "plot"):
+            status = run_verify(args, warnings, _report)
         else:
             _write_stdout((_emit(args, warnings),))
         for line, warning in warnings:  # after the output: a failed run reports its error alone
             _report(name, line, "warning: " + warning.text)
-        return 0
+        return status
     except _Failure as exc:
         _report(exc.name, exc.line, exc.message)
     except BrokenPipeError:

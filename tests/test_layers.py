@@ -62,13 +62,14 @@ def files(*patterns):
           "freecad_groove/cli.py", "freecad_groove/cli_options.py", "freecad_groove/hooks.py"),
          FREECAD | GUI | FREECAD_LAYER | GUI_LAYER | VERIFY_LAYER),
         (("freecad_groove/verify/*.py",), FREECAD | GUI | FREECAD_LAYER | GUI_LAYER),
+        (("freecad_groove/cli_verify.py",), FREECAD | GUI | FREECAD_LAYER | GUI_LAYER),
         # The package's make_groove() loads the FreeCAD layer lazily, on its first call.
         (("freecad_groove/__init__.py",), FREECAD | GUI | GUI_LAYER),
         (("freecad_groove/freecad/*.py", "freecad_groove/freecad/posts/*.py", "freecad_groove/demo.py",
           "postprocessors/*_post.py", "Init.py"),
          GUI | GUI_LAYER),
     ],
-    ids=["engine", "verify", "package", "freecad"],
+    ids=["engine", "verify", "cli_verify", "package", "freecad"],
 )
 def test_layer_imports(patterns, forbidden):
     for path in files(*patterns):

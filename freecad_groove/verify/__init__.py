@@ -3,7 +3,8 @@ moves and the verdict on the groove they cut. Today it is the tests' oracle.
 
 It imports the engine (``freecad_groove.engine.moves``) and shapely (>= 2.0)
 with numpy, never FreeCAD or Qt; the engine never imports it. FreeCAD does not
-bundle shapely: today only the tests import this package.
+bundle shapely: the tests, verify_job and the command line's verify and plot
+import this package (plot.py also matplotlib, imported by ``plot`` only).
 
 Geometry lives in the lathe's half plane. A shapely point is ``(z, x)`` with
 ``x`` the *radius*, so a plot reads like a lathe drawing: Z horizontal, X up.
@@ -28,7 +29,9 @@ What the oracle checks (see ``check_groove``):
 Modules: ``overlay`` (robust shapely overlays), ``blade`` (tool outline,
 swept area), ``sweep`` (``simulate``), ``reach`` (reachable and unreachable
 regions, Minkowski sums), ``depth`` (the distances the verdict reports),
-``verdict`` (``check_groove``), ``stock`` (``region``, ``bar``).
+``verdict`` (``check_groove``), ``stock`` (``region``, ``bar``); the command
+line's ``program_record`` (a program's moves by line), ``program_check``
+(``verify``) and ``plot``.
 """
 
 from .blade import ARC_EXCESS, swept_area, tool_outline

@@ -9,8 +9,9 @@ stock and everything derived from it are shapely (z, x).
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from typing import Optional
 
 import numpy as np
 import shapely
@@ -155,10 +156,11 @@ def _cut(
     stock: Geometry,
     rapid_area_tol: float,
     rapid_skin: float,
+    attached: Optional[Callable[[Geometry], Geometry]] = None,
 ) -> tuple[Geometry, list[RapidCollision]]:
     """Remove the feeds' swept areas from ``stock`` in program order, checking
-    each rapid against the stock standing when it runs. Returns the stock
-    left and the rapid collisions."""
+    each rapid against the stock standing when it runs (``attached`` of it:
+    see simulate). Returns the stock left and the rapid collisions."""
     starts = {i: a for i, a, _ in segments}
     remaining = stock
     pending = []
@@ -169,7 +171,8 @@ def _cut(
         elif m.kind == RAPID:
             remaining = _flush(remaining, pending)
             pending = []
-            hit = _rapid_overlap(hulls[i], remaining, rapid_skin)
+            standing = remaining if attached is None else attached(remaining)
+            hit = _rapid_overlap(hulls[i], standing, rapid_skin)
             if hit is not None and hit.area > rapid_area_tol:
                 collisions.append(RapidCollision(i, m, starts[i], hit.area, hit))
     return _flush(remaining, pending), collisions
@@ -183,6 +186,7 @@ def simulate(
     stock: Geometry,
     rapid_area_tol: float = RAPID_AREA_TOL,
     rapid_skin: float = RAPID_SKIN,
+    attached: Optional[Callable[[Geometry], Geometry]] = None,
 ) -> SimulationResult:
     """Run ``moves`` (moves.Move, x radius) with ``tool`` plunging in ``plunge``
     from ``start`` = (x, z) through ``stock`` (shapely (z, x) Polygon/MultiPolygon).
@@ -193,12 +197,14 @@ def simulate(
     still standing at that moment by more than ``rapid_area_tol`` mm^2 is
     recorded. DWELL removes nothing; a dwell whose x, z differ from the tool
     position by more than 1e-9 is recorded as a dwell mismatch.
+    ``attached`` (optional) gives the part of the standing stock a rapid is
+    checked against: what is still held (a piece cut off has fallen away).
     """
     moves = list(moves)
     base = outline_at_origin(tool, plunge)
     segments, dwell_mismatches, final = _walk(moves, start)
     hulls = _swept_hulls(segments, base)
-    remaining, collisions = _cut(moves, segments, hulls, stock, rapid_area_tol, rapid_skin)
+    remaining, collisions = _cut(moves, segments, hulls, stock, rapid_area_tol, rapid_skin, attached)
     removed = difference(stock, remaining)
     return SimulationResult(
         stock=stock,

@@ -23,6 +23,7 @@ Geometry is shapely (z, x), x the radius; positions are (x, z).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Optional
 
@@ -193,11 +194,14 @@ def _groove_figures(check: OpCheck, op: OpInput, part: Geometry, before: Geometr
     check.unreachable, check.leftover = area(check.unreachable_region), area(check.leftover_region)
 
 
-def _sweep(op: OpInput, stock: Geometry) -> tuple[Geometry, list[RapidHit]]:
+Attached = Optional[Callable[[Geometry], Geometry]]  # the standing stock still held (sweep.simulate)
+
+
+def _sweep(op: OpInput, stock: Geometry, attached: Attached = None) -> tuple[Geometry, list[RapidHit]]:
     """The stock left after the op's moves, groove by groove, and its rapids through stock."""
     position, hits = op.start, []
     for run in op.grooves:
-        result = simulate(run.moves, run.tool, run.plunge, position, stock)
+        result = simulate(run.moves, run.tool, run.plunge, position, stock, attached=attached)
         for collision in result.rapid_collisions:
             point = collision.region.representative_point()
             hits.append(RapidHit(run.commands[collision.index], collision.start, (collision.move.x, collision.move.z),
@@ -206,13 +210,14 @@ def _sweep(op: OpInput, stock: Geometry) -> tuple[Geometry, list[RapidHit]]:
     return stock, hits
 
 
-def check_op(op: OpInput, stock: Geometry, part: Geometry, tol: float = DEFAULT_TOL) -> tuple[OpCheck, Geometry]:
+def check_op(op: OpInput, stock: Geometry, part: Geometry, tol: float = DEFAULT_TOL,
+             attached: Attached = None) -> tuple[OpCheck, Geometry]:
     """One op's figures over ``stock`` (the stock standing when it starts),
-    and the stock it leaves."""
+    and the stock it leaves; ``attached``: see sweep.simulate."""
     check = OpCheck(op.label, op.error)
     if op.error:
         return check, stock
-    after, check.rapid_hits = _sweep(op, stock)
+    after, check.rapid_hits = _sweep(op, stock, attached)
     check.removed_region = difference(stock, after)
     check.removed = area(check.removed_region)
     _gouge(check, check.removed_region, part, tol)
@@ -224,13 +229,14 @@ def check_op(op: OpInput, stock: Geometry, part: Geometry, tol: float = DEFAULT_
 
 
 def check_ops(ops: list[OpInput], stock: Geometry, model: Geometry, tol: float = DEFAULT_TOL,
-              notes: Optional[list[str]] = None) -> JobCheck:
+              notes: Optional[list[str]] = None, attached: Attached = None) -> JobCheck:
     """Sweep ``ops`` in order over ``stock`` (each op starts from what the
-    previous ones left) and judge them against ``model``, the part's section."""
+    previous ones left) and judge them against ``model``, the part's section;
+    ``attached``: see sweep.simulate."""
     grooves = [groove_region(run.region) for op in ops if not op.error for run in op.grooves]
     part = part_to_leave(model, grooves)
     checks, standing = [], stock
     for op in ops:
-        check, standing = check_op(op, standing, part, tol)
+        check, standing = check_op(op, standing, part, tol, attached)
         checks.append(check)
     return JobCheck(stock, part, standing, checks, list(notes or []))

@@ -1,0 +1,60 @@
+"""Command-line verify benchmark: prints figures, asserts nothing.
+
+    python3 benchmarks/bench_cli_verify.py [--calls 20 200] [--root CHECKOUT]
+
+Writes a Siemens program of N featured CYCLE93 calls (bench_cli_memory's
+grooves: one every 40 mm along one bar, flank angles, edge radii, base
+chamfers, allowances), runs ``python3 -m freecad_groove verify PROGRAM`` on it
+in a child process (one per run, so each figure is its own) and prints its
+time, its peak resident memory (``ru_maxrss``), its exit status and the
+number of moves simulated.
+"""
+
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+from bench_cli_memory import program
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+CHILD = ("import resource, sys; sys.argv[0] = 'freecad_groove'; "
+         "from freecad_groove import cli; code = cli.main(sys.argv[1:]); "
+         "sys.stderr.write('maxrss %d\\n' % resource.getrusage(resource.RUSAGE_SELF).ru_maxrss); "
+         "sys.exit(code)")
+
+
+def run_child(path: str, root: str) -> tuple:
+    """(seconds, peak MiB, exit status, report) of one ``verify`` child."""
+    argv = [sys.executable, "-c", CHILD, "verify", path, "--dialect", "sinumerik", "--tool-width", "3",
+            "--tool-radius", "0.4"]
+    t0 = time.perf_counter()
+    proc = subprocess.run(argv, cwd=root, capture_output=True, check=False)
+    seconds = time.perf_counter() - t0
+    err = proc.stderr.decode()
+    if proc.returncode not in (0, 1):
+        raise SystemExit("verify failed (%d): %s" % (proc.returncode, err))
+    return seconds, int(err.split("maxrss")[-1]) / 1024.0, proc.returncode, proc.stdout.decode()
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--calls", type=int, nargs="+", default=[20, 200])
+    parser.add_argument("--root", default=ROOT, help="the checkout whose freecad_groove runs")
+    args = parser.parse_args()
+    print("%7s %9s %9s %6s %s" % ("calls", "seconds", "peak MiB", "exit", "total line"))
+    with tempfile.TemporaryDirectory() as folder:
+        for calls in args.calls:
+            path = os.path.join(folder, "calls%d.mpf" % calls)
+            with open(path, "w") as f:
+                f.write(program(calls))
+            seconds, mib, status, report = run_child(path, args.root)
+            total = [line for line in report.splitlines() if ": total: " in line]
+            print("%7d %9.2f %9.1f %6d %s" % (calls, seconds, mib, status,
+                                               total[0].split(": total: ")[1][:90] if total else "-"))
+
+
+if __name__ == "__main__":
+    main()

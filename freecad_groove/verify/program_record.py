@@ -1,0 +1,267 @@
+"""What a program makes the tool do, block by block, for the command line's
+``verify`` and ``plot``: the translator reads the program (every check of
+``expand`` applies) and this module records, with each block's line, the
+moves it makes, the blade cutting them, the feeds and speeds in force and,
+for a cycle call, the grooves the call declares.
+
+It reads the translator's work through four of its methods, wrapped here (the
+engine never imports this package): ``_motion`` (a G0/G1/G2/G3 block: its end
+point, arc words), ``_dwell_seconds`` (a G4's time), ``_collect_warnings``
+(a cycle call: the model, its start and settings) and ``_after_cycle`` (the
+expanded moves).
+
+Everything recorded is in mm (an inch program is scaled), X a radius;
+geometry as lists of (x, z) points like ``moves.Move``.
+
+Choices (README, "Choices of verify and plot"):
+
+* An arc G2/G3 becomes chords no farther than ARC_CHORD_TOL from the arc.
+  Seen with Z to the right and X (the radius) up, G2 turns clockwise (the
+  plane G18 seen from +Y).
+* A CYCLE93 call declares its groove by its profile (GrooveGeometry's
+  region); a pecking cycle (G77/G76, G75/G74) one groove per plunge position:
+  the blade's outline swept from the cycle's start to its bottom.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from typing import Optional
+
+from shapely.geometry import box
+
+from freecad_groove.engine.errors import ProgramError
+from freecad_groove.engine.moves import DWELL, FEED, MINUS_X, PLUS_X, RAPID, GroovingTool, Move
+from freecad_groove.engine.numbers import MM_PER_INCH
+from freecad_groove.engine.tool_table import blade_for
+from freecad_groove.engine.translator import Translator, program_lines
+
+from .blade import swept_area
+from .overlay import intersection
+
+Point = tuple[float, float]  # (x, z), x the radius
+
+ARC_CHORD_TOL = 0.0005  # mm: the chords of a G2/G3 stay this close to the arc (half the check's tolerance)
+CONTOUR_AIR = 1000.0  # mm: how far above a CYCLE93's contour line the air it takes reaches
+FEET_PER_METRE = 1000.0 / 25.4 / 12.0
+
+
+@dataclass(frozen=True)
+class SpeedState:
+    """The feed mode and spindle in force (mm, mm/min or mm/rev, m/min)."""
+
+    feed: Optional[float]
+    per_rev: bool
+    rpm: Optional[float]
+    surface_speed: Optional[float]
+    max_rpm: Optional[float]
+
+
+@dataclass
+class Step:
+    """A cycle call, or the plain blocks (G0/G1/G2/G3, G4) between two calls
+    with one tool: ``lines`` the line of each move; ``grooves`` the grooves a
+    call declares (closed (x, z) rings)."""
+
+    label: str
+    line: int
+    start: Point
+    tool: Optional[int]
+    scale: float = 1.0  # mm per program unit when the step runs (the blade's lengths are program units)
+    blade: Optional[GroovingTool] = None
+    plunge: Optional[str] = None
+    cycle: bool = False
+    moves: list[Move] = field(default_factory=list)
+    lines: list[int] = field(default_factory=list)
+    speeds: list[SpeedState] = field(default_factory=list)
+    grooves: list[list[Point]] = field(default_factory=list)
+    air: list[list[Point]] = field(default_factory=list)  # what the call takes to be air already
+
+
+class RecordingTranslator(Translator):
+    """A Translator that records the Steps of the program it reads."""
+
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.steps: list[Step] = []
+        self.first_approach: Optional[Point] = None
+        self._call: Optional[tuple] = None
+
+    # -- units and state --------------------------------------------------------
+
+    def _mm(self) -> float:
+        return 1.0 if self.state.metric else MM_PER_INCH
+
+    def _position(self) -> Optional[Point]:
+        state, scale = self.state, self._mm()
+        if state.x is None or state.z is None:
+            return None
+        return (state.x * scale, state.z * scale)
+
+    def _speeds(self, feed: Optional[float] = None) -> SpeedState:
+        state, scale = self.state, self._mm()
+        feed = state.feed if feed is None else feed
+        surface = None
+        if state.css and state.spindle is not None:
+            surface = state.spindle if state.metric else state.spindle / FEET_PER_METRE
+        return SpeedState(None if feed is None else feed * scale, bool(state.feed_per_rev),
+                          None if state.css else state.spindle, surface, state.speed_limit)
+
+    def _plain_step(self, start: Point) -> Step:
+        """The open plain step of the tool in force, a new one when there is none."""
+        last = self.steps[-1] if self.steps else None
+        if last is None or last.cycle or last.tool != self.state.tool or last.scale != self._mm():
+            last = Step("moves", self._line, start, self.state.tool, self._mm())
+            self.steps.append(last)
+        return last
+
+    def _add(self, moves: list[Move], start: Point) -> None:
+        step = self._plain_step(start)
+        step.moves.extend(moves)
+        step.lines.extend([self._line] * len(moves))
+        step.speeds.extend([self._speeds()] * len(moves))
+        if self.first_approach is None and moves and moves[0].kind == RAPID:
+            self.first_approach = (moves[-1].x, moves[-1].z)
+
+    # -- the wrapped translator methods -----------------------------------------
+
+    def _motion(self, block, groups, output) -> None:
+        start = self._position()
+        super()._motion(block, groups, output)
+        end = self._position()
+        if start is None or end is None or not block.letters() & {"X", "Z", "U", "W"}:
+            if end is not None and self.first_approach is None and self.state.motion == RAPID:
+                self.first_approach = end
+            return
+        kind = self.state.motion
+        if kind in (RAPID, FEED):
+            self._add([Move(kind, end[0], end[1])], start)
+        else:
+            centre = self._arc_centre(block, start, end, kind)
+            self._add([Move(FEED, x, z) for x, z in arc_chords(start, end, centre, kind == "G2")], start)
+
+    def _arc_centre(self, block, start: Point, end: Point, kind: str) -> Point:
+        scale = self._mm()
+        radius_word = block.get("R") or block.get("CR")
+        if radius_word is None:
+            i, k = (block.get(letter) for letter in ("I", "K"))
+            return (start[0] + (i.value * scale if i else 0.0), start[1] + (k.value * scale if k else 0.0))
+        return radius_centre(start, end, radius_word.value * scale, kind == "G2")
+
+    def _dwell_seconds(self, reading, word) -> float:
+        seconds = super()._dwell_seconds(reading, word)
+        where = self._position()
+        if where is not None:
+            self._add([Move(DWELL, where[0], where[1], None, seconds)], where)
+        return seconds
+
+    def _collect_warnings(self, entry, model, start, settings) -> None:
+        super()._collect_warnings(entry, model, start, settings)
+        self._call = (entry, model, start, settings)
+
+    def _after_cycle(self, moves) -> None:
+        start, feed = self._position(), self.state.feed
+        super()._after_cycle(moves)
+        entry, model, machine, settings = self._call
+        scale = self._mm()
+        try:
+            blade = blade_for(self.state.tool, self.tools, settings.tool)
+        except ProgramError as exc:
+            self._fail("verify needs the blade of %s: %s" % (entry.name, exc))
+        step = Step("%s (line %d)" % (entry.name, self._line), self._line, start, self.state.tool, scale,
+                    mm_blade(blade, scale), cycle=True)
+        step.moves = [move._replace(x=move.x * scale, z=move.z * scale) for move in moves]
+        step.lines = [self._line] * len(moves)
+        for move in moves:  # a move without F runs at the last F before it
+            feed = feed if move.f is None else move.f
+            step.speeds.append(self._speeds(feed))
+        step.plunge, grooves, air = declared_grooves(entry.name, model, machine, settings, blade)
+        step.grooves = [[(x * scale, z * scale) for x, z in ring] for ring in grooves]
+        step.air = [[(x * scale, z * scale) for x, z in ring] for ring in air]
+        if self.first_approach is None:
+            self.first_approach = start
+        self.steps.append(step)
+
+
+def mm_blade(blade: GroovingTool, scale: float) -> GroovingTool:
+    """The blade with its width and corner radius in mm (``scale`` mm per program unit)."""
+    if scale == 1.0:
+        return blade
+    return replace(blade, width=blade.width * scale, corner_radius=blade.corner_radius * scale)
+
+
+# ---------------------------------------------------------------- geometry
+
+
+def radius_centre(start: Point, end: Point, radius: float, clockwise: bool) -> Point:
+    """The centre (x, z) of the arc of ``radius`` (at most half a turn) from start to end."""
+    (x0, z0), (x1, z1) = start, end
+    half = math.hypot(x1 - x0, z1 - z0) / 2.0
+    height = math.sqrt(max(radius * radius - half * half, 0.0))
+    mz, mx = (z0 + z1) / 2.0, (x0 + x1) / 2.0
+    dz, dx = (z1 - z0) / (2 * half), (x1 - x0) / (2 * half)
+    side = -1.0 if clockwise else 1.0  # (z, x) plane: a clockwise minor arc has its centre to the right
+    return (mx + side * height * dz, mz - side * height * dx)
+
+
+def arc_chords(start: Point, end: Point, centre: Point, clockwise: bool) -> list[Point]:
+    """Points (x, z) along the arc from start to end (end included), chords within ARC_CHORD_TOL."""
+    cx, cz = centre
+    radius = math.hypot(start[0] - cx, start[1] - cz)
+    a0 = math.atan2(start[0] - cx, start[1] - cz)  # angle in the (z, x) plane
+    a1 = math.atan2(end[0] - cx, end[1] - cz)
+    sweep = a1 - a0
+    if clockwise:
+        sweep = sweep - 2 * math.pi if sweep > 0 else sweep
+    else:
+        sweep = sweep + 2 * math.pi if sweep < 0 else sweep
+    if radius <= ARC_CHORD_TOL:
+        return [end]
+    step = 2.0 * math.acos(max(1.0 - ARC_CHORD_TOL / radius, -1.0))
+    count = max(1, math.ceil(abs(sweep) / step))
+    points = [(cx + radius * math.sin(a0 + sweep * k / count), cz + radius * math.cos(a0 + sweep * k / count))
+              for k in range(1, count)]
+    return points + [end]
+
+
+Rings = list[list[Point]]
+
+
+def declared_grooves(name: str, model, start, settings, blade: GroovingTool) -> tuple[str, Rings, Rings]:
+    """(plunge direction, the grooves the call declares, what it takes to be
+    air already), (x, z) rings in the program's units. CYCLE93 takes the
+    contour turned: the air above its contour line across the groove's
+    window (GrooveGeometry.final_top's ends)."""
+    if hasattr(model, "AXIS"):  # the pecking cycles
+        plunge = model.plunge_direction(start)
+        bottom, p0, positions, _peck = model._grooves(start)
+        return plunge, [_plunge_groove(model.AXIS, plunge, blade, p0, bottom, s) for s in positions], []
+    if hasattr(model, "geometry"):  # CYCLE93
+        geometry = model.geometry(replace(settings, tool=blade), start.metric)
+        lo, hi, m = geometry.final_top[0][0], geometry.final_top[-1][0], geometry.slope
+        above = [(lo, m * lo), (hi, m * hi), (hi, m * hi + CONTOUR_AIR), (lo, m * lo + CONTOUR_AIR)]
+        air = [geometry.frame.point(u, v) for u, v in above]
+        return model.plunge_direction(), [geometry.region_world()], [air]
+    raise ProgramError("verify does not know the groove %s declares" % name)
+
+
+def _plunge_groove(axis: str, plunge: str, blade: GroovingTool, p0: float, bottom: float, s: float) -> list[Point]:
+    """The blade's outline swept from p0 to bottom at s, cut off at p0 (the groove's opening)."""
+    a, b = ((p0, s), (bottom, s)) if axis == "X" else ((s, p0), (s, bottom))
+    hull = swept_area(blade, plunge, a, b)
+    zmin, xmin, zmax, xmax = hull.bounds
+    if plunge in (MINUS_X, PLUS_X):
+        window = box(zmin, min(p0, bottom), zmax, max(p0, bottom))
+    else:
+        window = box(min(p0, bottom), xmin, max(p0, bottom), xmax)
+    ring = intersection(hull, window).exterior.coords
+    return [(x, z) for z, x in ring]
+
+
+def record_program(text, dialect: str, settings, start=None, tools=None) -> RecordingTranslator:
+    """Read the whole program; ProgramError on the first line that cannot be translated."""
+    translator = RecordingTranslator(dialect, settings, start=start, tools=tools)
+    for _chunk in translator.translate(program_lines(text)):
+        pass
+    return translator
