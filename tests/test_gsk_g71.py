@@ -11,16 +11,18 @@ Tuples are (kind, x radius, z, f, c).
 import math
 
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 from pecking_helpers import F, R, raises
 from rs274 import require_rs274, run_rs274
+from test_cli import run_inline
 
 from freecad_groove.engine.cycles.gsk_g71 import GskG71, PathBlock, arc_points
 from freecad_groove.engine.errors import ProgramError
 from freecad_groove.engine.moves import MachineState
 from freecad_groove.engine.numbers import ARC_CHORD_TOLERANCE, format_decimal
 from freecad_groove.engine.targets import Writer, write_program
+from freecad_groove.engine.translator import translate_program
 
 C_FEED = 100.0 * 180.0 / (math.pi * 20.0)
 L_SLOT = "G1 Z-10. F100.\nG1 C90."
@@ -227,3 +229,102 @@ def test_a_lathe_target_refuses_c_and_names_the_targets_with_c():
     moves = region("G7.1 C20.").expand(state(18.0, feed=100.0))
     with pytest.raises(ProgramError, match=r"no C axis \(targets with C: linuxcnc-c, fanuc-c\)"):
         Writer("linuxcnc").write(moves)
+
+
+# ---------------------------------------------------------------- reading GSK programs
+
+GSK_PROGRAM = """%
+O0012
+G21 G98
+G0 X50. Z5. C0.
+Z0.
+G07.1 C20. J-4. R2. K0.4 L2
+G1 Z-10. F100. (along the axis)
+C90.
+G07.1 C0
+G0 X60.
+M30
+%
+"""
+
+
+def test_a_gsk_program_is_translated_for_linuxcnc_c_and_rs274_runs_it():
+    text = translate_program(GSK_PROGRAM, "gsk", target="linuxcnc-c", source_name="slot")
+    assert "G0 X50. Z5. C0.\nZ0.\n(G07.1 C20. J-4. R2. K0.4 L2 ... G07.1 C0, 2 path blocks)\nX42.\n" in text
+    moves = GskG71.parse("G7.1 C20. J-4. R2. K0.4 L2\nG1 Z-10. F100.\nC90.\nG7.1 C0").expand(state(25.0))
+    require_rs274()
+    canon = run_rs274(text, rotary=True)
+    assert [(c[0], round(c[1], 4), round(c[2], 4), round(c[5], 4)) for c in canon[2:-1]] == [
+        (mv.kind, round(mv.x, 4), round(mv.z, 4), round(mv.c, 4)) for mv in moves]
+    assert canon[-1][:3] == (R, 30.0, 0.0)  # G0 X60. after the region
+
+
+def test_g107_and_g7_1_spellings_and_gsk_g75_through_the_fanuc_pecking_cycle():
+    for code in ("G7.1", "G107"):
+        text = translate_program(GSK_PROGRAM.replace("G07.1", code), "gsk", target="fanuc-c")
+        assert "(%s C20. J-4. R2. K0.4 L2 ... %s C0, 2 path blocks)" % (code, code) in text
+    grooves = "G21 G98\nT0101\nS500 M3\nG0 X52. Z-10.\nG75 R0.3\nG75 X40. Z-16. P2500 Q2500 R0.2 F50.\nM30\n"
+    gsk = translate_program(grooves, "gsk", source_name="p")
+    assert gsk == translate_program(grooves, "fanuc", source_name="p").replace("fanuc program", "gsk program")
+    assert "G75 X40. Z-16. P2500 Q2500 R0.2 F50." in gsk
+
+
+@pytest.mark.parametrize("program, line, fragment", [
+    (GSK_PROGRAM.replace("C90.", "G0 C90."), 8, "G7.1 G=G0: rapid moves are not allowed"),
+    (GSK_PROGRAM.replace("C90.", "G1 X30. C90."), 8, "G7.1 X=30: the depth of a G7.1 region"),
+    (GSK_PROGRAM.split("G07.1 C0")[0], 6, "the G07.1 C20. J-4. R2. K0.4 L2 region is not closed"),
+    ("G21 G98\nG0 X50. Z0. C0.\nG107 C0\nM30\n", 3, "G107 C0 cancels a region that was not started"),
+    (GSK_PROGRAM.replace("G0 X50. Z5. C0.", "G0 X50. Z5."), 6, "G7.1 C: the C position before G07.1 is not known"),
+    (GSK_PROGRAM.replace("G21 G98", "G21 G99 S500 M3"), 6, "G7.1 G99: cylindrical interpolation feeds per minute"),
+    (GSK_PROGRAM.replace("G0 X60.", "G1 C10. F100."), 10, "C10. in a G1 move: C is only fed inside a G7.1 region"),
+    (GSK_PROGRAM.replace("C20. J-4.", "C20. J-41."), 6, "J=-41: the finish diameter"),
+])
+def test_gsk_program_errors_name_their_line(program, line, fragment):
+    with pytest.raises(ProgramError) as info:
+        translate_program(program, "gsk", target="linuxcnc-c")
+    assert info.value.line == line and fragment in str(info.value), (info.value.line, str(info.value))
+
+
+def test_c_for_a_target_without_c_axis_is_one_error_line_on_the_command_line(tmp_path):
+    path = tmp_path / "slot.nc"
+    path.write_text(GSK_PROGRAM)
+    status, out, err = run_inline(["expand", str(path), "--dialect", "gsk", "--to", "linuxcnc"])
+    assert (status, out) == (2, "")
+    assert err.endswith("/slot.nc:4: C0.: the output linuxcnc has no C axis (targets with C: linuxcnc-c, fanuc-c)\n")
+    assert err.count("\n") == 1
+    status, out, err = run_inline(["expand", str(path), "--dialect", "gsk", "--to", "fanuc-c"])
+    assert status == 0 and "G01 X38.2 F100.\nZ-10.\nC90. F286.478898\n" in out
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    blocks=st.lists(st.tuples(st.sampled_from(["G1", "G2", "G3"]), st.integers(-300, 300), st.integers(-3600, 3600)),
+                    min_size=1, max_size=4),
+    type_ii=st.booleans(),
+)
+def test_rs274_runs_every_region_move_for_move(blocks, type_ii):
+    """Random paths of lines and half-circle-or-less arcs (R = the chord: always reachable) on an R20 cylinder."""
+    require_rs274()
+    to_s = 20.0 * math.pi / 180.0
+    z, c, path = 0.0, 0.0, []
+    for motion, dz, dc in blocks:
+        end_z, end_c = dz / 10.0, dc / 10.0
+        if (end_z, end_c) == (z, c):
+            continue
+        radius = "" if motion == "G1" else " R%s" % format_decimal(
+            math.ceil(math.hypot(end_z - z, (end_c - c) * to_s) * 1000.0) / 1000.0, 3)
+        path.append("%s Z%s C%s%s" % (motion, format_decimal(end_z, 1), format_decimal(end_c, 1), radius))
+        z, c = end_z, end_c
+    if not path:
+        return
+    start = "G7.1 C20." + (" J-3. R1. K0.2 L3" if type_ii else "")
+    program = "G21 G98\nG0 X%s Z0. C0.\n%s\n%s F200.\n%s\nG7.1 C0\nM30\n" % (
+        "42." if type_ii else "38.", start, path[0], "\n".join(path[1:]))
+    text = translate_program(program, "gsk", target="linuxcnc-c")
+    region_text = "\n".join([start, path[0] + " F200."] + path[1:] + ["G7.1 C0"])
+    moves = GskG71.parse(region_text).expand(state(21.0 if type_ii else 19.0, feed=None))
+    canon = run_rs274(text, rotary=True)[1:]
+    assert [move[0] for move in canon] == [mv.kind for mv in moves]
+    for (_, x, zz, _, _, cc), mv in zip(canon, moves):  # rs274 prints 4 decimals of the written 4
+        assert (x, zz, cc) == (pytest.approx(mv.x, abs=1.5e-4), pytest.approx(mv.z, abs=1.5e-4),
+                               pytest.approx(mv.c, abs=1.5e-4))
