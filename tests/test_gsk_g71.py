@@ -328,3 +328,58 @@ def test_rs274_runs_every_region_move_for_move(blocks, type_ii):
     for (_, x, zz, _, _, cc), mv in zip(canon, moves):  # rs274 prints 4 decimals of the written 4
         assert (x, zz, cc) == (pytest.approx(mv.x, abs=1.5e-4), pytest.approx(mv.z, abs=1.5e-4),
                                pytest.approx(mv.c, abs=1.5e-4))
+
+
+# ---------------------------------------------------------------- simulation in the developed plane
+
+
+def _exact_slot_centre(to_s):
+    """The programmed centre line of SLOT_WITH_ARC on the developed surface, the arc sampled
+    at 0.0001 degree (exact to far below the chord tolerance)."""
+    from shapely.geometry import LineString
+
+    # Z0 C0 -> G1 Z-10. -> G3 R10 to Z-20. s10 (quarter circle, centre (-10, 10)) -> G1 s30.
+    arc = [(-10.0 + 10.0 * math.cos(a), 10.0 + 10.0 * math.sin(a))
+           for a in (math.radians(-90.0 - k * 0.0001) for k in range(0, 900001, 50))]
+    return LineString([(0.0, 0.0), (-10.0, 0.0)] + arc + [(-20.0, 10.0), (-20.0, 30.0)])
+
+
+SLOT_WITH_ARC = "G1 Z-10. F100.\nG2 Z-20. C%s R10.\nG1 C%s"
+
+
+def test_each_pass_sweeps_the_programmed_slot_and_the_last_reaches_the_programmed_depth():
+    """A 6 mm end mill along each pass, in the developed plane (z, C as mm on the R20 surface):
+    the slot it sweeps is the programmed slot (6 mm wide around the programmed centre line)
+    within the chord tolerance, neither wider nor narrower; the passes go down to 2C+J."""
+    to_s = 20.0 * math.pi / 180.0
+    c10, c30 = 10.0 / to_s, 30.0 / to_s
+    # G2 from (-10, 0) to (-20, 10) with R10, clockwise seen with z right and s up: centre (-10, 10)
+    m = region("G7.1 C20. J-3. R1. K0.3 L3", SLOT_WITH_ARC % (format(c10, ".4f"), format(c30, ".4f")))
+    moves = m.expand(state(21.0, feed=50.0))
+    programmed = _exact_slot_centre(to_s)
+    slot = programmed.buffer(3.0, quad_segs=64)
+    passes, current = [], None
+    for move in moves:
+        if move.kind == F and (move.z, move.c) == (0.0, 0.0):  # an infeed starts a pass
+            current = [(0.0, 0.0)]
+            passes.append((move.x, current))
+        elif move.kind == F:
+            current.append((move.z, move.c * to_s))
+    assert [round(x, 9) for x, _ in passes] == [19.55, 19.1, 18.65, 18.5]  # 2C+J = 37: radius 18.5
+    from shapely.geometry import LineString
+    for _, points in passes:
+        swept = LineString(points).buffer(3.0, quad_segs=64)
+        assert LineString(points).hausdorff_distance(programmed) <= ARC_CHORD_TOLERANCE + 2e-5  # C to 4 decimals
+        assert swept.difference(slot.buffer(ARC_CHORD_TOLERANCE + 2e-5)).area < 1e-9  # no wider
+        assert slot.difference(swept.buffer(ARC_CHORD_TOLERANCE + 2e-5)).area < 1e-9  # no narrower
+
+
+def test_the_chord_tolerance_is_in_mm_in_inch_programs_too():
+    # the same arc in inch (R0.5 in): segments within 0.001 mm = 0.0000394 in of it
+    points = arc_points((0.0, 0.0), (0.5, -0.5), 0.5, clockwise=True, scale=1.0 / 25.4)
+    here = (0.0, 0.0)
+    for point in points:
+        mid = ((here[0] + point[0]) / 2.0, (here[1] + point[1]) / 2.0)
+        assert 0.5 - math.hypot(mid[0], mid[1] + 0.5) <= 0.001 / 25.4 + 1e-12
+        here = point
+    assert len(points) > len(arc_points((0.0, 0.0), (0.5, -0.5), 0.5, clockwise=True))

@@ -33,7 +33,7 @@ ARC_R_TOLERANCE = 0.001
 
 # An arc expanded into straight segments (GSK G7.1's arcs in the developed
 # plane of a cylinder): the largest distance between a segment and the arc it
-# replaces, in the program's length unit on the developed surface. A tenth of
+# replaces, in mm on the developed surface (converted in inch programs). A tenth of
 # the 0.01 mm LinuxCNC arc limit, below what a slot's width tolerance notices.
 ARC_CHORD_TOLERANCE = 0.001
 

@@ -31,7 +31,7 @@ Choices the manual leaves open (README "GSK G7.1" table, each with a test):
 * Arcs: G2 is clockwise seen with +Z to the right and the developed C (c times
   C in radians) upward (the G18 sense with C in place of X); R > 0 (over 180
   degrees is refused); arcs become straight segments within
-  numbers.ARC_CHORD_TOLERANCE of the arc.
+  numbers.ARC_CHORD_TOLERANCE (0.001 mm; 0.001/25.4 in in inch programs) of the arc.
 * Feeds: F is the feed along the developed path (mm/min, G98; G99 is
   refused). A move that turns C carries the feed as LinuxCNC reads it: along
   Z when Z moves, else in degrees per minute, so the tool runs the developed
@@ -50,7 +50,7 @@ from typing import ClassVar, Dict, List, NamedTuple, Optional, Tuple
 
 from ..errors import CycleError
 from ..moves import FEED, RAPID, MachineState, Move
-from ..numbers import ARC_CHORD_TOLERANCE, ARC_R_TOLERANCE, MAX_MOVES, format_decimal
+from ..numbers import ARC_CHORD_TOLERANCE, ARC_R_TOLERANCE, MAX_MOVES, MM_PER_INCH, format_decimal
 from ..registry import G_WORD, register
 from ..settings import DEFAULT_SETTINGS, Settings
 
@@ -207,16 +207,17 @@ def read_start_block(text: str) -> Tuple[str, Dict[str, float]]:
 Point = Tuple[float, float]  # (z, s): s = the developed length of C, radius * C in radians
 
 
-def arc_points(start: Point, end: Point, radius: float, clockwise: bool) -> List[Point]:
+def arc_points(start: Point, end: Point, radius: float, clockwise: bool, scale: float = 1.0) -> List[Point]:
     """The points after ``start`` of straight segments within ARC_CHORD_TOLERANCE of
-    the arc (R form, under 180 degrees); the last is ``end`` exactly."""
+    the arc (R form, under 180 degrees); the last is ``end`` exactly. ``scale``:
+    the program's length unit per mm (1 / 25.4 in inch programs)."""
     (z0, s0), (z1, s1) = start, end
     chord = math.hypot(z1 - z0, s1 - s0)
     if chord == 0.0:
         raise _fail("R", radius, "an arc by R needs an end point other than its start (a full circle cannot be "
                     "written with R)")
     half = chord / 2.0
-    if half > radius + ARC_R_TOLERANCE:
+    if half > radius + ARC_R_TOLERANCE * scale:
         raise _fail("R", radius, "the arc's end is out of reach: the chord is %s on the developed surface"
                     % format_decimal(chord, DECIMALS, point=False))
     height = math.sqrt(max(0.0, radius * radius - half * half))
@@ -226,7 +227,7 @@ def arc_points(start: Point, end: Point, radius: float, clockwise: bool) -> List
     a0, a1 = math.atan2(s0 - cs, z0 - cz), math.atan2(s1 - cs, z1 - cz)
     sweep = (a1 - a0) % (2.0 * math.pi) if not clockwise else -((a0 - a1) % (2.0 * math.pi))
     radius = max(radius, half)
-    step = 2.0 * math.acos(max(-1.0, 1.0 - ARC_CHORD_TOLERANCE / radius))
+    step = 2.0 * math.acos(max(-1.0, 1.0 - ARC_CHORD_TOLERANCE * scale / radius))
     count = max(1, math.ceil(abs(sweep) / step - 1e-9))
     points = [(cz + radius * math.cos(a0 + sweep * k / count), cs + radius * math.sin(a0 + sweep * k / count))
               for k in range(1, count)]
@@ -252,9 +253,9 @@ class Segment(NamedTuple):
 
 
 def path_segments(radius: float, start: Tuple[float, float], blocks: Tuple[PathBlock, ...],
-                  feed: Optional[float]) -> List[Segment]:
+                  feed: Optional[float], scale: float = 1.0) -> List[Segment]:
     """The path from ``start`` (z, C degrees) as straight segments; ``feed`` the feed
-    in force before the first block."""
+    in force before the first block; ``scale`` the length unit per mm (arc_points)."""
     to_s = radius * math.pi / 180.0
     z, c = start
     out: List[Segment] = []
@@ -268,7 +269,7 @@ def path_segments(radius: float, start: Tuple[float, float], blocks: Tuple[PathB
         if block.motion == "G1":
             points = [there] if there != here else []
         else:
-            points = arc_points(here, there, block.r, block.motion == "G2")
+            points = arc_points(here, there, block.r, block.motion == "G2", scale)
         for point in points:
             out.append(Segment(point[0], point[1] / to_s, developed_feed(here, point, feed, radius)))
             here = point
@@ -381,7 +382,8 @@ class GskG71:
             raise _fail("C", None, "the C position before %s is not known: program C before the region" % self.code)
         if state.feed_per_rev:
             raise _fail("G99", None, "cylindrical interpolation feeds per minute: program G98 before %s" % self.code)
-        segments = path_segments(self.C, (state.z, state.c), self.path, state.feed)
+        scale = 1.0 if state.metric else 1.0 / MM_PER_INCH
+        segments = path_segments(self.C, (state.z, state.c), self.path, state.feed, scale)
         passes = self.pass_radii(state)
         if len(passes) * (len(segments) + 3) > MAX_MOVES:
             raise _fail("L", self.L, "the region would expand into more than %d moves" % MAX_MOVES)
