@@ -45,8 +45,9 @@ Choices (the manuals leave them open):
   ``fanuc-c``. The others refuse a move that turns C (``check_axes``). A
   move's F for a move that turns C is in LinuxCNC's reading (along X/Z when
   they move, else degrees per minute): ``linuxcnc-c`` writes it as is;
-  ``fanuc-c`` writes the same duration in Fanuc's reading of a linear and
-  rotary move (the path length with degrees counted as mm), from the position
+  ``fanuc-c`` writes the same duration in the reading Fanuc-compatible
+  controls document for a linear and rotary move (the path length with
+  degrees counted as mm; Mitsubishi M700V manual 7.6), from the position
   written before the move.
 """
 
