@@ -90,8 +90,9 @@ def _numbers(args, count, line):
     return values
 
 
-def parse_canonical(output):
-    """Canonical moves from rs274's standard output (see module docstring)."""
+def parse_canonical(output, rotary=False):
+    """Canonical moves from rs274's standard output (see module docstring);
+    ``rotary``: each straight move also carries C (degrees) as a 6th item."""
     moves = []
     x = z = 0.0  # the interpreter starts at the origin
     feed = None
@@ -104,10 +105,10 @@ def parse_canonical(output):
         name, args = m.group(1), m.group(2)
         if name == "STRAIGHT_TRAVERSE":
             x, _, z = _numbers(args, 6, raw)[:3]
-            moves.append(("G0", x, z, None, 0.0))
+            moves.append(("G0", x, z, None, 0.0) + ((_numbers(args, 6, raw)[5],) if rotary else ()))
         elif name == "STRAIGHT_FEED":
             x, _, z = _numbers(args, 6, raw)[:3]
-            moves.append(("G1", x, z, feed, 0.0))
+            moves.append(("G1", x, z, feed, 0.0) + ((_numbers(args, 6, raw)[5],) if rotary else ()))
         elif name == "SET_FEED_RATE":
             feed = _numbers(args, 1, raw)[0]
         elif name == "DWELL":
@@ -125,12 +126,13 @@ def tool_table_text(tools):
     return "".join("T%d P%d Z0 ;\n" % (t, t) for t in sorted({int(t) for t in tools}))
 
 
-def run_rs274(program_text, timeout=60, tool_table=None):
+def run_rs274(program_text, timeout=60, tool_table=None, rotary=False):
     """Interpret ``program_text`` with rs274 and return its canonical moves.
 
     ``tool_table``: None (default) runs with an empty tool table, in which rs274
     refuses every T word; an iterable of tool numbers gives a table holding
-    them (see tool_table_text); a str is the table's text as is."""
+    them (see tool_table_text); a str is the table's text as is. ``rotary``:
+    straight moves carry C as a 6th item (parse_canonical)."""
     path = rs274_path()
     if path is None:
         raise RS274Error("rs274 is not installed (Debian package linuxcnc-uspace)")
@@ -167,7 +169,7 @@ def run_rs274(program_text, timeout=60, tool_table=None):
         message = errors[0].strip()
         line = errors[1].strip() if len(errors) > 1 else None
         raise RS274Error(message, line=line, output=output + proc.stderr)
-    moves = parse_canonical(output)
+    moves = parse_canonical(output, rotary)
     if proc.returncode != 0:
         if proc.returncode < 0:
             how = "was killed by signal %d" % -proc.returncode

@@ -679,13 +679,14 @@ _MODES = {  # feed modes with and without F (repeated without F: the feed carrie
     "ab9": ["G07", "G08", "G20", "G21", "G94 F100.", "G95 F0.1", "G94", "G95", "G91", "G90"],
     "fanuc": ["G20", "G21", "G98 F100.", "G99 F0.1", "G98", "G99"],
     "haas": ["G20", "G21", "G98 F100.", "G99 F0.1", "G98", "G99"],
+    "gsk": ["G20", "G21", "G98 F100.", "G99 F0.1", "G98", "G99"],
 }
 
 
 @st.composite
 def lathe_program(draw, dialect):
     """A plausible program: valid-looking blocks in random order with random numbers."""
-    fanuc_like = dialect in ("fanuc", "haas")
+    fanuc_like = dialect in ("fanuc", "haas", "gsk")
     num = lambda: draw(_NUM)  # noqa: E731
     pos = lambda: draw(_POS)  # noqa: E731
     lines = [
@@ -710,7 +711,8 @@ def lathe_program(draw, dialect):
         elif kind == "arc_ik":
             lines.append("G0 X20. Z0.\nG3 X40. Z-10. I0 K-10.")
         elif kind == "dwell":
-            lines.append({"sinumerik": "G4 F1.5", "fanuc": "G04 P1500", "haas": "G04 P1.5", "ab9": "M8"}[dialect])
+            lines.append({"sinumerik": "G4 F1.5", "fanuc": "G04 P1500", "haas": "G04 P1.5", "ab9": "M8",
+                          "gsk": "G04 P1500"}[dialect])
         elif kind == "mode":
             lines.append(draw(st.sampled_from(_MODES[dialect])))
         elif kind == "m":
@@ -727,7 +729,7 @@ def lathe_program(draw, dialect):
             )
         elif dialect == "ab9":
             lines.append("G77 X%s Z%s I%s K%s D0." % (num(), num(), pos(), pos()))
-        elif dialect == "fanuc":
+        elif dialect in ("fanuc", "gsk"):
             lines.append("G75 R%s\nG75 X%s Z%s P%d Q%d F%s"
                          % (pos(), num(), num(), draw(st.integers(100, 5000)), draw(st.integers(100, 5000)), pos()))
         else:

@@ -27,6 +27,7 @@ def test_every_input_control_calls_its_grooving_cycles():
         "ab9": ["G76", "G77"],
         "fanuc": ["G74", "G75"],
         "haas": ["G74", "G75"],
+        "gsk": ["G7.1", "G74", "G75"],
     }
 
 

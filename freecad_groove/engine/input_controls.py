@@ -1,7 +1,7 @@
 """What each input control's codes mean, as data: one InputControl per dialect.
 
 A *dialect* is the input control a program is written for: "sinumerik",
-"ab9", "fanuc", "haas" (``DIALECTS``); the output side is the *target*
+"ab9", "fanuc", "haas", "gsk" (``DIALECTS``); the output side is the *target*
 (targets.py). What differs between the input controls is here and nowhere
 else: the G-code table, the letters a block may hold, the decimal-point rule,
 the dwell and tool words, what a cycle leaves modal. Their grooving cycles come
@@ -131,7 +131,10 @@ _SYSTEM_A_CODES = {
 def g_code_key(text: str) -> str:
     """The table key of a G number as written: "00" -> "0", "+1" -> "1", "91.1" stays."""
     key = text.lstrip("+")
-    return key if "." in key else str(int(key))
+    if "." in key:  # "07.1" -> "7.1" (GSK G07.1); "91.1" stays
+        whole, fraction = key.split(".", 1)
+        return "%d.%s" % (int(whole) if whole else 0, fraction)
+    return str(int(key))
 
 
 # M codes every control shares: code -> modal group
@@ -249,6 +252,15 @@ INPUT_CONTROLS: Dict[str, InputControl] = {
             maker="Haas",
             help="Haas lathe (one-block G75/G74 X(U) Z(W) I K D F; G20/G21, G98/G99, U/W incremental)",
             dwell_words={"P": DWELL_POINT_SECONDS},
+        ),
+        replace(  # GSK 980TDi: Fanuc system A codes, Fanuc-style G75/G74, the G7.1 region, a C axis
+            _FANUC,
+            name="gsk",
+            maker="GSK",
+            help="GSK 980TDi lathe (G7.1/G07.1/G107 C.. [J R K L] region up to G7.1 C0: cylindrical interpolation "
+            "and its roughing cycle; Fanuc-style G75/G74; G0 C.. positions C; G20/G21, G98/G99, U/W incremental)",
+            g_codes={**_SYSTEM_A_CODES, "107": GCode(CYCLE, "G7.1")},
+            plain_letters=_FANUC.plain_letters | {"C"},
         ),
     )
 }

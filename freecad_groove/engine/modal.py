@@ -18,6 +18,7 @@ class ModalState:
 
     x: Optional[float] = None
     z: Optional[float] = None
+    c: Optional[float] = None  # the rotary C axis in degrees (GSK), None = unknown
     motion: Optional[str] = None  # RAPID, FEED, "G2", "G3"
     incremental: bool = False  # G91 (Siemens, AB)
     diameter: bool = True  # X words are diameters
@@ -49,9 +50,10 @@ class ModalState:
             incremental=self.incremental,
             metric=self.metric,
             feed_per_rev=bool(self.feed_per_rev),
+            c=self.c,
         )
 
 
 # the items a block-delete line makes ambiguous when it changes them
 TRACKED = ("x", "z", "motion", "incremental", "diameter", "diam90", "metric", "siemens_g70", "feed_per_rev", "feed",
-           "spindle", "spindle_dir", "css", "speed_limit", "tool", "retract_e")
+           "spindle", "spindle_dir", "css", "speed_limit", "tool", "retract_e", "c")

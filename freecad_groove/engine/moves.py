@@ -119,3 +119,4 @@ class MachineState:
     incremental: bool = False
     metric: bool = True
     feed_per_rev: Optional[bool] = False
+    c: Optional[float] = None  # the rotary C axis in degrees (GSK G7.1); None: unknown or no C axis

@@ -31,6 +31,12 @@ MAX_MOVES = 1_000_000
 ARC_IJK_TOLERANCE = 0.01
 ARC_R_TOLERANCE = 0.001
 
+# An arc expanded into straight segments (GSK G7.1's arcs in the developed
+# plane of a cylinder): the largest distance between a segment and the arc it
+# replaces, in mm on the developed surface (converted in inch programs). A tenth of
+# the 0.01 mm LinuxCNC arc limit, below what a slot's width tolerance notices.
+ARC_CHORD_TOLERANCE = 0.001
+
 # Most digits a number in a program may have: Python's own limit for
 # converting a string of digits to an integer (sys.int_info.default_max_str_digits);
 # a longer number is refused by name before any conversion.

@@ -39,10 +39,21 @@ Choices (the manuals leave them open):
   text LinuxCNC would execute (``MSG,``, ``DEBUG,``, ``PRINT,``, ``LOG...``,
   ``PROBEOPEN``, ``PY,``, ``ABORT,``, ``AXIS,`` ...) is prefixed with ``- `` so it stays a plain comment.
 * Expanded moves never carry line numbers.
+* The C axis (GSK G7.1, cylinder interpolation): only the targets with
+  ``TargetSpec.c_feed`` write C, in degrees, modal like X and Z, with the
+  digits of Z: ``linuxcnc-c`` (a LinuxCNC lathe with a rotary C axis) and
+  ``fanuc-c``. The others refuse a move that turns C (``check_axes``). A
+  move's F for a move that turns C is in LinuxCNC's reading (along X/Z when
+  they move, else degrees per minute): ``linuxcnc-c`` writes it as is;
+  ``fanuc-c`` writes the same duration in the reading Fanuc-compatible
+  controls document for a linear and rotary move (the path length with
+  degrees counted as mm; Mitsubishi M700V manual 7.6), from the position
+  written before the move.
 """
 
+import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Dict, Iterable, List, Optional
 
 from .errors import ProgramError
@@ -60,7 +71,9 @@ __all__ = [
     "target_spec",
 ]
 
-TARGETS = ("linuxcnc", "fanuc")
+TARGETS = ("linuxcnc", "fanuc", "linuxcnc-c", "fanuc-c")
+C_FEED_LINEAR = "linear"  # F along X/Z when they move, else degrees per minute (LinuxCNC)
+C_FEED_COMPOSITE = "composite"  # F along the path with degrees counted as mm (Fanuc)
 MAX_COMMENT = 140
 MAX_LINE = 250  # LinuxCNC refuses blocks longer than 252 characters ("Command too long")
 FEED_DIGITS = 6
@@ -82,6 +95,7 @@ class TargetSpec:
     dwell_ms: bool  # dwell P in whole milliseconds (else seconds)
     fanuc_style: bool = False  # "%" lines, O number, G18 implied, units and G50 alone in their
     # block, two-digit M codes, whole S words, N up to 99999
+    c_feed: Optional[str] = None  # writes the rotary C axis, with F read as C_FEED_*; None: no C axis
 
 
 SPECS = {
@@ -107,6 +121,8 @@ SPECS = {
         fanuc_style=True,
     ),
 }
+SPECS["linuxcnc-c"] = replace(SPECS["linuxcnc"], name="linuxcnc-c", c_feed=C_FEED_LINEAR)
+SPECS["fanuc-c"] = replace(SPECS["fanuc"], name="fanuc-c", c_feed=C_FEED_COMPOSITE)
 
 
 def target_spec(target: str) -> TargetSpec:
@@ -178,7 +194,7 @@ class Writer:
         """Units of the numbers from now on; the written position is forgotten."""
         self.metric = bool(metric)
         self.digits = self.spec.digits_mm if self.metric else self.spec.digits_inch
-        self.x_text = self.z_text = self.f_text = None
+        self.x_text = self.z_text = self.f_text = self.c_text = None
 
     def sync(
         self,
@@ -186,11 +202,13 @@ class Writer:
         z: Optional[float] = None,
         feed: Optional[float] = None,
         motion: Optional[str] = None,
+        c: Optional[float] = None,
     ) -> None:
-        """The output is at radius ``x``, ``z`` with ``feed`` in force (None = unknown)."""
+        """The output is at radius ``x``, ``z`` (C at ``c`` degrees) with ``feed`` in force (None = unknown)."""
         self.x_text = None if x is None else self.x_word(x)
         self.z_text = None if z is None else self.z_word(z)
         self.f_text = None if feed is None else self.f_word(feed)
+        self.c_text = None if c is None or not self.spec.c_feed else self.z_word(c)
         self.motion = motion
 
     # -- words ------------------------------------------------------------------
@@ -290,9 +308,26 @@ class Writer:
         """ProgramError when ``move`` sets an axis this lathe output has no
         word for (Y, C): never drop a motion silently."""
         extra = [name for name, value in zip(("Y", "C"), move[5:]) if value is not None]
+        if self.spec.c_feed:
+            extra = [name for name in extra if name != "C"]
         if extra:
-            raise ProgramError("a move in %s cannot be written for %s: its output has no %s axis"
-                               % ("/".join(extra), self.spec.name, "/".join(extra)))
+            with_c = [name for name in TARGETS if SPECS[name].c_feed] if extra == ["C"] else []
+            raise ProgramError("a move in %s cannot be written for %s: its output has no %s axis%s"
+                               % ("/".join(extra), self.spec.name, "/".join(extra),
+                                  " (targets with C: %s)" % ", ".join(with_c) if with_c else ""))
+
+    def _c_feed(self, move: Move) -> Optional[float]:
+        """The F of a move that turns C, in the target's reading (the module notes)."""
+        f = move.f
+        if f is None or self.spec.c_feed != C_FEED_COMPOSITE or move.kind != FEED:
+            return f
+        if self.x_text is None or self.z_text is None or self.c_text is None:
+            raise ProgramError("a feed move in X/Z/C needs its start written before it (the %s feed of a "
+                               "rotary move is computed from it)" % self.spec.name)
+        linear = math.hypot(move.x - float(self.x_text) / 2.0, move.z - float(self.z_text))
+        turn = abs(move.c - float(self.c_text))
+        minutes = linear / f if linear > 0 else turn / f
+        return math.hypot(linear, turn) / minutes if minutes > 0 else f
 
     def write(self, moves: Iterable[Move], prefix: str = "") -> List[str]:
         """Lines for ``moves`` (moves.Move or equal tuples); updates the modal state.
@@ -310,6 +345,8 @@ class Writer:
             if not (-MAX_WORD < x < MAX_WORD and -MAX_WORD < z < MAX_WORD):
                 raise ProgramError("move to X%r Z%r cannot be written (not a number below %g)" % (x * 2.0, z,
                                                                                                   MAX_WORD))
+            if move[6:] and move[6] is not None:
+                f = self._c_feed(move)  # from the position written before the move
             words = []
             text = format_decimal(x * 2.0, digits)
             if text != self.x_text:
@@ -319,6 +356,11 @@ class Writer:
             if text != self.z_text:
                 words.append("Z" + text)
                 self.z_text = text
+            if move[6:] and move[6] is not None:
+                text = format_decimal(move[6], digits)
+                if text != self.c_text:
+                    words.append("C" + text)
+                    self.c_text = text
             f_text = self._feed_text(kind, f, self.f_text)
             if f_text is not None:
                 self.f_text = f_text

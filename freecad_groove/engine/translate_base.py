@@ -129,6 +129,7 @@ class TranslatorBase:
             None if "z" in ambiguous else state.z,
             None if "feed" in ambiguous else state.feed,
             self.writer.motion,
+            None if "c" in ambiguous else state.c,
         )
 
     # -- mode G codes -------------------------------------------------------------

@@ -2,7 +2,7 @@
 against the modal state, expanded and written in place."""
 
 from dataclasses import replace
-from typing import List, NamedTuple, Sequence
+from typing import List, NamedTuple, Optional, Sequence
 
 from .errors import CycleError, ProgramError
 from .input_controls import CYCLE, MODE_GROUPS
@@ -26,8 +26,21 @@ class CycleCall(NamedTuple):
     words: List[Word]
 
 
+class Region(NamedTuple):
+    """A cycle that spans blocks (GSK G7.1 up to G7.1 C0), while it is read: its
+    start block, entry and call, the path blocks' texts, the cycle's context."""
+
+    block: Block
+    entry: CycleEntry
+    call: CycleCall
+    texts: List[str]
+    context: object
+
+
 class CycleTranslation(TranslatorBase):
-    """Siemens calls and G-word cycles (G77/G76, G75/G74), from the cycle registry."""
+    """Siemens calls and G-word cycles (G77/G76, G75/G74, the G7.1 region), from the cycle registry."""
+
+    _region: Optional[Region] = None  # the region being read (REGION cycles), else None
 
     def _cycle_block(self, block: Block, groups: Groups) -> None:
         """A block with a cycle call: its mode codes, then the expanded moves."""
@@ -45,6 +58,13 @@ class CycleTranslation(TranslatorBase):
                 self._retract_block(block, entry, call.words)
                 return
             call = self._with_retract_block(entry, call)
+        if getattr(entry.cycle_class, "REGION", False):
+            self._start_region(block, entry, call)
+            return
+        self._run_cycle(block, entry, call, " / ".join(call.text.split("\n")))
+
+    def _run_cycle(self, block: Block, entry: CycleEntry, call: CycleCall, label: str) -> None:
+        """Parse, check, expand and write a cycle call (``label``: its text for the comment)."""
         try:  # the call itself first: its own errors are the most useful
             model = entry.cycle_class.parse(call.text)
             settings = self._cycle_settings(entry)
@@ -58,8 +78,7 @@ class CycleTranslation(TranslatorBase):
             self._collect_warnings(entry, model, start, settings)
         except CycleError as exc:
             self._fail(exc.message)
-        label = " / ".join(call.text.split("\n")).replace("(", " ").replace(")", "")
-        self._emit(self._words_line(block, [], label))
+        self._emit(self._words_line(block, [], label.replace("(", " ").replace(")", "")))
         try:
             lines = self.writer.write(moves, self._prefix)
         except ProgramError as exc:
@@ -87,7 +106,60 @@ class CycleTranslation(TranslatorBase):
                            % (word.letter, word.text, name))
         if block.keywords:
             self._fail("%s shares the block with %s" % (block.keywords[0], name))
-        return CycleCall(name, " ".join([name] + ["%s%s" % (word.letter, word.text) for word in others]), others)
+        written = "G" + groups[CYCLE].word.text  # the spelling read (GSK G07.1, G107)
+        return CycleCall(name, " ".join([written] + ["%s%s" % (word.letter, word.text) for word in others]), others)
+
+    # -- a cycle over several blocks (GSK G7.1 ... G7.1 C0) ------------------------------
+
+    def _start_region(self, block: Block, entry: CycleEntry, call: CycleCall) -> None:
+        if block.delete:
+            self._fail("%s on a block-delete '/' line: a region is not translated there" % call.name)
+        try:
+            if entry.cycle_class.region_ends(call.text):
+                self._fail("%s cancels a region that was not started" % call.text)
+        except CycleError as exc:
+            self._fail(exc.message)
+        self._region = Region(block, entry, call, [], None)
+
+    def _region_block(self, block: Block) -> None:
+        """A block inside a region: a path block, checked now, or the block that ends it."""
+        region = self._region
+        if block.delete:
+            self._fail("a block-delete '/' line inside the %s region is not translated" % region.call.name)
+        if block.keywords or block.call:  # (comments on a path block are not written)
+            self._fail("%s inside the %s region: only its path blocks may be there"
+                       % ((block.keywords or [block.call])[0], region.call.name))
+        text = " ".join(word.letter + word.text for word in block.words)
+        cycle = region.entry.cycle_class
+        try:
+            if cycle.region_ends(text):
+                self._finish_region(text)
+                return
+            context = cycle.check_region_block(text, region.context)
+        except CycleError as exc:
+            self._fail(exc.message)
+        region.texts.append(text)
+        self._region = region._replace(context=context)
+
+    def _finish_region(self, cancel: str) -> None:
+        """The cancel block read: the whole region is one call, its errors on its first line."""
+        region, self._region = self._region, None
+        line, self._line = self._line, region.block.line
+        self._not_ambiguous("c", why=region.call.name)
+        text = "\n".join([region.call.text] + region.texts + [cancel])
+        label = "%s ... %s, %d path blocks" % (region.call.text, cancel, len(region.texts))
+        self._run_cycle(region.block, region.entry, region.call._replace(text=text), label)
+        self._line = line
+        self.state.motion = None  # the motion after the region is not the one before it
+        self._defined.add("motion")
+
+    def check_region_closed(self) -> None:
+        """At the end of the program: a region without its cancel block is refused."""
+        if self._region is not None:
+            region, self._region = self._region, None
+            raise ProgramError("the %s region is not closed: it ends with %s C0" % (region.call.text,
+                                                                                  region.call.name),
+                               region.block.line)
 
     # -- the separate retract block (Fanuc "G75 R(e)") ---------------------------------
 
@@ -164,6 +236,9 @@ class CycleTranslation(TranslatorBase):
         feeds = [move.f for move in moves if move.f is not None]
         if moves:
             state.x, state.z = float(moves[-1].x), float(moves[-1].z)
+            if moves[-1].c is not None:
+                state.c = float(moves[-1].c)
+                self._defined.add("c")
         if feeds:
             state.feed = float(feeds[-1])
             self._defined.add("feed")

@@ -8,11 +8,12 @@ from .input_controls import MOTION
 from .moves import FEED, RAPID
 from .numbers import ARC_IJK_TOLERANCE, ARC_R_TOLERANCE, MM_PER_INCH
 from .reader import Block, Word
+from .targets import TARGETS, target_spec
 from .translate_base import Groups, TranslatorBase
 
 __all__ = ["AxisTarget", "MotionTranslation"]
 
-_AXES = {"X", "Z", "U", "W"}
+_AXES = {"X", "Z", "U", "W", "C"}  # C: the rotary axis of the controls that read it (GSK), G0 only
 _ARC_WORDS = {"I", "K", "R", "CR"}
 
 
@@ -56,9 +57,25 @@ class MotionTranslation(TranslatorBase):
         if target.has_z:
             words.append("Z" + writer.z_word(target.z))
         words.extend(arc)
+        if block.get("C") is not None:
+            words.append(self._c_word(block.get("C"), kind))
         output.extend(words)
         state.x, state.z = target.x, target.z
         writer.motion = kind
+
+    def _c_word(self, word: Word, kind: str) -> str:
+        """A C position outside a G7.1 region: rapid only, on a target that writes C."""
+        if kind != RAPID:
+            self._fail("C%s in a %s move: C is only fed inside a G7.1 region (position it with G0)"
+                       % (word.text, kind))
+        spec = self.writer.spec
+        if not spec.c_feed:
+            self._fail("C%s: the output %s has no C axis (targets with C: %s)"
+                       % (word.text, spec.name, ", ".join(name for name in TARGETS if target_spec(name).c_feed)))
+        value = self._finite_length(word)
+        self.state.c = value
+        self._defined.add("c")
+        return "C" + self.writer.z_word(value)
 
     def _motion_kind(self, arc_letters: Set[str]) -> str:
         """The motion mode in force for a block with axis words."""

@@ -6,8 +6,10 @@ modal state, and translate them with every grooving cycle expanded.
     iter_translation(text or lines, dialect, ...) -> Iterator[str]   # the same text, chunk by chunk
 
 ``dialect`` is the input: "sinumerik" (CYCLE93), "ab9" (G77/G76), "fanuc"
-(two-block G75/G74), "haas" (one-block G75/G74). ``target`` is "linuxcnc" or
-"fanuc" (see targets.py). Anything the reader cannot translate faithfully
+(two-block G75/G74), "haas" (one-block G75/G74), "gsk" (the G7.1 region up to
+G7.1 C0, read block by block, expanded at its cancel block; G75/G74).
+``target`` is "linuxcnc", "fanuc", or with a C axis "linuxcnc-c", "fanuc-c"
+(see targets.py). Anything the reader cannot translate faithfully
 raises errors.ProgramError with the 1-based line number in ``.line``; a cycle's
 CycleError becomes a ProgramError on the cycle's line with the cycle's message.
 What a cycle cannot do as programmed, but runs anyway, is a warning
@@ -213,6 +215,9 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
     def _block(self, block: Block) -> None:
         if block.percent:
             return
+        if self._region is not None and not block.is_empty():
+            self._region_block(block)
+            return
         if self.state.ended:
             if block.words or block.keywords or block.call or block.number is not None:
                 self._fail("text after the program end (M2/M30): subprograms and a second program are not supported")
@@ -319,6 +324,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
 
     def footer(self) -> List[str]:
         """The lines that close the translation (the end when the program has none)."""
+        self.check_region_closed()
         lines = [] if self.state.ended else [self.writer.spec.end]
         if self.fanuc_output:
             lines.append("%")

@@ -62,7 +62,7 @@ __all__ = ["FanucG75", "FanucG74", "HaasG75", "HaasG74"]
 class _Fanuc(PeckingCycle):
     """The words of Fanuc G75 and G74 (e: R of the first block)."""
 
-    CONTROLS: ClassVar[tuple] = ("fanuc",)
+    CONTROLS: ClassVar[tuple] = ("fanuc", "gsk")  # GSK 980TDi writes the same two blocks
     FORM: ClassVar[str] = G_WORD
     WORDS = ("X", "U", "Z", "W", "P", "Q", "R", "F")
     COUNTED = ("P", "Q")

@@ -1,0 +1,51 @@
+"""GSK G7.1 benchmark: prints figures, asserts nothing.
+
+    python3 benchmarks/bench_gsk_g71.py
+
+A Type II region on an R20 cylinder whose path is a barrel-cam track of N
+arcs (R10, a quarter circle each on the developed surface, 56 segments
+each within the 0.001 mm chord tolerance), with L rough passes: the time to
+expand it into moves and to write them for linuxcnc-c, and the moves per
+second. The figures go in the README's Benchmarks section.
+"""
+
+import math
+import os
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+
+from freecad_groove.engine.cycles.gsk_g71 import GskG71  # noqa: E402
+from freecad_groove.engine.moves import MachineState  # noqa: E402
+from freecad_groove.engine.targets import write_moves  # noqa: E402
+
+
+def region(arcs: int, passes: int) -> GskG71:
+    to_s = 20.0 * math.pi / 180.0
+    lines = ["G7.1 C20. J-4. R2. K0.2 L%d" % passes]
+    z = s = 0.0
+    for k in range(arcs):
+        z -= 10.0
+        s += 10.0
+        lines.append("%s Z%.4f C%.4f R10.%s" % ("G2" if k % 2 else "G3", z, s / to_s, " F100." if k == 0 else ""))
+    lines.append("G7.1 C0")
+    return GskG71.parse("\n".join(lines))
+
+
+def main() -> None:
+    start = MachineState(x=21.0, z=0.0, c=0.0, feed=50.0, feed_per_rev=False)
+    print("arcs  passes  moves     expand s  write s  moves/s (expand+write)")
+    for arcs, passes in ((10, 5), (100, 10), (100, 100), (1000, 10)):
+        model = region(arcs, passes)
+        t0 = time.perf_counter()
+        moves = model.expand(start)
+        t1 = time.perf_counter()
+        write_moves(moves, "linuxcnc-c", start)
+        t2 = time.perf_counter()
+        print("%5d %6d %8d  %8.3f  %7.3f  %9.0f" % (arcs, passes, len(moves), t1 - t0, t2 - t1,
+                                                     len(moves) / (t2 - t0)))
+
+
+if __name__ == "__main__":
+    main()
