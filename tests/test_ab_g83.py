@@ -1,0 +1,230 @@
+"""Allen-Bradley 9/Series grinder G83 / G83.1 plunge surface grinding (seed 003).
+
+Expected move lists are worked out by hand from the sequence in ab_g83's
+notes: (G83.1: dress P first) plunge pick J at F; X strokes at E to X, to I,
+...; at each reversal a cross pick K (at X) / R (at I) at F toward the
+crossover end Z; at a reversal where the crossover end is reached, the plunge
+pick Q (clipped to Y) and the crossover turns back; after Y one crossover at
+depth plus L spark-out crossovers; D dresses after plunges ceil(i n / D).
+Tuples are (kind, x, y, z, f or program number).
+"""
+
+import pytest
+from hypothesis import given
+from hypothesis import settings as hsettings
+from hypothesis import strategies as st
+from shapely.geometry import box
+from shapely.ops import unary_union
+
+from freecad_groove.engine.cycles.ab_g83 import G83, G83_1
+from freecad_groove.engine.errors import CycleError
+from freecad_groove.engine.moves import DRESS, FEED, MachineState
+from freecad_groove.engine.registry import cycle_for, entry
+
+G1, DR = FEED, DRESS
+
+
+def start(x=0.0, y=0.0, z=0.0, feed=None, incremental=False):
+    return MachineState(x=x, z=z, y=y, feed=feed, diameter_mode=False, incremental=incremental)
+
+
+def moves_of(moves):
+    return [(m.kind, round(m.x, 6), round(m.y, 6), round(m.z, 6), m.p if m.kind == DRESS else m.f)
+            for m in moves]
+
+
+def test_registered_for_the_grinder_control():
+    assert cycle_for("ab9grind", "G83") is G83
+    assert cycle_for("ab9grind", "G83.1") is G83_1
+    assert entry("ab-g83.1").cycle_class is G83_1
+
+
+# ---------------------------------------------------------------- hand-derived expansions
+
+
+def test_no_crossover_plunges_at_every_reversal_then_one_stroke_at_depth():
+    # Z = start Z: every reversal is a crossover end. J 0.1, then Q 0.1 to Y-0.25 (last clipped).
+    m = G83(X=50.0, Y=-0.25, J=0.1, Z=0.0, K=1.0, F=20.0, E=3000.0)
+    assert moves_of(m.expand(start())) == [
+        (G1, 0.0, -0.1, 0.0, 20.0),  # plunge pick at start J
+        (G1, 50.0, -0.1, 0.0, 3000.0),  # stroke to the primary reversal X
+        (G1, 50.0, -0.2, 0.0, 20.0),  # plunge pick Q (= J)
+        (G1, 0.0, -0.2, 0.0, 3000.0),  # stroke to the secondary reversal: the start point (no I)
+        (G1, 0.0, -0.25, 0.0, 20.0),  # the last pick clipped to Y
+        (G1, 50.0, -0.25, 0.0, 3000.0),  # one stroke at the final depth, L = 0: the end
+    ]
+
+
+def test_crossover_picks_k_and_r_then_plunge_q_at_the_crossover_end_and_turn_back():
+    # I10. (abs), K 8 at X, R 5 at I, crossover to Z12., Q 0.2 to Y-0.3, J 0.1, L1.
+    m = G83(X=60.0, I=10.0, Y=-0.3, J=0.1, Z=12.0, K=8.0, R=5.0, Q=0.2, L=1, F=30.0, E=2000.0)
+    assert moves_of(m.expand(start(x=0.0, y=0.0, z=0.0))) == [
+        (G1, 0.0, -0.1, 0.0, 30.0),  # J at the start
+        (G1, 60.0, -0.1, 0.0, 2000.0),
+        (G1, 60.0, -0.1, 8.0, 30.0),  # K at the primary reversal
+        (G1, 10.0, -0.1, 8.0, 2000.0),
+        (G1, 10.0, -0.1, 12.0, 30.0),  # R at the secondary, clipped to Z12
+        (G1, 60.0, -0.1, 12.0, 2000.0),
+        (G1, 60.0, -0.3, 12.0, 30.0),  # crossover end reached: Q 0.2 reaches Y-0.3
+        (G1, 10.0, -0.3, 12.0, 2000.0),  # crossover back at the final depth
+        (G1, 10.0, -0.3, 7.0, 30.0),  # R 5
+        (G1, 60.0, -0.3, 7.0, 2000.0),
+        (G1, 60.0, -0.3, 0.0, 30.0),  # K 8 clipped to the start Z
+        (G1, 10.0, -0.3, 0.0, 2000.0),  # crossover at depth done: this reversal only turns
+        (G1, 60.0, -0.3, 0.0, 2000.0),  # L1: one spark-out crossover, from the Z0 strip
+        (G1, 60.0, -0.3, 8.0, 30.0),
+        (G1, 10.0, -0.3, 8.0, 2000.0),
+        (G1, 10.0, -0.3, 12.0, 30.0),
+        (G1, 60.0, -0.3, 12.0, 2000.0),  # at Z12 again: the end, no return move
+    ]
+
+
+def test_incremental_words_are_distances_from_the_start_point():
+    # G91 from X5 Y2 Z3: X+20 -> 25, I-5 -> 0, Y-0.2 -> 1.8, Z0 -> no crossover.
+    m = G83(X=20.0, I=-5.0, Y=-0.2, J=0.1, Z=0.0, K=1.0, F=10.0, E=100.0)
+    assert moves_of(m.expand(start(5.0, 2.0, 3.0, incremental=True))) == [
+        (G1, 5.0, 1.9, 3.0, 10.0),
+        (G1, 25.0, 1.9, 3.0, 100.0),
+        (G1, 25.0, 1.8, 3.0, 10.0),
+        (G1, 0.0, 1.8, 3.0, 100.0),
+    ]
+
+
+def test_f_and_e_default_to_the_feed_in_force():
+    m = G83(X=10.0, Y=-0.1, J=0.1, Z=0.0, K=1.0)
+    assert moves_of(m.expand(start(feed=40.0))) == [
+        (G1, 0.0, -0.1, 0.0, 40.0),
+        (G1, 10.0, -0.1, 0.0, 40.0),
+    ]
+
+
+def test_dresses_follow_the_plunges_spread_evenly_and_g83_1_dresses_first():
+    # 4 Q plunges (0.1 .. 0.5 by 0.1 after J); D2: after plunges ceil(1*4/2)=2 and ceil(2*4/2)=4.
+    m = G83_1(X=10.0, Y=-0.5, J=0.1, Z=0.0, K=1.0, F=5.0, E=50.0, P=77, D=2)
+    got = moves_of(m.expand(start()))
+    assert got[0] == (DR, 0.0, 0.0, 0.0, 77)  # G83.1: dress before anything moves
+    plunges = [i for i, move in enumerate(got) if move[0] == G1 and move[1] in (0.0, 10.0) and move[4] == 5.0][1:]
+    assert len(plunges) == 4
+    dresses = [i for i, move in enumerate(got) if move[0] == DR][1:]
+    assert dresses == [plunges[1] + 1, plunges[3] + 1]  # right after plunge 2 and 4, at that reversal
+    assert got[plunges[1] + 1][1:4] == got[plunges[1]][1:4]
+
+
+def test_more_dresses_than_plunges_call_p_several_times_after_a_plunge():
+    m = G83(X=10.0, Y=-0.2, J=0.1, Z=0.0, K=1.0, F=5.0, P=3, D=3)  # one Q plunge
+    kinds = [move[0] for move in moves_of(m.expand(start()))]
+    assert kinds == [G1, G1, G1, DR, DR, DR, G1]
+
+
+# ---------------------------------------------------------------- the program's memory
+
+
+def test_omitted_words_come_from_the_previous_cycle_as_absolute_positions():
+    first = G83(X=60.0, I=10.0, Y=-0.3, J=0.1, Z=12.0, K=8.0, E=900.0, F=3.0, P=5)
+    memory = first.remembered(start())
+    assert memory == {"X": 60.0, "I": 10.0, "Y": -0.3, "Z": 12.0, "J": 0.1, "K": 8.0, "E": 900.0, "P": 5}
+    # in G91 from X10 Y-0.3 Z12 the same face is X+50, I0, Y0, Z0
+    again = G83(Y=-0.1, Q=0.05).with_earlier(memory, start(10.0, -0.3, 12.0, feed=3.0, incremental=True))
+    assert (again.X, again.I, again.Y, again.Z, again.J, again.K, again.E, again.P) == (
+        50.0, 0.0, -0.1, 0.0, 0.1, 8.0, 900.0, 5)
+    assert again.R is None and again.L is None and again.D is None  # R = K, L and D not modal
+
+
+def test_a_class_2_word_never_programmed_is_refused():
+    with pytest.raises(CycleError, match="G83 K: must be programmed"):
+        G83(X=10.0, Y=-0.1, J=0.1, Z=0.0, F=1.0).expand(start())
+
+
+def test_i_never_programmed_is_not_remembered():
+    memory = G83(X=10.0, Y=-0.1, J=0.1, Z=0.0, K=1.0, F=1.0).remembered(start())
+    assert "I" not in memory
+
+
+# ---------------------------------------------------------------- validation, one rule a test
+
+
+@pytest.mark.parametrize("words, message", [
+    ("L1000", "L=1000: must be a whole number from 0 to 999"),
+    ("D1000", "D=1000: must be a whole number from 0 to 999"),
+    ("P0", "P=0: must be a program number from 1 to 9999"),
+    ("J-0.1", "J=-0.1: is incremental only"),
+    ("Q-0.1", "Q=-0.1: is incremental only"),
+    ("K-1.", "K=-1: is incremental only"),
+    ("R-1.", "R=-1: is incremental only"),
+    ("Q0", "Q=0: must be greater than 0"),
+    ("K0", "K=0: must be greater than 0"),
+    ("R0", "R=0: must be greater than 0"),
+    ("F0", "F=0: must be greater than 0"),
+    ("E0", "E=0: must be greater than 0"),
+    ("L1.", "L=1: must be an integer"),
+    ("X10", "X=10: needs a decimal point"),
+    ("W1.", "W=1: is not a word of G83"),
+])
+def test_word_rules(words, message):
+    with pytest.raises(CycleError, match="G83 " + message.replace(".", r"\.")):
+        G83.parse("G83 " + words)
+
+
+@pytest.mark.parametrize("model, state, message", [
+    (G83(X=10.0, Y=-0.1, J=0.1, Z=0.0, K=1.0, F=1.0), start(x=10.0), "X=10: the secondary reversal point equals"),
+    (G83(X=10.0, I=10.0, Y=-0.1, J=0.1, Z=0.0, K=1.0, F=1.0), start(), "I=10: the secondary reversal point equals"),
+    (G83(X=10.0, Y=-0.1, J=0.1, Z=0.0, K=1.0), start(), "F: must be programmed"),
+    (G83_1(X=10.0, Y=-0.1, J=0.1, Z=0.0, K=1.0, F=1.0), start(), "P: must be programmed .G83.1 dresses first"),
+    (G83(X=10.0, Y=-0.1, J=0.1, Z=0.0, K=1.0, F=1.0, D=1), start(), "P: must be programmed .D=1 dresses"),
+    (G83(X=10.0, Y=-0.1, J=0.1, Z=0.0, K=1.0, F=1.0, D=1, P=4), start(), "D=1: the cycle has no plunge"),
+    (G83(X=10.0, Y=-0.5, J=0.0, Z=0.0, K=1.0, F=1.0), start(), "Q=0: must be greater than 0"),
+    (G83(X=10.0, Y=-0.5, J=0.1, Z=0.0, K=1.0, F=1.0), MachineState(x=0.0, z=0.0), "Y: the start position"),
+])
+def test_plan_rules(model, state, message):
+    with pytest.raises(CycleError, match="G83(.1)? " + message):
+        model.expand(state)
+
+
+def test_a_cycle_of_too_many_moves_is_refused():
+    with pytest.raises(CycleError, match="more than 1000000 moves"):
+        G83(X=10.0, Y=-100.0, J=0.0001, Z=0.0, K=1.0, F=1.0).expand(start())
+
+
+# ---------------------------------------------------------------- emit and parse
+
+
+_values = st.integers(-99999, 99999).map(lambda n: n / 100.0)
+_amounts = st.integers(1, 99999).map(lambda n: n / 1000.0)
+
+
+@hsettings(max_examples=200, deadline=None)
+@given(st.sampled_from([G83, G83_1]), st.fixed_dictionaries({}, optional={
+    "X": _values, "I": _values, "Y": _values, "Z": _values, "J": _amounts, "Q": _amounts, "K": _amounts,
+    "R": _amounts, "F": _amounts, "E": _amounts, "L": st.integers(0, 999), "P": st.integers(1, 9999),
+    "D": st.integers(0, 999)}))
+def test_parse_of_emit_is_the_model(cls, words):
+    model = cls(**words)
+    assert cls.parse(model.emit()) == model
+
+
+def test_emit_writes_the_seed_order():
+    model = G83_1(D=2, P=10, X=1.5, I=0.0, Y=-0.2, J=0.01, Z=30.0, K=5.0, R=4.0, Q=0.02, L=2, F=100.0, E=8000.0)
+    assert model.emit() == "G83.1 X1.5 I0. Y-0.2 J0.01 Z30. K5. R4. Q0.02 L2 F100. E8000. P10 D2"
+
+
+# ---------------------------------------------------------------- the wheel covers the face
+
+
+WHEEL_WIDTH = 10.0  # along the crossover axis Z, centred on the programmed Z
+
+
+@pytest.mark.parametrize("k, r, spark", [(8.0, 8.0, 0), (10.0, 6.0, 2), (3.0, 9.5, 1)])
+def test_the_wheel_covers_the_face_at_the_final_depth_and_never_goes_below(k, r, spark):
+    # face: X 10..90, Z -4..34 (the wheel's half width beyond the crossover 0..30 is 5); the
+    # reversals 0 and 100 overtravel it; final depth Y-0.35.
+    model = G83(X=100.0, Y=-0.35, J=0.05, Z=30.0, K=k, R=r, Q=0.1, L=spark, F=50.0, E=5000.0)
+    moves = model.expand(start(x=0.0, y=0.0, z=0.0))
+    assert min(move.y for move in moves) == -0.35
+    strokes, previous = [], moves[0]
+    for move in moves[1:]:
+        if move.y == -0.35 and previous.y == -0.35 and move.x != previous.x:  # a stroke at the final depth
+            strokes.append(box(min(move.x, previous.x), move.z - WHEEL_WIDTH / 2,
+                               max(move.x, previous.x), move.z + WHEEL_WIDTH / 2))
+        previous = move
+    face = box(10.0, -4.0, 90.0, 34.0)
+    assert face.difference(unary_union(strokes)).area == 0.0
