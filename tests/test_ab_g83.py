@@ -28,6 +28,16 @@ def start(x=0.0, y=0.0, z=0.0, feed=None, incremental=False):
     return MachineState(x=x, z=z, y=y, feed=feed, diameter_mode=False, incremental=incremental)
 
 
+def moving(moves):
+    """The moves that change the position or call a dress (as rs274 reports them)."""
+    kept, where = [], None
+    for move in moves:
+        if move.kind == DRESS or (move.x, move.y, move.z) != where:
+            kept.append(move)
+        where = (move.x, move.y, move.z)
+    return kept
+
+
 def moves_of(moves):
     return [(m.kind, round(m.x, 6), round(m.y, 6), round(m.z, 6), m.p if m.kind == DRESS else m.f)
             for m in moves]
@@ -52,6 +62,7 @@ def test_no_crossover_plunges_at_every_reversal_then_one_stroke_at_depth():
         (G1, 0.0, -0.2, 0.0, 3000.0),  # stroke to the secondary reversal: the start point (no I)
         (G1, 0.0, -0.25, 0.0, 20.0),  # the last pick clipped to Y
         (G1, 50.0, -0.25, 0.0, 3000.0),  # one stroke at the final depth, L = 0: the end
+        (G1, 50.0, -0.25, 0.0, 20.0),  # F in force again (the last move was at E)
     ]
 
 
@@ -76,6 +87,7 @@ def test_crossover_picks_k_and_r_then_plunge_q_at_the_crossover_end_and_turn_bac
         (G1, 10.0, -0.3, 8.0, 2000.0),
         (G1, 10.0, -0.3, 12.0, 30.0),
         (G1, 60.0, -0.3, 12.0, 2000.0),  # at Z12 again: the end, no return move
+        (G1, 60.0, -0.3, 12.0, 30.0),  # F in force again
     ]
 
 
@@ -87,6 +99,7 @@ def test_incremental_words_are_distances_from_the_start_point():
         (G1, 25.0, 1.9, 3.0, 100.0),
         (G1, 25.0, 1.8, 3.0, 10.0),
         (G1, 0.0, 1.8, 3.0, 100.0),
+        (G1, 0.0, 1.8, 3.0, 10.0),
     ]
 
 
@@ -103,7 +116,7 @@ def test_dresses_follow_the_plunges_spread_evenly_and_g83_1_dresses_first():
     m = G83_1(X=10.0, Y=-0.5, J=0.1, Z=0.0, K=1.0, F=5.0, E=50.0, P=77, D=2)
     got = moves_of(m.expand(start()))
     assert got[0] == (DR, 0.0, 0.0, 0.0, 77)  # G83.1: dress before anything moves
-    plunges = [i for i, move in enumerate(got) if move[0] == G1 and move[1] in (0.0, 10.0) and move[4] == 5.0][1:]
+    plunges = [i for i in range(2, len(got)) if got[i][0] == G1 and got[i][2] != got[i - 1][2]]  # after J
     assert len(plunges) == 4
     dresses = [i for i, move in enumerate(got) if move[0] == DR][1:]
     assert dresses == [plunges[1] + 1, plunges[3] + 1]  # right after plunge 2 and 4, at that reversal
@@ -113,7 +126,7 @@ def test_dresses_follow_the_plunges_spread_evenly_and_g83_1_dresses_first():
 def test_more_dresses_than_plunges_call_p_several_times_after_a_plunge():
     m = G83(X=10.0, Y=-0.2, J=0.1, Z=0.0, K=1.0, F=5.0, P=3, D=3)  # one Q plunge
     kinds = [move[0] for move in moves_of(m.expand(start()))]
-    assert kinds == [G1, G1, G1, DR, DR, DR, G1]
+    assert kinds == [G1, G1, G1, DR, DR, DR, G1]  # E = F: no move to set F again
 
 
 # ---------------------------------------------------------------- the program's memory
@@ -228,3 +241,105 @@ def test_the_wheel_covers_the_face_at_the_final_depth_and_never_goes_below(k, r,
         previous = move
     face = box(10.0, -4.0, 90.0, 34.0)
     assert face.difference(unary_union(strokes)).area == 0.0
+
+
+# ---------------------------------------------------------------- reading 9/Series grinder programs
+
+import subprocess  # noqa: E402
+import sys  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+from rs274 import require_rs274, run_rs274  # noqa: E402
+
+from freecad_groove.engine.errors import ProgramError  # noqa: E402
+from freecad_groove.engine.translator import translate_program  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLE = ROOT / "examples" / "ab9_g83.nc"
+SMALL = """G90 G94 G21
+G0 X0. Y1. Z0.
+G83.1 X50. Y0.8 J0.1 Z0. K1. F20. E3000. P7 D1
+M30
+"""
+
+
+def test_a_grinder_program_becomes_a_mill_program_for_linuxcnc():
+    # Y1 -> 0.8: J 0.1 at the start, Q (= J) 0.1 at X50 reaching Y0.8, then one stroke back at depth.
+    assert translate_program(SMALL, "ab9grind", target="linuxcnc").splitlines() == [
+        "G17 G21 G90 G91.1 G40",
+        "(PROGRAM: ab9grind program, cycles expanded for linuxcnc-mill by freecad-groove)",
+        "G21 G94",
+        "G0 X0. Y1. Z0.",
+        "(G83.1 X50. Y0.8 J0.1 Z0. K1. F20. E3000. P7 D1)",
+        "o<dress7> call",  # G83.1: the dress first
+        "G1 X0. Y0.9 Z0. F20.",  # after the call every axis, G1 and F again
+        "X50. F3000.",
+        "Y0.8 F20.",
+        "o<dress7> call",  # D1: after the one plunge at a reversal
+        "G1 X0. Y0.8 Z0. F3000.",
+        "F20.",  # the plunge feed in force again after the cycle
+        "M2",
+    ]
+
+
+def test_a_grinder_program_for_fanuc_writes_g17_g94_and_m98():
+    lines = translate_program(SMALL, "ab9grind", target="fanuc").splitlines()
+    assert lines[:3] == ["%", "(PROGRAM: ab9grind program, cycles expanded for fanuc-mill by freecad-groove)", "G21"]
+    assert lines[3] == "G17 G90 G40" and "G94" in lines and lines.count("M98 P7") == 2 and "G98" not in lines
+
+
+def test_the_second_cycle_of_a_program_takes_the_omitted_words_from_the_first():
+    text = SMALL.replace("M30\n", "G0 X0. Y1.\nG91 G83 Y-0.2 P8\nM30\n")
+    lines = translate_program(text, "ab9grind").splitlines()
+    second = lines[lines.index("(G83 Y-0.2 P8)"):]
+    # X50 (absolute, remembered), J 0.1 (remembered), K; F the feed in force (F20: the first cycle ends
+    # with it), E 3000 (remembered)
+    assert second == ["(G83 Y-0.2 P8)", "G1 Y0.9", "X50. F3000.", "Y0.8 F20.", "X0. F3000.", "F20.", "M2"]
+
+
+def test_a_cycle_whose_memory_depends_on_a_block_delete_line_is_refused():
+    text = SMALL.replace("G83.1", "/G83.1").replace("M30\n", "G0 X0. Y1.\nG83 Y0.8\nM30\n")
+    with pytest.raises(ProgramError, match="G83 depends on a block-delete|the words G83 takes from the cycle before"):
+        translate_program(text, "ab9grind")
+
+
+@pytest.mark.parametrize("line, message", [
+    ("G17", "G17: plane selection"),
+    ("G2 X1. Y1. R1.", "G2: arcs .G02/G03. in a grinder program are not translated"),
+    ("G83 X50. Y0.8 J0.1 Z0. K1. F20. L1000", "G83 L=1000: must be a whole number from 0 to 999"),
+    ("G83 X0. Y0.8 J0.1 Z0. K1. F20.", "G83 X=0: the secondary reversal point equals the primary one"),
+])
+def test_grinder_program_refusals_name_the_line(line, message):
+    with pytest.raises(ProgramError, match=message) as info:
+        translate_program("G90 G94 G21\nG0 X0. Y1. Z0.\n" + line + "\nM30\n", "ab9grind")
+    assert info.value.line == 3
+
+
+def test_a_lathe_program_has_no_y_word():
+    with pytest.raises(ProgramError, match="Y1. is not supported"):
+        translate_program("G90 G94 G21\nG0 X0. Y1. Z0.\nM30\n", "ab9")
+
+
+def test_the_command_line_reports_a_bad_grinder_cycle_in_one_line(tmp_path):
+    program = tmp_path / "bad.nc"
+    program.write_text("G90 G94 G21\nG0 X0. Y1. Z0.\nG83.1 X50. Y0.8 J0.1 Z0. K1. F20.\nM30\n")
+    proc = subprocess.run([sys.executable, "-m", "freecad_groove", "expand", str(program), "--dialect", "ab9grind",
+                           "--to", "fanuc"], cwd=ROOT, capture_output=True, timeout=120)
+    assert proc.returncode == 2 and proc.stdout == b""
+    expected = "%s:3: G83.1 P: must be programmed (G83.1 dresses first; no earlier cycle gave P)\n" % program
+    assert proc.stderr.decode() == expected
+
+
+def test_rs274_runs_the_example_grinder_program_where_the_engine_moves():
+    require_rs274()
+    proc = subprocess.run([sys.executable, "-m", "freecad_groove", "expand", str(EXAMPLE), "--dialect", "ab9grind",
+                           "--to", "linuxcnc"], cwd=ROOT, capture_output=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    dress = "o<dress12> sub\nG4 P0.5\no<dress12> endsub\nM2\n"
+    canon = run_rs274(proc.stdout.decode(), files={"dress12.ngc": dress}, xyz=True)
+    first = G83_1.parse("G83.1 X100. Y-0.2 J0.1 Z30. K8. Q0.1 F20. E3000. P12 D2 L1")
+    moves = moving(first.expand(start(0.0, 0.1, 0.0, feed=200.0)))
+    # canon: G0 to X0 Y5 Z0, G1 Y0.1, then the first cycle (a dress is rs274's G4)
+    got = [(c[0], round(c[1], 4), round(c[2], 4), round(c[3], 4)) for c in canon[2:2 + len(moves)]]
+    assert got == [("G4" if m.kind == DRESS else "G1", round(m.x, 4), round(m.y, 4), round(m.z, 4)) for m in moves]
+    assert min(c[2] for c in canon) == pytest.approx(-0.25)  # the G91 cycle's depth: Y-0.2 - 0.05

@@ -271,7 +271,8 @@ class Writer:
     # -- blocks -------------------------------------------------------------------
 
     def header(self, title: Optional[str] = None, program_number: Optional[int] = None) -> List[str]:
-        """The lines that open a whole program (modes: G18, diameter X, units, feed mode)."""
+        """The lines that open a whole program (modes: G18 and diameter X, mill style
+        G17; units, feed mode)."""
         out = []
         s = self.spec
         feed_mode = [] if self.feed_per_rev is None else [s.feed_modes[bool(self.feed_per_rev)]]
@@ -283,14 +284,10 @@ class Writer:
             elif title:
                 out.append(comment(title))
             out.append(s.units[self.metric])
-            if not s.mill:
-                out.append(" ".join(["G40"] + feed_mode))
-            if s.mill:
-                out.append(" ".join(["G17", "G90", "G40"] + feed_mode))
-        elif s.mill:
-            out.append(" ".join(["G17", s.units[self.metric], "G90", "G91.1", "G40"] + feed_mode))
+            out.append(" ".join((["G17", "G90"] if s.mill else []) + ["G40"] + feed_mode))
         else:
-            out.append(" ".join(["G18", "G7", s.units[self.metric], "G90", "G91.1", "G40"] + feed_mode))
+            plane = ["G17"] if s.mill else ["G18", "G7"]
+            out.append(" ".join(plane + [s.units[self.metric], "G90", "G91.1", "G40"] + feed_mode))
             if title:
                 out.append(comment(title))
         return out
@@ -339,7 +336,7 @@ class Writer:
         self.x_text = self.y_text = self.z_text = self.f_text = self.motion = None
         return call
 
-    def _axis_words(self, move: Move) -> List[str]:
+    def _written_axes(self, move: Move) -> List[str]:
         """The axis words of ``move`` whose written text changes (X, Z; mill
         style X, Y, Z); the written position is updated."""
         x, z, y = move[1], move[2], move[5] if len(move) > 5 else None
@@ -369,7 +366,7 @@ class Writer:
             if kind == DWELL:
                 out.append(prefix + self.dwell(p))
                 continue
-            words = self._axis_words(move)
+            words = self._written_axes(move)
             if kind == DRESS:
                 out.append(prefix + self._dress_here(words, p))
                 continue

@@ -123,7 +123,7 @@ from .modal import TRACKED, ModalState
 from .moves import MachineState
 from .reader import Block, parse_block
 from .settings import DEFAULT_SETTINGS, Settings
-from .targets import MAX_LINE, Writer, comment, target_spec
+from .targets import MAX_LINE, Writer, comment, mill_target, target_spec
 from .tool_table import ToolTable
 from .translate_base import ActiveCode, Groups
 from .translate_cycle import CycleTranslation
@@ -149,6 +149,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
                  source_name: str = "PROGRAM", start: Optional[MachineState] = None,
                  tools: Optional[ToolTable] = None) -> None:
         self.control = input_control(dialect)  # raises on an unknown dialect
+        if self.control.mill:  # a grinder program: its mill-style twin (G17, X/Y/Z)
+            target = mill_target(target)
         self.fanuc_output = target_spec(target).fanuc_style  # target_spec raises on an unknown target
         self.dialect = dialect
         self.settings = settings
@@ -162,6 +164,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
             state.incremental = bool(start.incremental)
             state.metric = bool(start.metric)
             state.feed_per_rev = start.feed_per_rev
+        if self.control.mill:
+            state.diameter = False  # X is a plain coordinate
         self.state = state
         self.start_metric = state.metric
         self.start_feed_per_rev = state.feed_per_rev
@@ -202,7 +206,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         if block.delete:
             changed = {name for name in TRACKED if getattr(state, name) != before[name]}
             if "metric" in changed:
-                changed |= {"x", "z", "feed"}
+                changed |= {"x", "y", "z", "feed"}
             state.ambiguous |= changed
             self.writer.motion = None  # the output's motion depends on the switch too
         else:
@@ -273,8 +277,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
             output.append("G18")
         if OFFSET in groups:
             output.append(groups[OFFSET].value)
-            state.x = state.z = None
-            self._defined |= {"x", "z"}
+            state.x = state.y = state.z = None
+            self._defined |= {"x", "y", "z"}
         if COMPENSATION in groups:
             output.append("G40")
         feed_word = self._feed_word(block)

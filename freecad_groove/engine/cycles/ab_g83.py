@@ -39,7 +39,10 @@ README row with a test):
    crossover end to end without plunge; with no crossover a pass is one stroke
    [choice]; a pass ends at the reversal that finds the crossover end
    reached (it only turns). The cycle ends at the reversal where the last pass ends, without
-   a return move [choice].
+   a return move [choice]; when its last move was at E it ends with a move
+   to where the wheel is at F, so that the feed in force after the cycle is
+   the plunge feed F (the one the next cycle's F defaults to: a plunge at the
+   reciprocation feed E would crash the wheel) [choice].
 6. D dresses (P) spread over the Q plunges: dress i (1..D) right after plunge
    ceil(i * n / D) of n, at that reversal (the manual: "immediately after a
    plunge move at reciprocation reversal points") [choice]. D > n calls P
@@ -332,6 +335,14 @@ class _Wheel:
         self.moves.append(Move(DRESS, self.x, self.z, None, program, self.y))
 
 
+def _ending_at_feed(moves: List[Move], plan: GrindPlan) -> List[Move]:
+    """The moves, with F in force again at the end when the last was at E."""
+    last = moves[-1]
+    if last.f == plan.feed:
+        return moves
+    return moves + [last._replace(f=plan.feed)]
+
+
 def grind_moves(plan: GrindPlan) -> List[Move]:
     """The moves of a resolved G83/G83.1 (see the module notes)."""
     wheel = _Wheel(plan)
@@ -360,6 +371,6 @@ def grind_moves(plan: GrindPlan) -> List[Move]:
             else:
                 passes_left -= 1
                 if passes_left == 0:
-                    return wheel.moves
+                    return _ending_at_feed(wheel.moves, plan)
             cross_to = plan.z0 if cross_to == plan.cross_end else plan.cross_end
         reversal = plan.secondary if reversal == plan.primary else plan.primary
