@@ -103,6 +103,22 @@ def test_incremental_words_are_distances_from_the_start_point():
     ]
 
 
+def test_picks_go_toward_y_and_z_whichever_side_they_are():
+    # Y above the start and Z below it: the unsigned picks take their direction from the targets.
+    m = G83(X=10.0, Y=0.15, J=0.1, Z=-4.0, K=4.0, F=5.0, E=50.0)
+    assert moves_of(m.expand(start())) == [
+        (G1, 0.0, 0.1, 0.0, 5.0),
+        (G1, 10.0, 0.1, 0.0, 50.0),
+        (G1, 10.0, 0.1, -4.0, 5.0),
+        (G1, 0.0, 0.1, -4.0, 50.0),
+        (G1, 0.0, 0.15, -4.0, 5.0),  # Q = J 0.1 clipped to Y0.15
+        (G1, 10.0, 0.15, -4.0, 50.0),
+        (G1, 10.0, 0.15, 0.0, 5.0),
+        (G1, 0.0, 0.15, 0.0, 50.0),
+        (G1, 0.0, 0.15, 0.0, 5.0),
+    ]
+
+
 def test_f_and_e_default_to_the_feed_in_force():
     m = G83(X=10.0, Y=-0.1, J=0.1, Z=0.0, K=1.0)
     assert moves_of(m.expand(start(feed=40.0))) == [
@@ -343,3 +359,13 @@ def test_rs274_runs_the_example_grinder_program_where_the_engine_moves():
     got = [(c[0], round(c[1], 4), round(c[2], 4), round(c[3], 4)) for c in canon[2:2 + len(moves)]]
     assert got == [("G4" if m.kind == DRESS else "G1", round(m.x, 4), round(m.y, 4), round(m.z, 4)) for m in moves]
     assert min(c[2] for c in canon) == pytest.approx(-0.25)  # the G91 cycle's depth: Y-0.2 - 0.05
+
+
+def test_emit_expand_writes_a_mill_program_from_the_start_x_y_z():
+    proc = subprocess.run([sys.executable, "-m", "freecad_groove", "emit", "ab-g83", "-X", "20", "-Y", "-0.1", "-J",
+                           "0.1", "-Z", "0", "-K", "1", "-F", "5", "--expand", "--start-x", "4", "--start-y", "0",
+                           "--start-z", "0", "--feed-mode", "min"], cwd=ROOT, capture_output=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    lines = proc.stdout.decode().splitlines()
+    # X4 is a plain coordinate (not a diameter): the J pick at X4, one stroke to X20 at depth
+    assert lines[0] == "G17 G21 G90 G91.1 G40 G94" and lines[2:] == ["G0 X4. Y0. Z0.", "G1 Y-0.1 F5.", "X20.", "M2"]
