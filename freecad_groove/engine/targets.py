@@ -17,6 +17,17 @@ program is read from is the reader's business.) Two targets:
                 block, ``G98``/``G99`` feed per minute / per revolution, ``%`` at
                 both ends, optional ``O`` number, end ``M30``.
 
+Mill style: ``"linuxcnc-mill"`` and ``"fanuc-mill"``, the twins of the two
+targets for mill-style programs (a grinder's X/Y/Z, ``InputControl.mill``;
+chosen by the translator, not by ``--to``): ``G17`` instead of ``G18 G7``
+(Fanuc: ``G17 G90 G40`` after the units block), X written as is (not a
+diameter), Y words, Fanuc feed modes ``G94``/``G95``; a ``DRESS`` move is the
+dress program's call: ``o<dressN> call`` (LinuxCNC: a named subroutine file
+``dressN.ngc``), ``M98 PN`` (Fanuc). After the call the output's position,
+motion and feed are unknown (the dress program moves the wheel): the next
+move writes all of them. A lathe target refuses a move with ``y`` set and a
+dress call.
+
 Choices (the manuals leave them open):
 
 * Modal output: G0/G1 is written only when the motion changes; X and Z only

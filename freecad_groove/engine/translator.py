@@ -5,9 +5,10 @@ modal state, and translate them with every grooving cycle expanded.
                       tools=None, warnings=None) -> str
     iter_translation(text or lines, dialect, ...) -> Iterator[str]   # the same text, chunk by chunk
 
-``dialect`` is the input: "sinumerik" (CYCLE93), "ab9" (G77/G76), "fanuc"
-(two-block G75/G74), "haas" (one-block G75/G74). ``target`` is "linuxcnc" or
-"fanuc" (see targets.py). Anything the reader cannot translate faithfully
+``dialect`` is the input: "sinumerik" (CYCLE93), "ab9" (G77/G76), "ab9grind"
+(the 9/Series grinder's G83/G83.1; mill-style: X/Y/Z), "fanuc" (two-block
+G75/G74), "haas" (one-block G75/G74). ``target`` is "linuxcnc" or "fanuc"
+(see targets.py); a mill-style program is written on its mill twin. Anything the reader cannot translate faithfully
 raises errors.ProgramError with the 1-based line number in ``.line``; a cycle's
 CycleError becomes a ProgramError on the cycle's line with the cycle's message.
 What a cycle cannot do as programmed, but runs anyway, is a warning
