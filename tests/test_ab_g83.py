@@ -10,7 +10,7 @@ Tuples are (kind, x, y, z, f or program number).
 """
 
 import pytest
-from hypothesis import given
+from hypothesis import assume, given
 from hypothesis import settings as hsettings
 from hypothesis import strategies as st
 from shapely.geometry import box
@@ -67,27 +67,28 @@ def test_no_crossover_plunges_at_every_reversal_then_one_stroke_at_depth():
 
 
 def test_crossover_picks_k_and_r_then_plunge_q_at_the_crossover_end_and_turn_back():
-    # I10. (abs), K 8 at X, R 5 at I, crossover to Z12., Q 0.2 to Y-0.3, J 0.1, L1.
+    # I10. (abs), K 8 at X, R 5 at I, crossover to Z12., Q 0.2 to Y-0.3, J 0.1, L1; start X0 is not I:
+    # X goes to I first (the seed's step 3).
     m = G83(X=60.0, I=10.0, Y=-0.3, J=0.1, Z=12.0, K=8.0, R=5.0, Q=0.2, L=1, F=30.0, E=2000.0)
     assert moves_of(m.expand(start(x=0.0, y=0.0, z=0.0))) == [
         (G1, 0.0, -0.1, 0.0, 30.0),  # J at the start
-        (G1, 60.0, -0.1, 0.0, 2000.0),
-        (G1, 60.0, -0.1, 8.0, 30.0),  # K at the primary reversal
-        (G1, 10.0, -0.1, 8.0, 2000.0),
-        (G1, 10.0, -0.1, 12.0, 30.0),  # R at the secondary, clipped to Z12
-        (G1, 60.0, -0.1, 12.0, 2000.0),
-        (G1, 60.0, -0.3, 12.0, 30.0),  # crossover end reached: Q 0.2 reaches Y-0.3
-        (G1, 10.0, -0.3, 12.0, 2000.0),  # crossover back at the final depth
-        (G1, 10.0, -0.3, 7.0, 30.0),  # R 5
-        (G1, 60.0, -0.3, 7.0, 2000.0),
-        (G1, 60.0, -0.3, 0.0, 30.0),  # K 8 clipped to the start Z
-        (G1, 10.0, -0.3, 0.0, 2000.0),  # crossover at depth done: this reversal only turns
-        (G1, 60.0, -0.3, 0.0, 2000.0),  # L1: one spark-out crossover, from the Z0 strip
-        (G1, 60.0, -0.3, 8.0, 30.0),
-        (G1, 10.0, -0.3, 8.0, 2000.0),
-        (G1, 10.0, -0.3, 12.0, 30.0),
-        (G1, 60.0, -0.3, 12.0, 2000.0),  # at Z12 again: the end, no return move
-        (G1, 60.0, -0.3, 12.0, 30.0),  # F in force again
+        (G1, 10.0, -0.1, 0.0, 2000.0),  # to the secondary reversal I first
+        (G1, 10.0, -0.1, 5.0, 30.0),  # R at the secondary
+        (G1, 60.0, -0.1, 5.0, 2000.0),
+        (G1, 60.0, -0.1, 12.0, 30.0),  # K at the primary, 13 clipped to Z12
+        (G1, 10.0, -0.1, 12.0, 2000.0),
+        (G1, 10.0, -0.3, 12.0, 30.0),  # crossover end reached: Q 0.2 reaches Y-0.3
+        (G1, 60.0, -0.3, 12.0, 2000.0),  # crossover back at the final depth
+        (G1, 60.0, -0.3, 4.0, 30.0),  # K 8
+        (G1, 10.0, -0.3, 4.0, 2000.0),
+        (G1, 10.0, -0.3, 0.0, 30.0),  # R 5 clipped to the start Z
+        (G1, 60.0, -0.3, 0.0, 2000.0),  # crossover at depth done: this reversal only turns
+        (G1, 10.0, -0.3, 0.0, 2000.0),  # L1: one spark-out crossover, from the Z0 strip
+        (G1, 10.0, -0.3, 5.0, 30.0),
+        (G1, 60.0, -0.3, 5.0, 2000.0),
+        (G1, 60.0, -0.3, 12.0, 30.0),
+        (G1, 10.0, -0.3, 12.0, 2000.0),  # at Z12 again: the end, no return move
+        (G1, 10.0, -0.3, 12.0, 30.0),  # F in force again
     ]
 
 
@@ -96,11 +97,28 @@ def test_incremental_words_are_distances_from_the_start_point():
     m = G83(X=20.0, I=-5.0, Y=-0.2, J=0.1, Z=0.0, K=1.0, F=10.0, E=100.0)
     assert moves_of(m.expand(start(5.0, 2.0, 3.0, incremental=True))) == [
         (G1, 5.0, 1.9, 3.0, 10.0),
-        (G1, 25.0, 1.9, 3.0, 100.0),
+        (G1, 0.0, 1.9, 3.0, 100.0),  # to I first
+        (G1, 0.0, 1.8, 3.0, 10.0),  # no crossover: Q at every reversal
+        (G1, 25.0, 1.8, 3.0, 100.0),
         (G1, 25.0, 1.8, 3.0, 10.0),
-        (G1, 0.0, 1.8, 3.0, 100.0),
-        (G1, 0.0, 1.8, 3.0, 10.0),
     ]
+
+
+def test_when_j_reaches_y_and_the_first_stroke_is_short_one_more_crossover_at_depth():
+    # start X30 between I0 and X60: the stroke 30 -> 0 at Z0 leaves 30..60 of the Z0 strip, so two crossovers.
+    m = G83(X=60.0, I=0.0, Y=-0.1, J=0.1, Z=4.0, K=4.0, F=10.0, E=100.0)
+    assert moves_of(m.expand(start(30.0))) == [
+        (G1, 30.0, -0.1, 0.0, 10.0),
+        (G1, 0.0, -0.1, 0.0, 100.0),
+        (G1, 0.0, -0.1, 4.0, 10.0),
+        (G1, 60.0, -0.1, 4.0, 100.0),  # the first crossover ends here: it only turns
+        (G1, 0.0, -0.1, 4.0, 100.0),
+        (G1, 0.0, -0.1, 0.0, 10.0),
+        (G1, 60.0, -0.1, 0.0, 100.0),  # the Z0 strip over 0..60: the second crossover ends
+        (G1, 60.0, -0.1, 0.0, 10.0),
+    ]
+    # started beyond X (seen from I), the first stroke spans both reversal points: one crossover
+    assert len(m.expand(start(70.0))) == 5
 
 
 def test_picks_go_toward_y_and_z_whichever_side_they_are():
@@ -212,6 +230,40 @@ def test_plan_rules(model, state, message):
 def test_a_cycle_of_too_many_moves_is_refused():
     with pytest.raises(CycleError, match="more than 1000000 moves"):
         G83(X=10.0, Y=-100.0, J=0.0001, Z=0.0, K=1.0, F=1.0).expand(start())
+
+
+@hsettings(max_examples=200, deadline=None)
+@given(st.data())
+def test_generated_cycles_stay_between_their_limits_and_cover_the_face(data):
+    # any valid call from (x0, 0, 0): X between the start and the reversal points, Z between the start and
+    # the crossover end, Y never past the depth, every pick at most its amount, and with picks no wider
+    # than the wheel the strokes at the final depth cover the face between the reversal points and
+    # across the crossover (and 4 of the wheel's half width 5 beyond it).
+    draw = data.draw
+    primary = draw(st.sampled_from([-1, 1])) * draw(st.integers(1, 50)) * 2.0
+    secondary = draw(st.one_of(st.none(), st.integers(-20, 20).map(float)))
+    x0 = draw(st.integers(-60, 60).map(float))
+    assume(primary != (x0 if secondary is None else secondary))
+    depth = -draw(st.integers(0, 40)) / 100.0
+    cross = draw(st.integers(-30, 30)) * 1.0
+    k, r = draw(st.integers(1, 10)) * 1.0, draw(st.integers(1, 10)) * 1.0
+    j, q = draw(st.integers(0, 15)) / 100.0, draw(st.integers(1, 15)) / 100.0
+    model = G83(X=primary, I=secondary, Y=depth, J=j, Z=cross, K=k, R=r, Q=q, L=draw(st.integers(0, 3)), F=10.0,
+                E=500.0)
+    moves = model.expand(start(x0))
+    reversals = (primary, x0 if secondary is None else secondary)
+    assert all(min(x0, *reversals) <= m.x <= max(x0, *reversals) for m in moves)
+    assert all(min(0.0, cross) <= m.z <= max(0.0, cross) for m in moves)
+    assert all(m.y >= depth for m in moves) and moves[-1].y == depth
+    previous = before = start(x0)
+    for m in moves:
+        assert abs(m.y - before.y) <= max(j, q) + 1e-9
+        assert abs(m.z - before.z) <= max(k, r) + 1e-9
+        before = m
+    strokes = [box(min(a.x, b.x), b.z - WHEEL_WIDTH / 2, max(a.x, b.x), b.z + WHEEL_WIDTH / 2)
+               for a, b in zip([previous] + moves, moves) if a.y == b.y == depth and a.x != b.x]
+    face = box(min(reversals), min(0.0, cross) - 4.0, max(reversals), max(0.0, cross) + 4.0)
+    assert face.difference(unary_union(strokes)).area < 1e-9
 
 
 # ---------------------------------------------------------------- emit and parse
@@ -369,3 +421,9 @@ def test_emit_expand_writes_a_mill_program_from_the_start_x_y_z():
     lines = proc.stdout.decode().splitlines()
     # X4 is a plain coordinate (not a diameter): the J pick at X4, one stroke to X20 at depth
     assert lines[0] == "G17 G21 G90 G91.1 G40 G94" and lines[2:] == ["G0 X4. Y0. Z0.", "G1 Y-0.1 F5.", "X20.", "M2"]
+
+
+def test_a_units_change_converts_the_y_position():
+    # Y25.4 mm is Y1. in inch: G91 Y-1. then reaches Y0.
+    text = "G90 G94 G21\nG0 X0. Y25.4 Z0.\nG20\nG91 G1 Y-1. F1.\nM30\n"
+    assert translate_program(text, "ab9grind").splitlines()[-2] == "G1 Y0. F1."

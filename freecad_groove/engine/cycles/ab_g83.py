@@ -26,8 +26,9 @@ README row with a test):
 
 1. G83.1: the dress program P first, at the start point.
 2. The plunge pick J at F from the start (clipped to Y).
-3. Reciprocation: X feeds at E to the primary reversal X, then to the
-   secondary I, and so on. At each reversal the crossover axis picks K (at X)
+3. Reciprocation: X feeds at E to the secondary reversal point I when the
+   start is not on it (the seed's step 3), then to the primary X, to I, and
+   so on. At each reversal the crossover axis picks K (at X)
    or R (at I) at F toward the crossover end, the last pick clipped to it.
 4. At a reversal where the crossover end has been reached, the plunge pick Q
    at F instead (clipped to Y), and the crossover turns back toward the start
@@ -37,9 +38,11 @@ README row with a test):
 5. After the pick that reaches Y: one crossover at the final depth (the pass
    that grinds the face there) [choice], then L spark-out crossovers, each a
    crossover end to end without plunge; with no crossover a pass is one stroke
-   [choice]; a pass ends at the reversal that finds the crossover end
-   reached (it only turns). The cycle ends at the reversal where the last pass ends, without
-   a return move [choice]; when its last move was at E it ends with a move
+   [choice]. When J reaches Y at the start and the first stroke (start to I)
+   does not span the reversal points, one more crossover at depth [choice].
+   A pass ends at the reversal that finds the crossover end reached (it
+   only turns). The cycle ends at the reversal where the last pass ends,
+   without a return move [choice]; when its last move was at E it ends with a move
    to where the wheel is at F, so that the feed in force after the cycle is
    the plunge feed F (the one the next cycle's F defaults to: a plunge at the
    reciprocation feed E would crash the wheel) [choice].
@@ -335,6 +338,15 @@ class _Wheel:
         self.moves.append(Move(DRESS, self.x, self.z, None, program, self.y))
 
 
+def _passes_at_depth(plan: GrindPlan) -> int:
+    """The crossovers at the final depth when J reaches it at the start: one
+    more when the first stroke (start -> I) does not span the reversal points,
+    so the face is ground at depth between them over the whole crossover."""
+    on_i = abs(plan.x0 - plan.secondary) <= TOLERANCE
+    beyond_x = (plan.x0 - plan.primary) * (plan.primary - plan.secondary) >= 0  # at X or past it, seen from I
+    return (1 if on_i or beyond_x else 2) + plan.spark_out
+
+
 def _ending_at_feed(moves: List[Move], plan: GrindPlan) -> List[Move]:
     """The moves, with F in force again at the end when the last was at E."""
     last = moves[-1]
@@ -352,8 +364,10 @@ def grind_moves(plan: GrindPlan) -> List[Move]:
     if depth_at_start != plan.y0:
         wheel.feed(plan.feed, y=depth_at_start)
     dresses = _dress_after(plan)
-    passes_left = 1 + plan.spark_out if wheel.y == plan.depth else None
-    cross_to, reversal, plunge = plan.cross_end, plan.primary, 0
+    passes_left = _passes_at_depth(plan) if wheel.y == plan.depth else None
+    # the seed's step 3: X moves to the secondary reversal point I first (when the start is not on it)
+    reversal = plan.secondary if abs(plan.x0 - plan.secondary) > TOLERANCE else plan.primary
+    cross_to, plunge = plan.cross_end, 0
     while True:
         if wheel.x != reversal:  # the start may be on a reversal point already
             wheel.feed(plan.recip_feed, x=reversal)
