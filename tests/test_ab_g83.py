@@ -221,6 +221,7 @@ def test_word_rules(words, message):
     (G83(X=10.0, Y=-0.1, J=0.1, Z=0.0, K=1.0, F=1.0, D=1, P=4), start(), "D=1: the cycle has no plunge"),
     (G83(X=10.0, Y=-0.5, J=0.0, Z=0.0, K=1.0, F=1.0), start(), "Q=0: must be greater than 0"),
     (G83(X=10.0, Y=-0.5, J=0.1, Z=0.0, K=1.0, F=1.0), MachineState(x=0.0, z=0.0), "Y: the start position"),
+    (G83(Y=-0.5), MachineState(x=0.0, z=0.0), "Y: the start position"),  # before the words it lacks
 ])
 def test_plan_rules(model, state, message):
     with pytest.raises(CycleError, match="G83(.1)? " + message):
@@ -228,8 +229,8 @@ def test_plan_rules(model, state, message):
 
 
 def test_a_cycle_of_too_many_moves_is_refused():
-    with pytest.raises(CycleError, match="more than 1000000 moves"):
-        G83(X=10.0, Y=-100.0, J=0.0001, Z=0.0, K=1.0, F=1.0).expand(start())
+    with pytest.raises(CycleError, match=r"G83.1 Q=0.0001: the cycle would make more than 1000000 moves"):
+        G83_1(X=10.0, Y=-100.0, J=0.0001, Z=0.0, K=1.0, F=1.0, P=1).expand(start())
 
 
 @hsettings(max_examples=200, deadline=None)

@@ -240,14 +240,14 @@ class G83:
         return start + value if incremental else value
 
     def _check_complete(self, state: MachineState) -> None:
-        for letter in CLASS_2:
-            if getattr(self, letter) is None:
-                raise CycleError(letter, None, "must be programmed (no earlier G83/G83.1 of the program gave it)",
-                                 cycle=self.NAME)
         for axis, value in (("X", state.x), ("Y", state.y), ("Z", state.z)):
             if value is None:
                 raise CycleError(axis, None, "the start position is not known: program an absolute %s before the "
                                              "cycle" % axis, cycle=self.NAME)
+        for letter in CLASS_2:
+            if getattr(self, letter) is None:
+                raise CycleError(letter, None, "must be programmed (no earlier G83/G83.1 of the program gave it)",
+                                 cycle=self.NAME)
         if self.F is None and state.feed is None:
             raise CycleError("F", None, "must be programmed (no feed in force)", cycle=self.NAME)
         if self.P is None and (self.DRESS_FIRST or self.D):
@@ -282,7 +282,7 @@ class G83:
 
     def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
         """The moves of the cycle from ``state`` (see the module notes)."""
-        return grind_moves(self.plan(state))
+        return grind_moves(self.plan(state), self.NAME)
 
 
 @register
@@ -321,8 +321,10 @@ def _dress_after(plan: GrindPlan) -> Dict[int, int]:
 class _Wheel:
     """The wheel's position as the moves are made."""
 
-    def __init__(self, plan: GrindPlan) -> None:
+    def __init__(self, plan: GrindPlan, cycle: str) -> None:
         self.x, self.y, self.z = plan.x0, plan.y0, plan.z0
+        self.q = plan.q
+        self.cycle = cycle
         self.moves: List[Move] = []
 
     def feed(self, f: float, x: Optional[float] = None, y: Optional[float] = None, z: Optional[float] = None) -> None:
@@ -331,8 +333,8 @@ class _Wheel:
         self.z = self.z if z is None else z
         self.moves.append(Move(FEED, self.x, self.z, f, 0.0, self.y))
         if len(self.moves) > MAX_MOVES:
-            raise CycleError("J", None, "the cycle would make more than %d moves: picks too small for the depth "
-                                        "and crossover" % MAX_MOVES, cycle="G83")
+            raise CycleError("Q", self.q, "the cycle would make more than %d moves: picks too small for the depth "
+                                          "and crossover" % MAX_MOVES, cycle=self.cycle)
 
     def dress(self, program: int) -> None:
         self.moves.append(Move(DRESS, self.x, self.z, None, program, self.y))
@@ -355,9 +357,9 @@ def _ending_at_feed(moves: List[Move], plan: GrindPlan) -> List[Move]:
     return moves + [last._replace(f=plan.feed)]
 
 
-def grind_moves(plan: GrindPlan) -> List[Move]:
-    """The moves of a resolved G83/G83.1 (see the module notes)."""
-    wheel = _Wheel(plan)
+def grind_moves(plan: GrindPlan, cycle: str = "G83") -> List[Move]:
+    """The moves of a resolved G83/G83.1 (see the module notes); ``cycle`` names it in errors."""
+    wheel = _Wheel(plan, cycle)
     if plan.dress_first:
         wheel.dress(plan.program)
     depth_at_start = _toward(plan.y0, plan.depth, plan.j)
