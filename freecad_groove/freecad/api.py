@@ -15,6 +15,8 @@ def snake_case(name):
 
 
 KEYWORDS = {snake_case(n): n for n in SETTABLE}
+# The keywords that give the groove's size: without any, the groove is read from the model.
+DIMENSIONS = tuple(snake_case(n) for n in groove_op.MODEL_VALUES)
 
 
 def _pairs(faces: object) -> list:
@@ -105,11 +107,20 @@ def _create(job: object, faces: list, name: str, tool_controller: object, values
         for model, subs in faces:
             for sub in subs:
                 obj.Proxy.addBase(obj, model, sub)
+        if "model_groove" in values:  # first: dimensions set after it override the model's
+            _set_values(obj, {"model_groove": values["model_groove"]})
         _set_values(obj, values)
     except BaseException:  # nothing half-made stays in the Job
         _remove_new_objects(doc, before)
         raise
     return obj
+
+
+def _with_model_groove(values: dict) -> dict:
+    """``values`` with model_groove=True when they give no dimension of the groove."""
+    if any(k in values for k in DIMENSIONS) or "model_groove" in values:
+        return values
+    return dict(values, model_groove=True)
 
 
 def make_groove(job, faces, name="Groove", tool_controller=None, recompute=True, **values):
@@ -129,12 +140,14 @@ def make_groove(job, faces, name="Groove", tool_controller=None, recompute=True,
     that is not in the Job's model, a name that is not one of its faces, a
     value the property refuses) with nothing left behind in the Job.
 
+    No dimension (position, width, depth, flank angles, corners): the groove
+    is read from the model (model_groove=True); with it, dimensions override.
     Every other keyword is an op property in snake_case, in mm, degrees and
     seconds (or a FreeCAD quantity string such as "4 mm"):
     position, width, depth, flank_angle1, flank_angle2, edge_corner1,
     edge_corner1_type ("None"/"Radius"/"Chamfer"), edge_corner2,
     edge_corner2_type, base_corner1, base_corner1_type, base_corner2,
-    base_corner2_type, chamfer_measure ("Chamfer length (CHF)"/"Leg length
+    base_corner2_type, model_groove, model_overrides, chamfer_measure ("Chamfer length (CHF)"/"Leg length
     (CHR)"), base_allowance, flank_allowance, infeed, dwell, retract,
     groove_count, pitch, tool_width, tool_corner_radius, reference_corner
     ("minus"/"plus"), coolant_mode, comment.
@@ -161,6 +174,7 @@ def make_groove(job, faces, name="Groove", tool_controller=None, recompute=True,
             "make_groove() got unknown keyword(s) %s; valid: %s" % (", ".join(unknown), ", ".join(sorted(KEYWORDS)))
         )
     faces = _faces(job, faces)
+    values = _with_model_groove(values)
     doc = job.Document
     if FreeCAD.ActiveDocument is None or FreeCAD.ActiveDocument.Name != doc.Name:
         FreeCAD.setActiveDocument(doc.Name)

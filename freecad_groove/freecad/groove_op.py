@@ -74,7 +74,6 @@ import PathScripts.PathUtils as PathUtils
 from .. import hooks
 from ..engine import GroovingTool, Settings
 from ..engine.cycles.cycle93 import DEFAULT_VRT_MM, Cycle93
-from ..engine.moves import DWELL, FEED, RAPID
 from ..engine.numbers import format_value
 from . import plan_cache
 from .cutting import CuttingData, cutting_data
@@ -91,6 +90,8 @@ from .groove_properties import (  # noqa: F401 - this module's API too
     error_properties,
 )
 from .links import SafeEnvelope
+from .model_grooves import MODEL_VALUES, ModelGroove, not_overridden, read_picked_groove
+from .op_path import comment_body, path_commands
 from .units import feed_mm_per_min, length_mm
 
 # TYP units digit for "right" grooves: (longitudinal, external) -> TYP
@@ -117,11 +118,6 @@ class _WithValues:
 def document_object(obj: object) -> object:
     """The FreeCAD object behind ``obj`` (itself, or what _WithValues wraps)."""
     return obj._obj if isinstance(obj, _WithValues) else obj
-
-
-def _comment(text: str) -> str:
-    """A Path comment body: FreeCAD drops inner parentheses."""
-    return "(%s)" % text.replace("(", "[").replace(")", "]")
 
 
 def _corner(obj: object, name: str) -> float:
@@ -154,31 +150,6 @@ def finite_or_error(value: float, what: str, properties: tuple) -> float:
     if not math.isfinite(value):
         raise GrooveInputError("%s=%s: must be a finite number" % (what, value), properties)
     return value
-
-
-def path_commands(plans: list[GroovePlan], feed_mm_per_s: float) -> list:
-    """Path commands (Path.Command) for ``plans``: G18, then per groove a
-    comment, the link rapids and the expanded moves, feeds at ``feed_mm_per_s``."""
-    commands = [Path.Command("G18")]
-    for plan in plans:
-        commands.append(Path.Command(_comment("%s groove %d: %s" % (plan.face.name, plan.index + 1,
-                                                                    plan.cycle.emit()))))
-        commands.extend(_link_commands(plan.link))
-        for move in plan.moves:
-            if move.kind == RAPID:
-                commands.append(Path.Command("G0", {"X": move.x, "Z": move.z}))
-            elif move.kind == FEED:
-                commands.append(Path.Command("G1", {"X": move.x, "Z": move.z, "F": feed_mm_per_s}))
-            elif move.kind == DWELL:
-                commands.append(Path.Command("G4", {"P": move.p}))
-        commands.extend(_link_commands(plan.retreat))
-    return commands
-
-
-def _link_commands(steps: list) -> list:
-    """A G0 per link step [LinkMove], with the axes it moves."""
-    return [Path.Command("G0", {axis: value for axis, value in zip("XZ", step) if value is not None})
-            for step in steps]
 
 
 def op_error(obj: object) -> Optional[str]:
@@ -226,6 +197,12 @@ class ObjectGroove(PathOp.ObjectOp):
     def opSetDefaultValues(self, obj: object, job: object) -> None:
         pass
 
+    def opOnChanged(self, obj: object, prop: str) -> None:
+        """A model value set by hand while ModelGroove is on overrides the model's (ModelOverrides)."""
+        if (prop in MODEL_VALUES and getattr(obj, "ModelGroove", False) and not getattr(self, "_writing_model", False)
+                and "Restore" not in obj.State and prop not in obj.ModelOverrides):
+            obj.ModelOverrides = list(obj.ModelOverrides) + [prop]
+
     def opUpdateDepths(self, obj: object) -> None:
         """The milling depth logic works on the Z bounding box; a lathe groove
         has no start/final depth."""
@@ -244,7 +221,8 @@ class ObjectGroove(PathOp.ObjectOp):
         faces = None
         try:
             check_finite(obj)
-            faces = self.groove_faces(obj)
+            model = self._apply_model(obj)  # read once: a model's section costs about 1 ms a face
+            faces = [model.face] if model is not None else self.groove_faces(obj)
             self._write_derived(obj, faces)
             plans = self.plan(obj, faces)
             cutting = cutting_data(obj)
@@ -270,7 +248,7 @@ class ObjectGroove(PathOp.ObjectOp):
         if clear_derived:
             self._write_derived(obj, [])
         self.error = message
-        self.commandlist.append(Path.Command(_comment("%s: %s" % (obj.Label, message))))
+        self.commandlist.append(Path.Command(comment_body("%s: %s" % (obj.Label, message))))
         FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, message))
 
     def current_plan(self, obj: object) -> list[GroovePlan]:
@@ -357,7 +335,7 @@ class ObjectGroove(PathOp.ObjectOp):
                 continue
             obj.addProperty(type_id, name, group, tooltip)
             setattr(obj, name, default)
-            if isinstance(default, list):
+            if type_id == "App::PropertyEnumeration":
                 setattr(obj, name, default[0])
         # Constraints and editor modes are not stored in the document.
         obj.GrooveCount = (max(1, int(obj.GrooveCount)), 1, MAX_GROOVES, 1)
@@ -383,10 +361,37 @@ class ObjectGroove(PathOp.ObjectOp):
             elif abs(length_mm(old) - value) > 1e-12:
                 setattr(obj, name, value)
 
+    # -- grooves read from the model (model_grooves.py) -------------------------
+    def model_groove(self, obj: object) -> ModelGroove:
+        """The modelled groove the picked faces belong to (GrooveInputError naming what does not fit)."""
+        try:
+            return read_picked_groove([(base.Shape, sub, named.Label) for base, named, sub, _n in self._picked(obj)],
+                                      obj.ChamferMeasure == CHAMFER_MEASURES[1])
+        except ValueError as e:
+            raise GrooveInputError(str(e), ("Base",)) from None
+
+    def _apply_model(self, obj: object) -> Optional[ModelGroove]:
+        """ModelGroove: the groove read, its values written (less ModelOverrides), FromModel naming them."""
+        values, model = {}, None
+        if getattr(obj, "ModelGroove", False):
+            model = self.model_groove(obj)
+            values = not_overridden(model.values, obj.ModelOverrides)
+            self._writing_model = True
+            try:
+                for name, value in values.items():
+                    old = getattr(obj, name)
+                    if (abs(old.Value - value) > 1e-12) if hasattr(old, "Value") else old != value:
+                        setattr(obj, name, value)
+            finally:
+                self._writing_model = False
+        if hasattr(obj, "FromModel") and list(obj.FromModel) != list(values):
+            obj.FromModel = list(values)
+        return model
+
     # -- deriving the grooves ---------------------------------------------------
-    def groove_faces(self, obj: object) -> list[GrooveFace]:
-        """GrooveFace of every face in Base (ValueError naming a face that takes no groove)."""
-        faces = []
+    def _picked(self, obj: object) -> list[tuple]:
+        """(part, its model object for names, "FaceN", "Label.FaceN") of every picked element."""
+        picked = []
         job = PathUtils.findParentJob(document_object(obj))
         for base, subs in obj.Base or []:
             if isinstance(subs, str):
@@ -396,15 +401,25 @@ class ObjectGroove(PathOp.ObjectOp):
                 name = element_name(named, sub or "(whole object)")
                 if not sub:
                     raise GrooveInputError("%s: pick a face of the part, not the whole object" % name, ("Base",))
-                try:
-                    shape = base.Shape.getElement(sub)
-                except Exception:
-                    raise GrooveInputError("%s: no such element in the model (did the model change?)" % name,
-                                           ("Base",)) from None
-                try:
-                    faces.append(analyse_face(shape, name))
-                except ValueError as e:
-                    raise GrooveInputError(str(e), ("Base",)) from None
+                picked.append((base, named, sub, name))
+        return picked
+
+    def groove_faces(self, obj: object) -> list[GrooveFace]:
+        """GrooveFace of every face in Base (ValueError naming a face that takes
+        no groove); with ModelGroove, the contour line of the modelled groove."""
+        if getattr(obj, "ModelGroove", False):
+            return [self.model_groove(obj).face]
+        faces = []
+        for base, _named, sub, name in self._picked(obj):
+            try:
+                shape = base.Shape.getElement(sub)
+            except Exception:
+                raise GrooveInputError("%s: no such element in the model (did the model change?)" % name,
+                                       ("Base",)) from None
+            try:
+                faces.append(analyse_face(shape, name))
+            except ValueError as e:
+                raise GrooveInputError(str(e), ("Base",)) from None
         return faces
 
     def settings(self, obj: object) -> Settings:

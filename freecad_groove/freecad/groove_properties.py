@@ -64,6 +64,13 @@ PROPERTIES = (
     ("App::PropertyEnumeration", "ChamferMeasure", "Groove", _tip(
         "How chamfer sizes are measured: the chamfer's own length (CHF, TYP 1..8) or the leg along each "
         "element it cuts (CHR, TYP 11..18)."), CHAMFER_MEASURES),
+    ("App::PropertyBool", "ModelGroove", "Groove", _tip(
+        "Read the groove from the model: the picked face is a face of a modelled groove (its base, a flank, a "
+        "corner) and Position, Width, Depth, the flank angles and the corners come from it, except the "
+        "properties listed in ModelOverrides; the groove is cut into the contour line around it."), False),
+    ("App::PropertyStringList", "ModelOverrides", "Groove", _tip(
+        "With ModelGroove: the properties whose own values override the model's (a property set by hand is "
+        "added here; remove its name to take the model's value again)."), []),
     ("App::PropertyLength", "BaseAllowance", "Groove", _tip(
         "Finishing allowance left on the base by the roughing (FAL1)."), 0.0),
     ("App::PropertyLength", "FlankAllowance", "Groove", _tip(
@@ -106,6 +113,8 @@ PROPERTIES = (
         "What the op made of the face(s): longitudinal/oblique/face, external/internal."), ""),
     ("App::PropertyString", "FeedsAndSpeeds", "Derived", _tip(
         "The feed and spindle speed the grooves are cut with, and where each comes from."), ""),
+    ("App::PropertyStringList", "FromModel", "Derived", _tip(
+        "With ModelGroove: the properties whose values came from the model at the last recompute."), []),
     ("App::PropertyDistance", "AXFA", "Derived", _tip(
         "CYCLE93 AXFA of the first groove: the start point's radius (X)."), 0.0),
     ("App::PropertyDistance", "AXSA", "Derived", _tip(
@@ -119,7 +128,7 @@ PROPERTIES = (
 PROPERTY_NAMES = tuple(p[1] for p in PROPERTIES)
 PROPERTY_TYPES = {p[1]: p[0] for p in PROPERTIES}
 DERIVED = tuple(p[1] for p in PROPERTIES if p[2] == "Derived")
-DEFAULTS = {p[1]: (p[4][0] if isinstance(p[4], list) else p[4]) for p in PROPERTIES}
+DEFAULTS = {p[1]: (p[4][0] if p[0] == "App::PropertyEnumeration" else p[4]) for p in PROPERTIES}
 
 
 class GrooveInputError(ValueError):

@@ -26,7 +26,8 @@ A document saved from the GUI stores the class paths
 ``freecad_groove.gui.task_panel.ViewProvider`` and, in the view provider's
 state, ``freecad_groove.gui.task_panel.GroovePage`` (the page FreeCAD builds
 when the op is edited): both stay in this module. The pages are built from
-the small Qt helpers in widgets.py.
+the small Qt helpers in widgets.py; the dialog around them (OK refused
+while invalid, the document's modified flag) is task_dialog.py.
 """
 
 import os
@@ -39,8 +40,9 @@ from PySide import QtCore, QtGui
 from ..freecad import faces as faces_mod
 from ..freecad import groove_op
 from ..freecad.groove_properties import cycle93_properties
+from ..freecad.model_grooves import not_overridden, read_model_groove
 from . import ICON, PANELS, preview
-from .tool_page import ToolPage
+from .task_dialog import GrooveTaskPanel
 from .widgets import (
     CONTEXT,
     ERROR_LABEL,
@@ -63,6 +65,9 @@ from .widgets import (
 )
 
 translate = FreeCAD.Qt.translate
+
+FROM_MODEL_LABEL = "fromModelLabel"  # the line naming the values that came from the model
+FROM_MODEL_PROPERTY = "fromModel"  # Qt property of a field showing the model's value
 
 DIAGRAM_SIZE = (360, 170)  # px: the groove picture at most (groove_section.svg is 360 x 170)
 PREVIEW_DELAY_MS = 20  # coalesces the signals of one edit into one re-plan
@@ -149,6 +154,17 @@ class GroovePage(PathOpGui.TaskPanelPage):
         form.layout().insertWidget(0, error)
         error.setVisible(False)
         form.layout().insertWidget(1, new_warning_label(form))
+        model = QtGui.QCheckBox(translate(CONTEXT, "Read the groove from the model"), form)
+        model.setObjectName("modelGroove")
+        model.setToolTip(translate(CONTEXT, "The picked face is a face of a modelled groove (its base, a flank, a "
+                                   "corner): its position, size, angles and corners come from the model. A value "
+                                   "changed here overrides the model's."))
+        form.layout().insertWidget(2, model)
+        note = QtGui.QLabel(form)
+        note.setObjectName(FROM_MODEL_LABEL)
+        note.setWordWrap(True)
+        note.setVisible(False)
+        form.layout().insertWidget(3, note)
         return form
 
     def taskPanelBaseGeometryPage(self, obj, features):
@@ -164,6 +180,7 @@ class GroovePage(PathOpGui.TaskPanelPage):
         self.warned = ()  # properties the warnings name
         self.plans = []
         self.replans = 0
+        self.model_shown = {}  # {property: value} the fields show from the model
         self.on_validity_changed = None
         self._timer = QtCore.QTimer()  # no parent: it must outlive the form, which Cancel may delete first
         self._timer.setSingleShot(True)
@@ -184,14 +201,26 @@ class GroovePage(PathOpGui.TaskPanelPage):
         select_data(self.form.chamferMeasure, str(obj.ChamferMeasure))
         self.form.dwell.setValue(float(obj.Dwell))
         self.form.grooveCount.setValue(int(obj.GrooveCount))
+        self.model_box().blockSignals(True)
+        self.model_box().setChecked(bool(getattr(obj, "ModelGroove", False)))
+        self.model_box().blockSignals(False)
+        shown = self.values()
+        self.model_shown = {p: shown[p] for p in getattr(obj, "FromModel", []) if p in shown} \
+            if self.model_box().isChecked() else {}
+        self._show_from_model()
         self._enable_corner_sizes()
         self.schedule_preview()
 
     def getFields(self, obj):
-        self.fields.write_to(obj)
+        if bool(getattr(obj, "ModelGroove", False)) != self.model_box().isChecked():
+            obj.ModelGroove = self.model_box().isChecked()  # first: values changed after it are overrides
+        from_model = self._from_model()
+        for prop, value in self.fields.values().items():
+            if prop not in from_model and abs(getattr(obj, prop).Value - value) > 1e-12:
+                setattr(obj, prop, value)
         for name in CORNERS:
             value = self.field(name + "Type").currentData()
-            if value and getattr(obj, name + "Type") != value:
+            if value and name + "Type" not in from_model and getattr(obj, name + "Type") != value:
                 setattr(obj, name + "Type", value)
         value = self.form.chamferMeasure.currentData()
         if value and obj.ChamferMeasure != value:
@@ -209,6 +238,7 @@ class GroovePage(PathOpGui.TaskPanelPage):
         values["ChamferMeasure"] = self.form.chamferMeasure.currentData()
         values["Dwell"] = self.form.dwell.value()
         values["GrooveCount"] = self.form.grooveCount.value()
+        values["ModelGroove"] = self.model_box().isChecked()
         return values
 
     def all_values(self) -> dict:
@@ -235,9 +265,11 @@ class GroovePage(PathOpGui.TaskPanelPage):
         widgets += [self.form.chamferMeasure, self.form.dwell, self.form.grooveCount]
         for widget in widgets:
             connect_changed(widget, self.changed)
+        self.model_box().toggled.connect(lambda *_a: self.model_toggled())
 
     def changed(self) -> None:
         """A value changed: the panel is dirty, the preview follows."""
+        self._show_from_model()
         self._enable_corner_sizes()
         self.setDirty()
         self.schedule_preview()
@@ -247,8 +279,61 @@ class GroovePage(PathOpGui.TaskPanelPage):
             self.field(name).setEnabled(self.field(name + "Type").currentData() != "None")
 
     def updateData(self, obj, prop):
+        if prop == "Base" and self.model_box().isChecked():
+            self.fill_from_model()
         if prop in ("Base", "ToolController"):
             self.schedule_preview()
+
+    # -- values from the model ----------------------------------------------------
+    def model_box(self) -> object:
+        """The "Read the groove from the model" check box (ModelGroove)."""
+        return child(self.form, "modelGroove")
+
+    def model_toggled(self) -> None:
+        if self.model_box().isChecked():
+            self.fill_from_model()
+        else:
+            self.model_shown = {}
+        self.changed()
+
+    def fill_from_model(self) -> None:
+        """Show the model's values (those not in the op's ModelOverrides) in the
+        fields; nothing when the picked faces make no modelled groove (the
+        preview then shows why)."""
+        obj = self.obj
+        try:
+            groove = obj.Proxy.model_groove(groove_op._WithValues(obj, {"ChamferMeasure": self.values()[
+                "ChamferMeasure"]}))
+        except ValueError:
+            self.model_shown = {}
+            return
+        self.model_shown = not_overridden(groove.values, list(obj.ModelOverrides))
+        for prop, value in self.model_shown.items():
+            widget = self.field(prop)
+            widget.blockSignals(True)
+            if prop.endswith("Type"):
+                select_data(widget, value)
+            else:
+                widget.setProperty("rawValue", float(value))
+            widget.blockSignals(False)
+        self._show_from_model()
+
+    def _from_model(self) -> tuple:
+        """The properties whose fields still show the model's value."""
+        shown = self.values()
+        return tuple(p for p, v in self.model_shown.items()
+                     if (shown[p] == v if isinstance(v, str) else abs(shown[p] - v) <= 1e-9))
+
+    def _show_from_model(self) -> None:
+        """"From the model: Position, Width, ..." over the fields, each such field marked."""
+        from_model = self._from_model()
+        for prop in groove_op.MODEL_VALUES:
+            widget = self.field(prop)
+            if widget is not None:
+                widget.setProperty(FROM_MODEL_PROPERTY, prop in from_model)
+        label = child(self.form, FROM_MODEL_LABEL)
+        label.setText(translate(CONTEXT, "From the model: {0}").format(", ".join(from_model)) if from_model else "")
+        label.setVisible(bool(from_model))
 
     # -- preview and validity ---------------------------------------------------
     def schedule_preview(self) -> None:
@@ -340,116 +425,6 @@ class GroovePage(PathOpGui.TaskPanelPage):
             self.preview = None
 
 
-class GrooveTaskPanel(PathOpGui.TaskPanel):
-    """FreeCAD's op task panel with the tool page added and OK/Apply refused
-    while the groove is invalid."""
-
-    def __init__(self, obj, deleteOnReject, opPage, selectionFactory):
-        # Before CAM's panel shows the op and hides the model and stock: that marks the document modified.
-        self.gui_document = FreeCADGui.getDocument(obj.Document.Name)
-        self.was_modified = self.gui_document.Modified
-        self.looks_before = document_looks(obj.Document)
-        self.applied = False  # Apply wrote the panel's values into the op
-        super().__init__(obj, deleteOnReject, opPage, selectionFactory)
-        self.groove_page = opPage
-        tool_page = ToolPage(obj, obj.Proxy.opFeatures(obj))
-        tool_page.parent = self
-        tool_page.initPage(obj)
-        tool_page.onDirtyChanged(self.pageDirtyChanged)
-        tool_page.groove_page = opPage
-        self.featurePages.insert(self.featurePages.index(opPage), tool_page)
-        opPage.other_pages = [p for p in self.featurePages if p is not opPage]
-        opPage.on_validity_changed = self.update_buttons
-        self._insert_form(tool_page, obj)
-
-    def _insert_form(self, page, obj):
-        """Show ``page`` just before the Groove page, whatever the layout."""
-        op_form = self.groove_page.form
-        if isinstance(self.form, QtGui.QToolBox):
-            at = self.form.indexOf(op_form)
-            reversed_order = at == 0 and self.form.count() > 1
-            index = at + 1 if reversed_order else at
-            self.form.insertItem(index, page.form, page.getTitle(obj))
-            self.form.setCurrentWidget(op_form)
-        else:
-            page.form.setWindowTitle(page.getTitle(obj))
-            at = self.form.index(op_form)
-            reversed_order = at == 0 and len(self.form) > 1
-            self.form.insert(at + 1 if reversed_order else at, page.form)
-
-    def setupUi(self):
-        super().setupUi()
-        for page in self.featurePages:  # FreeCAD's own pages too, now filled (1.1's tool controller editor)
-            fit_narrow_docks(page.form)
-
-    @property
-    def valid(self) -> bool:
-        return self.groove_page.error is None
-
-    def update_buttons(self) -> None:
-        """OK only while the groove is valid, Apply also only while there is something to apply."""
-        box = getattr(self, "buttonBox", None)
-        if box is None:
-            return
-        box.button(QtGui.QDialogButtonBox.Ok).setEnabled(self.valid)
-        box.button(QtGui.QDialogButtonBox.Apply).setEnabled(self.valid and self.isDirty())
-
-    def pageDirtyChanged(self, page):
-        self.update_buttons()
-
-    def modifyStandardButtons(self, buttonBox):
-        super().modifyStandardButtons(buttonBox)
-        fit_narrow_docks(buttonBox)  # OK, Cancel, Apply: three 80 px buttons are wider than 1.0's dock
-        self.update_buttons()
-
-    def _refuse(self):
-        self.groove_page.update_preview()  # the values the user sees now, not those of 20 ms ago
-        if self.valid:
-            return False
-        FreeCAD.Console.PrintWarning("%s: %s\n" % (self.obj.Label, self.groove_page.error))
-        return True
-
-    def accept(self, resetEdit=True):
-        if self._refuse():
-            return False
-        unchanged = not self.isDirty() and self._left_alone()
-        super().accept(resetEdit)
-        self._keep_unmodified(unchanged)
-        return True
-
-    def reject(self, resetEdit=True):
-        unchanged = self._left_alone()
-        result = super().reject(resetEdit)
-        self._keep_unmodified(unchanged)
-        return result
-
-    def clicked(self, button):
-        if button == QtGui.QDialogButtonBox.Apply:
-            if self._refuse():
-                return
-            self.applied = self.applied or self.isDirty()
-        super().clicked(button)
-
-    def _left_alone(self) -> bool:
-        """An existing op, and nothing applied: the panel wrote nothing into it."""
-        return not self.deleteOnReject and not self.applied
-
-    def _keep_unmodified(self, unchanged: bool) -> None:
-        """A document that was saved stays unmodified when the panel changed
-        nothing in it: CAM's panel changes only the Visibility of the op, model,
-        stock and Job while it is open, which is not worth asking to save.
-        Called once the panel is closed: every object must be shown or hidden
-        as before, and no object added (a grooving tool controller)."""
-        if unchanged and not self.was_modified and document_looks(self.gui_document.Document) == self.looks_before:
-            self.gui_document.Modified = False
-
-
-def document_looks(doc: object) -> dict:
-    """{object name: whether it is shown} of every object of ``doc``."""
-    return {o.Name: bool(o.ViewObject.Visibility) if getattr(o, "ViewObject", None) is not None else None
-            for o in doc.Objects}
-
-
 class ViewProvider(PathOpGui.ViewProvider):
     """The op's view provider: FreeCAD's, with the add-on's icon, selection
     gate and task panel."""
@@ -485,7 +460,10 @@ class TurnedFaceGate:
         try:
             faces_mod.analyse_face(obj.Shape.getElement(sub), sub)
         except Exception:
-            return False
+            try:  # a face of a modelled groove: a corner radius is a torus
+                read_model_groove(obj.Shape, sub, sub)
+            except Exception:
+                return False
         return True
 
 

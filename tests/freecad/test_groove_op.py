@@ -425,7 +425,7 @@ def test_spherical_and_toroidal_faces_do_not_break_grooves_elsewhere(doc):
     assert first == safe and last == safe  # it ends where it started
     assert max(words["Z"] for _n, words in rest if "Z" in words) < 71.0 + 1e-9
     sphere = next(i + 1 for i, f in enumerate(shape.Faces) if isinstance(f.Surface, Part.Sphere))
-    bad = make_groove(job, (shaft, "Face%d" % sphere))
+    bad = make_groove(job, (shaft, "Face%d" % sphere), width=4)  # a size: not read from the model
     assert op_error(bad) == "Shaft.Face%d: a sphere face; grooves go on a cylinder, a cone or a plane square " \
                             "to the Z axis" % sphere
 
@@ -450,7 +450,7 @@ def test_unsupported_faces_name_the_face(doc):
     # in an op: the recompute fails with the message naming the face
     job = PathJob.Create("Job", [box])
     doc.recompute()
-    op = make_groove(job, (box, "Face1"))
+    op = make_groove(job, (box, "Face1"), width=4)  # a size: not read from the model
     assert op_error(op).startswith("Block.Face1: a plane whose normal")
     assert job.isValid()
 

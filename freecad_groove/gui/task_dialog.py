@@ -1,0 +1,125 @@
+"""The Groove op's task dialog: FreeCAD CAM's op task panel with the tool
+page (tool_page.py) inserted before the Groove page, OK and Apply refused
+while the groove is invalid, and a document left unmodified by a look at the
+panel (CAM's panel changes Visibility while it is open).
+
+Not stored in documents (ViewProvider.setEdit builds it): free to move.
+"""
+
+import FreeCAD
+import FreeCADGui
+import Path.Op.Gui.Base as PathOpGui
+from PySide import QtGui
+
+from .tool_page import ToolPage
+from .widgets import fit_narrow_docks
+
+
+class GrooveTaskPanel(PathOpGui.TaskPanel):
+    """FreeCAD's op task panel with the tool page added and OK/Apply refused
+    while the groove is invalid."""
+
+    def __init__(self, obj, deleteOnReject, opPage, selectionFactory):
+        # Before CAM's panel shows the op and hides the model and stock: that marks the document modified.
+        self.gui_document = FreeCADGui.getDocument(obj.Document.Name)
+        self.was_modified = self.gui_document.Modified
+        self.looks_before = document_looks(obj.Document)
+        self.applied = False  # Apply wrote the panel's values into the op
+        super().__init__(obj, deleteOnReject, opPage, selectionFactory)
+        self.groove_page = opPage
+        tool_page = ToolPage(obj, obj.Proxy.opFeatures(obj))
+        tool_page.parent = self
+        tool_page.initPage(obj)
+        tool_page.onDirtyChanged(self.pageDirtyChanged)
+        tool_page.groove_page = opPage
+        self.featurePages.insert(self.featurePages.index(opPage), tool_page)
+        opPage.other_pages = [p for p in self.featurePages if p is not opPage]
+        opPage.on_validity_changed = self.update_buttons
+        self._insert_form(tool_page, obj)
+
+    def _insert_form(self, page, obj):
+        """Show ``page`` just before the Groove page, whatever the layout."""
+        op_form = self.groove_page.form
+        if isinstance(self.form, QtGui.QToolBox):
+            at = self.form.indexOf(op_form)
+            reversed_order = at == 0 and self.form.count() > 1
+            index = at + 1 if reversed_order else at
+            self.form.insertItem(index, page.form, page.getTitle(obj))
+            self.form.setCurrentWidget(op_form)
+        else:
+            page.form.setWindowTitle(page.getTitle(obj))
+            at = self.form.index(op_form)
+            reversed_order = at == 0 and len(self.form) > 1
+            self.form.insert(at + 1 if reversed_order else at, page.form)
+
+    def setupUi(self):
+        super().setupUi()
+        for page in self.featurePages:  # FreeCAD's own pages too, now filled (1.1's tool controller editor)
+            fit_narrow_docks(page.form)
+
+    @property
+    def valid(self) -> bool:
+        return self.groove_page.error is None
+
+    def update_buttons(self) -> None:
+        """OK only while the groove is valid, Apply also only while there is something to apply."""
+        box = getattr(self, "buttonBox", None)
+        if box is None:
+            return
+        box.button(QtGui.QDialogButtonBox.Ok).setEnabled(self.valid)
+        box.button(QtGui.QDialogButtonBox.Apply).setEnabled(self.valid and self.isDirty())
+
+    def pageDirtyChanged(self, page):
+        self.update_buttons()
+
+    def modifyStandardButtons(self, buttonBox):
+        super().modifyStandardButtons(buttonBox)
+        fit_narrow_docks(buttonBox)  # OK, Cancel, Apply: three 80 px buttons are wider than 1.0's dock
+        self.update_buttons()
+
+    def _refuse(self):
+        self.groove_page.update_preview()  # the values the user sees now, not those of 20 ms ago
+        if self.valid:
+            return False
+        FreeCAD.Console.PrintWarning("%s: %s\n" % (self.obj.Label, self.groove_page.error))
+        return True
+
+    def accept(self, resetEdit=True):
+        if self._refuse():
+            return False
+        unchanged = not self.isDirty() and self._left_alone()
+        super().accept(resetEdit)
+        self._keep_unmodified(unchanged)
+        return True
+
+    def reject(self, resetEdit=True):
+        unchanged = self._left_alone()
+        result = super().reject(resetEdit)
+        self._keep_unmodified(unchanged)
+        return result
+
+    def clicked(self, button):
+        if button == QtGui.QDialogButtonBox.Apply:
+            if self._refuse():
+                return
+            self.applied = self.applied or self.isDirty()
+        super().clicked(button)
+
+    def _left_alone(self) -> bool:
+        """An existing op, and nothing applied: the panel wrote nothing into it."""
+        return not self.deleteOnReject and not self.applied
+
+    def _keep_unmodified(self, unchanged: bool) -> None:
+        """A document that was saved stays unmodified when the panel changed
+        nothing in it: CAM's panel changes only the Visibility of the op, model,
+        stock and Job while it is open, which is not worth asking to save.
+        Called once the panel is closed: every object must be shown or hidden
+        as before, and no object added (a grooving tool controller)."""
+        if unchanged and not self.was_modified and document_looks(self.gui_document.Document) == self.looks_before:
+            self.gui_document.Modified = False
+
+
+def document_looks(doc: object) -> dict:
+    """{object name: whether it is shown} of every object of ``doc``."""
+    return {o.Name: bool(o.ViewObject.Visibility) if getattr(o, "ViewObject", None) is not None else None
+            for o in doc.Objects}
