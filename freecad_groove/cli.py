@@ -150,6 +150,9 @@ def _add_expand_options(parser: argparse.ArgumentParser) -> None:
                     help="start point X as a DIAMETER (the tool position before the call; required with "
                     "--expand)")
     ex.add_argument("--start-z", type=finite, metavar="Z", help="start point Z (required with --expand)")
+    ex.add_argument("--start-y", type=finite, metavar="Y",
+                    help="start point Y of a grinder cycle (G83; required with --expand; its X is then a plain "
+                    "coordinate and the output mill-style)")
     ex.add_argument("--feed", type=positive, metavar="F", help="feed in force before the call")
     ex.add_argument("--spindle", type=positive, metavar="RPM",
                     help="spindle speed started (M3) before the moves; needed with feed per revolution")
@@ -222,14 +225,17 @@ def _emit(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]) ->
         if args.start_x is None or args.start_z is None:
             raise ProgramError("--expand needs the start point: --start-x (diameter) and --start-z")
         state = start_state(args, feed_default="rev")
-        state.x = args.start_x / 2.0
+        mill = getattr(entry.cycle_class, "MILL", False)  # a grinder cycle: X/Y/Z, a mill-style program
+        state.x = args.start_x if mill else args.start_x / 2.0
         state.z = args.start_z
+        state.y = args.start_y if mill else None
         state.feed = args.feed
         state.incremental = args.incremental
         moves = model.expand(state, settings)
         warnings.extend((1, warning) for warning in cycle_warnings(model, state, settings))
+        target = targets.mill_target(args.to) if mill else args.to
         return targets.write_program(
-            moves, args.to, state, title="%s: %s" % (entry.title, " / ".join(text.split("\n"))), spindle=args.spindle
+            moves, target, state, title="%s: %s" % (entry.title, " / ".join(text.split("\n"))), spindle=args.spindle
         )
     except CycleError as exc:
         raise _Failure("emit %s" % args.cycle_name, 1, exc.message) from None

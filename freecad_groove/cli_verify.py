@@ -85,6 +85,9 @@ def _check(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]):
     from .engine.errors import ProgramError
 
     name = _program_name(args.program)
+    if INPUT_CONTROLS[args.dialect].mill:  # a grinder's X/Y/Z: no turned section to check it on
+        raise _Failure(name, 0, "verify and plot check turning programs (the lathe's XZ section); %s programs "
+                                "are mill-style (X/Y/Z)" % args.dialect)
     try:
         from .verify.program_check import StockSpec, check_program
         from .verify.program_record import record_program

@@ -90,10 +90,12 @@ def _numbers(args, count, line):
     return values
 
 
-def parse_canonical(output, rotary=False):
+def parse_canonical(output, rotary=False, xyz=False):
     """Canonical moves from rs274's standard output (see module docstring);
-    ``rotary``: each straight move also carries C (degrees) as a 6th item."""
+    ``rotary``: each straight move also carries C (degrees) as a 6th item;
+    ``xyz``: (kind, x, y, z, feed, dwell) for mill-style programs."""
     moves = []
+    y = 0.0
     x = z = 0.0  # the interpreter starts at the origin
     feed = None
     for raw in output.splitlines():
@@ -104,15 +106,18 @@ def parse_canonical(output, rotary=False):
             raise RS274Error("rs274 printed a line that is not a canonical call", line=raw.strip(), output=output)
         name, args = m.group(1), m.group(2)
         if name == "STRAIGHT_TRAVERSE":
-            x, _, z = _numbers(args, 6, raw)[:3]
-            moves.append(("G0", x, z, None, 0.0) + ((_numbers(args, 6, raw)[5],) if rotary else ()))
+            x, y, z = _numbers(args, 6, raw)[:3]
+            move = ("G0", x, y, z, None, 0.0) if xyz else ("G0", x, z, None, 0.0)
+            moves.append(move + ((_numbers(args, 6, raw)[5],) if rotary else ()))
         elif name == "STRAIGHT_FEED":
-            x, _, z = _numbers(args, 6, raw)[:3]
-            moves.append(("G1", x, z, feed, 0.0) + ((_numbers(args, 6, raw)[5],) if rotary else ()))
+            x, y, z = _numbers(args, 6, raw)[:3]
+            move = ("G1", x, y, z, feed, 0.0) if xyz else ("G1", x, z, feed, 0.0)
+            moves.append(move + ((_numbers(args, 6, raw)[5],) if rotary else ()))
         elif name == "SET_FEED_RATE":
             feed = _numbers(args, 1, raw)[0]
         elif name == "DWELL":
-            moves.append(("G4", x, z, feed, _numbers(args, 1, raw)[0]))
+            seconds = _numbers(args, 1, raw)[0]
+            moves.append(("G4", x, y, z, feed, seconds) if xyz else ("G4", x, z, feed, seconds))
         elif name == "ARC_FEED":
             # XZ plane: first_end (Z), second_end (X), first_axis, second_axis, rotation, ...
             values = _numbers(args, 5, raw)
@@ -126,9 +131,12 @@ def tool_table_text(tools):
     return "".join("T%d P%d Z0 ;\n" % (t, t) for t in sorted({int(t) for t in tools}))
 
 
-def run_rs274(program_text, timeout=60, tool_table=None, rotary=False):
+def run_rs274(program_text, timeout=60, tool_table=None, files=None, xyz=False, rotary=False):
     """Interpret ``program_text`` with rs274 and return its canonical moves.
 
+    ``files``: {name: text} written beside the program (named subroutines
+    ``o<name> call`` are looked up there, e.g. ``dress12.ngc``); ``xyz``: moves
+    as (kind, x, y, z, feed, dwell) (see parse_canonical).
     ``tool_table``: None (default) runs with an empty tool table, in which rs274
     refuses every T word; an iterable of tool numbers gives a table holding
     them (see tool_table_text); a str is the table's text as is. ``rotary``:
@@ -149,6 +157,9 @@ def run_rs274(program_text, timeout=60, tool_table=None, rotary=False):
             f.write(program_text if program_text.endswith("\n") else program_text + "\n")
         with open(tbl, "w") as f:
             f.write(table)
+        for name, text in (files or {}).items():
+            with open(os.path.join(tmp, name), "w") as f:
+                f.write(text)
         # rs274 keeps its tool table in $HOME/.tool.mmap, created with
         # O_TRUNC and mapped shared: two runs with the same HOME (parallel
         # tests, another shell) truncate each other's map and die of SIGBUS.
@@ -169,7 +180,7 @@ def run_rs274(program_text, timeout=60, tool_table=None, rotary=False):
         message = errors[0].strip()
         line = errors[1].strip() if len(errors) > 1 else None
         raise RS274Error(message, line=line, output=output + proc.stderr)
-    moves = parse_canonical(output, rotary)
+    moves = parse_canonical(output, rotary, xyz)
     if proc.returncode != 0:
         if proc.returncode < 0:
             how = "was killed by signal %d" % -proc.returncode

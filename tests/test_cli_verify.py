@@ -26,6 +26,8 @@ EXAMPLE_OPTIONS = {
     "haas_g75.nc": ["--dialect", "haas", "--tool-width", "3"],
     "seed_cycle93.mpf": ["--dialect", "sinumerik", "--tool-table", TOOLS],
 }
+# Mill-style examples (a grinder's X/Y/Z): verify and plot refuse them with one line (no turned section)
+MILL_EXAMPLES = {"ab9_g83.nc": ["--dialect", "ab9grind"]}
 SHARP_3MM = ["--dialect", "fanuc", "--tool-width", "3", "--tool-radius", "0"]
 
 # One groove 3 mm wide, 5 mm deep per side (X50 -> X40 at Z-10), pecked in
@@ -77,7 +79,20 @@ def write(tmp_path, text, name="part.nc"):
 
 def test_every_example_is_listed():
     programs = {os.path.basename(p) for p in glob.glob(os.path.join(EXAMPLES, "*")) if not p.endswith(".tbl")}
-    assert programs == set(EXAMPLE_OPTIONS)
+    assert programs == set(EXAMPLE_OPTIONS) | set(MILL_EXAMPLES)
+
+
+@pytest.mark.parametrize("command", ["verify", "plot"])
+@pytest.mark.parametrize("name", sorted(MILL_EXAMPLES))
+def test_mill_style_programs_are_refused_in_one_line(tmp_path, command, name):
+    out = ["-o", str(tmp_path / "out.svg")] if command == "plot" else []
+    path = os.path.join(EXAMPLES, name)
+    result = run(command, path, *MILL_EXAMPLES[name], *out)
+    assert result.returncode == 2
+    assert result.stderr.decode().strip().splitlines() == [
+        "%s:0: verify and plot check turning programs (the lathe's XZ section); %s programs are mill-style "
+        "(X/Y/Z)" % (path, MILL_EXAMPLES[name][1])]
+    assert not os.listdir(tmp_path)
 
 
 @pytest.mark.parametrize("name", sorted(EXAMPLE_OPTIONS))

@@ -25,6 +25,7 @@ def test_every_input_control_calls_its_grooving_cycles():
     assert calls == {
         "sinumerik": ["CYCLE93"],
         "ab9": ["G76", "G77"],
+        "ab9grind": ["G83", "G83.1"],
         "fanuc": ["G74", "G75"],
         "haas": ["G74", "G75"],
         "gsk": ["G7.1", "G74", "G75"],

@@ -175,6 +175,7 @@ class InputControl:
     dwell_unsupported: str = ""  # when set, G4 is refused with this message
     cycle_keeps_motion: bool = False  # after a cycle the motion mode is the one before it (group 00)
     program_numbers: bool = True  # an O number may name the program
+    mill: bool = False  # mill-style programs (a grinder's X/Y/Z): X plain, Y words, output on the targets' mill twins
 
     def cycles(self) -> Tuple[CycleEntry, ...]:
         """The registered cycles of this control."""
@@ -204,6 +205,16 @@ class InputControl:
 
 
 _PLAIN = frozenset("XZFSTMGIK")
+
+_GRINDER_AXES = "the grinder cycles' axes are fixed (X reciprocation, Y plunge, Z crossover): not translated"
+_AB9_GRINDER_CODES = {
+    **{key: code for key, code in _AB9_CODES.items() if key not in ("7", "8", "96", "97")},
+    "2": GCode(REFUSED, "arcs (G02/G03) in a grinder program are not translated"),
+    "3": GCode(REFUSED, "arcs (G02/G03) in a grinder program are not translated"),
+    "17": GCode(REFUSED, "plane selection: " + _GRINDER_AXES),
+    "18": GCode(REFUSED, "plane selection: " + _GRINDER_AXES),
+    "19": GCode(REFUSED, "plane selection: " + _GRINDER_AXES),
+}
 
 _FANUC = InputControl(
     name="fanuc",
@@ -244,6 +255,16 @@ INPUT_CONTROLS: Dict[str, InputControl] = {
             g_codes=_AB9_CODES,
             plain_letters=_PLAIN | {"R"},
             dwell_unsupported="G04: the 9/Series dwell word is not documented here; not translated",
+        ),
+        InputControl(
+            name="ab9grind",
+            maker="Allen-Bradley",
+            help="Allen-Bradley 9/Series grinder (G83/G83.1 plunge surface grinding; X/Y/Z, output mill-style "
+            "with G17; G20/G21, G90/G91, G94/G95)",
+            g_codes=_AB9_GRINDER_CODES,
+            plain_letters=frozenset("XYZFSTMG"),
+            dwell_unsupported="G04: the 9/Series dwell word is not documented here; not translated",
+            mill=True,
         ),
         _FANUC,
         replace(  # a Fanuc-like lathe that reads the dwell P with or without a decimal point

@@ -1,7 +1,7 @@
 """The modal state of an input program: what the reader knows after each block."""
 
 from dataclasses import dataclass, field
-from typing import Optional, Set
+from typing import Dict, Optional, Set
 
 from .moves import MachineState
 from .reader import Word
@@ -19,6 +19,7 @@ class ModalState:
     x: Optional[float] = None
     z: Optional[float] = None
     c: Optional[float] = None  # the rotary C axis in degrees (GSK), None = unknown
+    y: Optional[float] = None  # mill-style programs (InputControl.mill)
     motion: Optional[str] = None  # RAPID, FEED, "G2", "G3"
     incremental: bool = False  # G91 (Siemens, AB)
     diameter: bool = True  # X words are diameters
@@ -33,6 +34,9 @@ class ModalState:
     speed_limit: Optional[float] = None  # G50 S / LIMS=
     tool: Optional[int] = None
     retract_e: Optional[Word] = None  # Fanuc "G75 R(e)" / "G74 R(e)"
+    # what a cycle with a program memory (cycle class MEMORY, e.g. G83) left for the next one: key -> words;
+    # replaced, never changed in place, so a block-delete line that changes it makes it ambiguous
+    cycle_memory: Dict[str, Dict[str, float]] = field(default_factory=dict)
     ended: bool = False
     ambiguous: Set[str] = field(default_factory=set)  # items a block-delete '/' line may have changed
 
@@ -51,9 +55,10 @@ class ModalState:
             metric=self.metric,
             feed_per_rev=bool(self.feed_per_rev),
             c=self.c,
+            y=self.y,
         )
 
 
 # the items a block-delete line makes ambiguous when it changes them
-TRACKED = ("x", "z", "motion", "incremental", "diameter", "diam90", "metric", "siemens_g70", "feed_per_rev", "feed",
-           "spindle", "spindle_dir", "css", "speed_limit", "tool", "retract_e", "c")
+TRACKED = ("x", "y", "z", "motion", "incremental", "diameter", "diam90", "metric", "siemens_g70", "feed_per_rev",
+           "feed", "spindle", "spindle_dir", "css", "speed_limit", "tool", "retract_e", "cycle_memory", "c")

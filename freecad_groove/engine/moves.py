@@ -14,15 +14,17 @@ from .errors import CycleError
 RAPID = "G0"
 FEED = "G1"
 DWELL = "G4"
+DRESS = "dress"  # a call of the wheel's dress subprogram (grinding cycles): p = its program number
 
 
 class Move(NamedTuple):
     """One expanded move of the tool's reference corner.
 
-    kind  RAPID, FEED or DWELL.
+    kind  RAPID, FEED, DWELL or DRESS (a dress subprogram call, at the
+          position held; each target writes its own subprogram call).
     x, z  target (radius, absolute); for DWELL the position held.
     f     feed for FEED moves, None = the feed already in force.
-    p     dwell time in seconds for DWELL, else 0.
+    p     dwell time in seconds for DWELL, the program number for DRESS, else 0.
     y     target Y of a cycle on a machine with a Y axis (mill-style
           programs; X is then a plain coordinate, not a radius); None: the
           axis is not moved (every lathe cycle).
@@ -120,3 +122,4 @@ class MachineState:
     metric: bool = True
     feed_per_rev: Optional[bool] = False
     c: Optional[float] = None  # the rotary C axis in degrees (GSK G7.1); None: unknown or no C axis
+    y: Optional[float] = None  # mill-style programs (grinders): the Y position; None on a lathe or unknown

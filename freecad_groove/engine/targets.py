@@ -17,6 +17,17 @@ program is read from is the reader's business.) Two targets:
                 block, ``G98``/``G99`` feed per minute / per revolution, ``%`` at
                 both ends, optional ``O`` number, end ``M30``.
 
+Mill style: ``"linuxcnc-mill"`` and ``"fanuc-mill"``, the twins of the two
+targets for mill-style programs (a grinder's X/Y/Z, ``InputControl.mill``;
+chosen by the translator, not by ``--to``): ``G17`` instead of ``G18 G7``
+(Fanuc: ``G17 G90 G40`` after the units block), X written as is (not a
+diameter), Y words, Fanuc feed modes ``G94``/``G95``; a ``DRESS`` move is the
+dress program's call: ``o<dressN> call`` (LinuxCNC: a named subroutine file
+``dressN.ngc``), ``M98 PN`` (Fanuc). After the call the output's position,
+motion and feed are unknown (the dress program moves the wheel): the next
+move writes all of them. A lathe target refuses a move with ``y`` set and a
+dress call.
+
 Choices (the manuals leave them open):
 
 * Modal output: G0/G1 is written only when the motion changes; X and Z only
@@ -57,7 +68,7 @@ from dataclasses import dataclass, replace
 from typing import Dict, Iterable, List, Optional
 
 from .errors import ProgramError
-from .moves import DWELL, FEED, RAPID, MachineState, Move
+from .moves import DRESS, DWELL, FEED, RAPID, MachineState, Move
 from .numbers import MAX_DWELL_SECONDS, MAX_WORD, format_decimal
 
 __all__ = [
@@ -68,6 +79,7 @@ __all__ = [
     "write_program",
     "comment",
     "format_number",
+    "mill_target",
     "target_spec",
 ]
 
@@ -96,6 +108,8 @@ class TargetSpec:
     fanuc_style: bool = False  # "%" lines, O number, G18 implied, units and G50 alone in their
     # block, two-digit M codes, whole S words, N up to 99999
     c_feed: Optional[str] = None  # writes the rotary C axis, with F read as C_FEED_*; None: no C axis
+    mill: bool = False  # mill style: G17, X a plain coordinate (not a diameter), Y words, dress calls
+    dress_call: str = ""  # the subprogram call of a dress program, "%d" its number (mill style)
 
 
 SPECS = {
@@ -124,13 +138,27 @@ SPECS = {
 SPECS["linuxcnc-c"] = replace(SPECS["linuxcnc"], name="linuxcnc-c", c_feed=C_FEED_LINEAR)
 SPECS["fanuc-c"] = replace(SPECS["fanuc"], name="fanuc-c", c_feed=C_FEED_COMPOSITE)
 
+# Mill-style twins of the targets (see "Mill style" in the module notes): the
+# translator writes them for an input control whose programs are mill-style
+# (InputControl.mill), so ``--to linuxcnc`` of a grinder program is a mill program.
+MILL_TARGETS = {"linuxcnc": "linuxcnc-mill", "fanuc": "fanuc-mill"}
+SPECS["linuxcnc-mill"] = replace(SPECS["linuxcnc"], name="linuxcnc-mill", mill=True, dress_call="o<dress%d> call")
+SPECS["fanuc-mill"] = replace(SPECS["fanuc"], name="fanuc-mill", feed_modes={False: "G94", True: "G95"}, mill=True,
+                              dress_call="M98 P%d")
+
 
 def target_spec(target: str) -> TargetSpec:
-    """The TargetSpec of ``target``; ValueError when unknown."""
+    """The TargetSpec of ``target`` (a name of TARGETS or its mill twin); ValueError when unknown."""
     try:
         return SPECS[target]
     except KeyError:
         raise ValueError("unknown output target %r (known: %s)" % (target, ", ".join(TARGETS))) from None
+
+
+def mill_target(target: str) -> str:
+    """The mill-style twin of ``target`` ("linuxcnc" -> "linuxcnc-mill"); itself when it is one."""
+    target_spec(target)
+    return target if SPECS[target].mill else MILL_TARGETS[target]
 
 
 def format_number(value: float, digits: int = 4) -> str:
@@ -174,6 +202,8 @@ class Writer:
         z: Optional[float] = None,
         feed: Optional[float] = None,
         motion: Optional[str] = None,
+        y: Optional[float] = None,
+        c: Optional[float] = None,
     ) -> None:
         self.spec = target_spec(target)
         self.target = target
@@ -181,12 +211,12 @@ class Writer:
         self.motion = motion
         self.default_feed: Optional[float] = None
         self.set_units(metric)
-        self.sync(x, z, feed, motion)
+        self.sync(x, z, feed, motion, y, c)
 
     @classmethod
     def from_state(cls, state: MachineState, target: str = "linuxcnc", motion: Optional[str] = None) -> "Writer":
         """A writer whose output is already at ``state`` (position, feed, units)."""
-        return cls(target, state.metric, state.feed_per_rev, state.x, state.z, state.feed, motion)
+        return cls(target, state.metric, state.feed_per_rev, state.x, state.z, state.feed, motion, state.y, state.c)
 
     # -- modal state ----------------------------------------------------------
 
@@ -194,7 +224,7 @@ class Writer:
         """Units of the numbers from now on; the written position is forgotten."""
         self.metric = bool(metric)
         self.digits = self.spec.digits_mm if self.metric else self.spec.digits_inch
-        self.x_text = self.z_text = self.f_text = self.c_text = None
+        self.x_text = self.y_text = self.z_text = self.f_text = self.c_text = None
 
     def sync(
         self,
@@ -202,10 +232,13 @@ class Writer:
         z: Optional[float] = None,
         feed: Optional[float] = None,
         motion: Optional[str] = None,
+        y: Optional[float] = None,
         c: Optional[float] = None,
     ) -> None:
-        """The output is at radius ``x``, ``z`` (C at ``c`` degrees) with ``feed`` in force (None = unknown)."""
+        """The output is at radius ``x`` (mill style: X ``x``), ``y``, ``z``
+        (C at ``c`` degrees) with ``feed`` in force (None = unknown)."""
         self.x_text = None if x is None else self.x_word(x)
+        self.y_text = None if y is None else self.z_word(y)
         self.z_text = None if z is None else self.z_word(z)
         self.f_text = None if feed is None else self.f_word(feed)
         self.c_text = None if c is None or not self.spec.c_feed else self.z_word(c)
@@ -214,8 +247,8 @@ class Writer:
     # -- words ------------------------------------------------------------------
 
     def x_word(self, radius: float) -> str:
-        """The X word text (a diameter) for a radius."""
-        return format_number(radius * 2.0, self.digits)
+        """The X word text (a diameter) for a radius; mill style: X as is."""
+        return format_number(radius if self.spec.mill else radius * 2.0, self.digits)
 
     def z_word(self, z: float) -> str:
         """The Z word text."""
@@ -268,7 +301,8 @@ class Writer:
     # -- blocks -------------------------------------------------------------------
 
     def header(self, title: Optional[str] = None, program_number: Optional[int] = None) -> List[str]:
-        """The lines that open a whole program (modes: G18, diameter X, units, feed mode)."""
+        """The lines that open a whole program (modes: G18 and diameter X, mill style
+        G17; units, feed mode)."""
         out = []
         s = self.spec
         feed_mode = [] if self.feed_per_rev is None else [s.feed_modes[bool(self.feed_per_rev)]]
@@ -280,9 +314,10 @@ class Writer:
             elif title:
                 out.append(comment(title))
             out.append(s.units[self.metric])
-            out.append(" ".join(["G40"] + feed_mode))
+            out.append(" ".join((["G17", "G90"] if s.mill else []) + ["G40"] + feed_mode))
         else:
-            out.append(" ".join(["G18", "G7", s.units[self.metric], "G90", "G91.1", "G40"] + feed_mode))
+            plane = ["G17"] if s.mill else ["G18", "G7"]
+            out.append(" ".join(plane + [s.units[self.metric], "G90", "G91.1", "G40"] + feed_mode))
             if title:
                 out.append(comment(title))
         return out
@@ -305,11 +340,13 @@ class Writer:
         return None
 
     def check_axes(self, move: Move) -> None:
-        """ProgramError when ``move`` sets an axis this lathe output has no
-        word for (Y, C): never drop a motion silently."""
+        """ProgramError when ``move`` sets an axis this output has no word for
+        (a lathe: Y, C; mill style: C): never drop a motion silently."""
         extra = [name for name, value in zip(("Y", "C"), move[5:]) if value is not None]
         if self.spec.c_feed:
             extra = [name for name in extra if name != "C"]
+        if self.spec.mill and "Y" in extra:
+            extra.remove("Y")
         if extra:
             with_c = [name for name in TARGETS if SPECS[name].c_feed] if extra == ["C"] else []
             raise ProgramError("a move in %s cannot be written for %s: its output has no %s axis%s"
@@ -329,38 +366,63 @@ class Writer:
         minutes = linear / f if linear > 0 else turn / f
         return math.hypot(linear, turn) / minutes if minutes > 0 else f
 
+    def dress(self, program: int) -> str:
+        """The call of the dress subprogram ``program`` (mill style only)."""
+        if not self.spec.dress_call:
+            raise ProgramError("a dress program call cannot be written for %s: a lathe output" % self.spec.name)
+        return self.spec.dress_call % int(program)
+
+    def _dress_here(self, words: List[str], program: int) -> str:
+        """The dress call at the position held; afterwards the output's position,
+        motion and feed are unknown (the dress program moves the wheel), so the
+        next move writes every axis, its motion code and its F."""
+        call = self.dress(program)
+        if words:
+            raise ProgramError("a dress call away from the position held (%s): a move must go there first"
+                               % " ".join(words))
+        self.x_text = self.y_text = self.z_text = self.f_text = self.motion = None
+        return call
+
+    def _written_axes(self, move: Move) -> List[str]:
+        """The axis words of ``move`` whose written text changes (X, Z; mill
+        style X, Y, Z; with a C axis X, Z, C); the written position is updated.
+        check_axes has refused an axis the output has no word for."""
+        x, z = move[1], move[2]
+        y = move[5] if len(move) > 5 else None
+        c = move[6] if len(move) > 6 else None
+        scale = 1.0 if self.spec.mill else 2.0
+        if not all(-MAX_WORD < value < MAX_WORD for value in (x, z, y, c) if value is not None):
+            raise ProgramError("move to X%r Z%r cannot be written (not a number below %g)" % (x * scale, z,
+                                                                                              MAX_WORD))
+        words = []
+        for letter, value, name in (("X", x * scale, "x_text"), ("Y", y, "y_text"), ("Z", z, "z_text"),
+                                    ("C", c, "c_text")):
+            if value is None:
+                continue
+            text = format_decimal(value, self.digits)
+            if text != getattr(self, name):
+                words.append(letter + text)
+                setattr(self, name, text)
+        return words
+
     def write(self, moves: Iterable[Move], prefix: str = "") -> List[str]:
         """Lines for ``moves`` (moves.Move or equal tuples); updates the modal state.
 
         ``prefix`` is put in front of every line (``"/"`` for block delete).
         """
         out: List[str] = []
-        digits = self.digits
         for move in moves:
             kind, x, z, f, p = move[:5]
             self.check_axes(move)
             if kind == DWELL:
                 out.append(prefix + self.dwell(p))
                 continue
-            if not (-MAX_WORD < x < MAX_WORD and -MAX_WORD < z < MAX_WORD):
-                raise ProgramError("move to X%r Z%r cannot be written (not a number below %g)" % (x * 2.0, z,
-                                                                                                  MAX_WORD))
             if move[6:] and move[6] is not None:
                 f = self._c_feed(move)  # from the position written before the move
-            words = []
-            text = format_decimal(x * 2.0, digits)
-            if text != self.x_text:
-                words.append("X" + text)
-                self.x_text = text
-            text = format_decimal(z, digits)
-            if text != self.z_text:
-                words.append("Z" + text)
-                self.z_text = text
-            if move[6:] and move[6] is not None:
-                text = format_decimal(move[6], digits)
-                if text != self.c_text:
-                    words.append("C" + text)
-                    self.c_text = text
+            words = self._written_axes(move)
+            if kind == DRESS:
+                out.append(prefix + self._dress_here(words, p))
+                continue
             f_text = self._feed_text(kind, f, self.f_text)
             if f_text is not None:
                 self.f_text = f_text
@@ -420,7 +482,7 @@ def write_program(
         else:
             text = format_number(spindle, 4)
         lines.append(("G97 S%s M03" if writer.spec.fanuc_style else "G97 S%s M3") % text)
-    lines.extend(writer.write([Move(RAPID, state.x, state.z)]))
+    lines.extend(writer.write([Move(RAPID, state.x, state.z, y=state.y)]))
     lines.extend(writer.write(moves))
     lines.extend(writer.footer())
     return "\n".join(lines) + "\n"

@@ -129,7 +129,8 @@ class TranslatorBase:
             None if "z" in ambiguous else state.z,
             None if "feed" in ambiguous else state.feed,
             self.writer.motion,
-            None if "c" in ambiguous else state.c,
+            y=None if "y" in ambiguous else state.y,
+            c=None if "c" in ambiguous else state.c,
         )
 
     # -- mode G codes -------------------------------------------------------------
@@ -162,6 +163,8 @@ class TranslatorBase:
                 state.x *= factor
             if state.z is not None:
                 state.z *= factor
+            if state.y is not None:
+                state.y *= factor
             state.feed = None
             state.metric = units.metric
         self._defined |= {"metric", "siemens_g70"}

@@ -73,7 +73,10 @@ class CycleTranslation(TranslatorBase):
             self._fail(exc.message)
         self._check_cycle_start(call.name)
         start = self.state.machine_state()
+        memory_key = getattr(entry.cycle_class, "MEMORY", "")
         try:
+            if memory_key:
+                model = self._with_memory(memory_key, model, start)
             moves = model.expand(start, settings)
             self._collect_warnings(entry, model, start, settings)
         except CycleError as exc:
@@ -190,6 +193,15 @@ class CycleTranslation(TranslatorBase):
         text = "%s %s%s\n%s" % (entry.name, retract.letter, retract.text, call.text)
         return call._replace(text=text)
 
+    def _with_memory(self, key: str, model: object, start: MachineState) -> object:
+        """A cycle with a program memory (class MEMORY, G83): the words it omits
+        from the previous cycle of its kind; what it leaves for the next one."""
+        self._not_ambiguous("cycle_memory", why="the words %s takes from the cycle before" % model.NAME)
+        model = model.with_earlier(self.state.cycle_memory.get(key, {}), start)
+        self.state.cycle_memory = dict(self.state.cycle_memory, **{key: model.remembered(start)})
+        self._defined.add("cycle_memory")
+        return model
+
     def _cycle_settings(self, entry: CycleEntry) -> Settings:
         """The settings the cycle runs with: one that NEEDS_BLADE gets the blade of
         the tool in force (tool_table.blade_for), or is refused."""
@@ -219,9 +231,10 @@ class CycleTranslation(TranslatorBase):
     def _check_cycle_start(self, name: str) -> None:
         """A cycle needs a known start point, feed mode and (per revolution) spindle."""
         state = self.state
-        if state.x is None or state.z is None:
-            self._fail("%s needs its start point: program an absolute X and Z before the call" % name)
-        self._not_ambiguous("x", "z", "feed", "feed_per_rev", "metric", "diameter", "diam90", "incremental",
+        if state.x is None or state.z is None or (self.control.mill and state.y is None):
+            self._fail("%s needs its start point: program an absolute %s before the call"
+                       % (name, "X, Y and Z" if self.control.mill else "X and Z"))
+        self._not_ambiguous("x", "y", "z", "feed", "feed_per_rev", "metric", "diameter", "diam90", "incremental",
                             why=name)
         if state.feed_per_rev is None:
             self._fail("%s before the feed mode is programmed (%s)" % (name, self.control.feed_mode_codes))
@@ -239,6 +252,9 @@ class CycleTranslation(TranslatorBase):
             if moves[-1].c is not None:
                 state.c = float(moves[-1].c)
                 self._defined.add("c")
+            if moves[-1].y is not None:
+                state.y = float(moves[-1].y)
+                self._defined.add("y")
         if feeds:
             state.feed = float(feeds[-1])
             self._defined.add("feed")

@@ -72,8 +72,8 @@ class MachineTranslation(TranslatorBase):
         }
         selection = readers[self.control.tool_words](tool_word, edge_word)
         state = self.state
-        state.x = state.z = None
-        self._defined |= {"x", "z", "tool"}
+        state.x = state.y = state.z = None
+        self._defined |= {"x", "y", "z", "tool"}
         if selection.tool is not None:
             state.tool = selection.tool
         if self.fanuc_output:
@@ -237,7 +237,7 @@ class MachineTranslation(TranslatorBase):
             output.append(self.writer.spec.end)
             state.ended = True
             state.spindle_dir = None
-            state.x = state.z = None
+            state.x = state.y = state.z = None
 
     def _m_text(self, code: int) -> str:
         return ("M%02d" if self.fanuc_output else "M%d") % code

@@ -13,7 +13,8 @@ from .translate_base import Groups, TranslatorBase
 
 __all__ = ["AxisTarget", "MotionTranslation"]
 
-_AXES = {"X", "Z", "U", "W", "C"}  # C: the rotary axis of the controls that read it (GSK), G0 only
+# Y only in mill-style programs; C: the rotary axis of the controls that read it (GSK), G0 only
+_AXES = {"X", "Y", "Z", "U", "W", "C"}
 _ARC_WORDS = {"I", "K", "R", "CR"}
 
 
@@ -24,6 +25,8 @@ class AxisTarget(NamedTuple):
     z: Optional[float]
     has_x: bool
     has_z: bool
+    y: Optional[float] = None
+    has_y: bool = False
 
 
 class MotionTranslation(TranslatorBase):
@@ -54,13 +57,15 @@ class MotionTranslation(TranslatorBase):
             words.append(writer.code(kind))
         if target.has_x:
             words.append("X" + writer.x_word(target.x))
+        if target.has_y:
+            words.append("Y" + writer.z_word(target.y))
         if target.has_z:
             words.append("Z" + writer.z_word(target.z))
         words.extend(arc)
         if block.get("C") is not None:
             words.append(self._c_word(block.get("C"), kind))
         output.extend(words)
-        state.x, state.z = target.x, target.z
+        state.x, state.y, state.z = target.x, target.y, target.z
         writer.motion = kind
 
     def _c_word(self, word: Word, kind: str) -> str:
@@ -135,7 +140,11 @@ class MotionTranslation(TranslatorBase):
             self._fail("X and U in one block")
         if z_word is not None and w_word is not None:
             self._fail("Z and W in one block")
-        x = z = None
+        x = y = z = None
+        y_word = block.get("Y")
+        if y_word is not None:
+            self._not_ambiguous("incremental", why="the Y word")
+            y = self._axis_value("y", y_word, False)
         if x_word is not None or u_word is not None:
             self._not_ambiguous("diameter", "diam90", "incremental", why="the X word")
             x = self._axis_value("x", x_word or u_word, u_word is not None)
@@ -143,10 +152,10 @@ class MotionTranslation(TranslatorBase):
             self._not_ambiguous("incremental", why="the Z word")
             z = self._axis_value("z", z_word or w_word, w_word is not None)
         return AxisTarget(self.state.x if x is None else x, self.state.z if z is None else z, x is not None,
-                          z is not None)
+                          z is not None, self.state.y if y is None else y, y is not None)
 
     def _axis_value(self, axis: str, word: Word, incremental_word: bool) -> float:
-        """Where ``word`` puts ``axis`` ("x": a radius, "z")."""
+        """Where ``word`` puts ``axis`` ("x": a radius (mill style: plain), "y", "z")."""
         value = self._finite_length(word)
         if axis == "x" and self.state.x_words_diameter():
             value /= 2.0

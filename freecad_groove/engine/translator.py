@@ -5,11 +5,13 @@ modal state, and translate them with every grooving cycle expanded.
                       tools=None, warnings=None) -> str
     iter_translation(text or lines, dialect, ...) -> Iterator[str]   # the same text, chunk by chunk
 
-``dialect`` is the input: "sinumerik" (CYCLE93), "ab9" (G77/G76), "fanuc"
-(two-block G75/G74), "haas" (one-block G75/G74), "gsk" (the G7.1 region up to
-G7.1 C0, read block by block, expanded at its cancel block; G75/G74).
-``target`` is "linuxcnc", "fanuc", or with a C axis "linuxcnc-c", "fanuc-c"
-(see targets.py). Anything the reader cannot translate faithfully
+``dialect`` is the input: "sinumerik" (CYCLE93), "ab9" (G77/G76), "ab9grind"
+(the 9/Series grinder's G83/G83.1; mill-style: X/Y/Z), "fanuc" (two-block
+G75/G74), "haas" (one-block G75/G74), "gsk" (the G7.1 region up to G7.1 C0,
+read block by block, expanded at its cancel block; G75/G74). ``target`` is
+"linuxcnc", "fanuc", or with a C axis "linuxcnc-c", "fanuc-c" (see
+targets.py); a mill-style program is written on its mill twin. Anything the
+reader cannot translate faithfully
 raises errors.ProgramError with the 1-based line number in ``.line``; a cycle's
 CycleError becomes a ProgramError on the cycle's line with the cycle's message.
 What a cycle cannot do as programmed, but runs anyway, is a warning
@@ -125,7 +127,7 @@ from .modal import TRACKED, ModalState
 from .moves import MachineState
 from .reader import Block, parse_block
 from .settings import DEFAULT_SETTINGS, Settings
-from .targets import MAX_LINE, Writer, comment, target_spec
+from .targets import MAX_LINE, Writer, comment, mill_target, target_spec
 from .tool_table import ToolTable
 from .translate_base import ActiveCode, Groups
 from .translate_cycle import CycleTranslation
@@ -151,6 +153,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
                  source_name: str = "PROGRAM", start: Optional[MachineState] = None,
                  tools: Optional[ToolTable] = None) -> None:
         self.control = input_control(dialect)  # raises on an unknown dialect
+        if self.control.mill:  # a grinder program: its mill-style twin (G17, X/Y/Z)
+            target = mill_target(target)
         self.fanuc_output = target_spec(target).fanuc_style  # target_spec raises on an unknown target
         self.dialect = dialect
         self.settings = settings
@@ -164,6 +168,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
             state.incremental = bool(start.incremental)
             state.metric = bool(start.metric)
             state.feed_per_rev = start.feed_per_rev
+        if self.control.mill:
+            state.diameter = False  # X is a plain coordinate
         self.state = state
         self.start_metric = state.metric
         self.start_feed_per_rev = state.feed_per_rev
@@ -204,7 +210,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         if block.delete:
             changed = {name for name in TRACKED if getattr(state, name) != before[name]}
             if "metric" in changed:
-                changed |= {"x", "z", "feed"}
+                changed |= {"x", "y", "z", "feed"}
             state.ambiguous |= changed
             self.writer.motion = None  # the output's motion depends on the switch too
         else:
@@ -278,8 +284,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
             output.append("G18")
         if OFFSET in groups:
             output.append(groups[OFFSET].value)
-            state.x = state.z = None
-            self._defined |= {"x", "z"}
+            state.x = state.y = state.z = None
+            self._defined |= {"x", "y", "z"}
         if COMPENSATION in groups:
             output.append("G40")
         feed_word = self._feed_word(block)

@@ -98,7 +98,7 @@ def read_block(text: str, cycle: str, letters: Sequence[str], counted: Sequence[
         block = block[:-1]
     match = _BLOCK_NUMBER.match(block)
     pos = match.end() if match else 0
-    code = int(cycle[1:])
+    code = float(cycle[1:])  # "G83.1": a code with a decimal is written with it
     words = {}
     seen_g = False
     while pos < len(block):
@@ -110,7 +110,7 @@ def read_block(text: str, cycle: str, letters: Sequence[str], counted: Sequence[
         if too_many_digits(number):
             raise CycleError(letter, shortened(number), DIGITS_RULE, cycle=cycle)
         if letter == "G":
-            if seen_g or "." in number or int(number) != code:
+            if seen_g or ("." in number) != ("." in cycle) or float(number) != code:
                 raise CycleError("G", float(number), "only %s may be programmed in this block" % cycle, cycle=cycle)
             seen_g = True
             continue
