@@ -65,6 +65,12 @@ def open_on_face(doc, model, sub):
     return wait_for(lambda: open_panel(doc), what="the Groove panel on %s" % sub)
 
 
+def cancel_shown(panel):
+    """Cancel is in the panel's button box and shown (the first panel of a session takes a moment)."""
+    button = panel.buttonBox.button(QtGui.QDialogButtonBox.Cancel)
+    return button is not None and button.isVisible()
+
+
 def assert_fields(page, expected, where):
     for prop, value in expected.items():
         widget = page.field(prop)
@@ -100,8 +106,7 @@ def test_ticking_groove_from_the_model_shows_the_modelled_values_on_every_face(c
             position = {"Position": groove.values["Position"]}
             assert_fields(page, {**expected, **position}, (case, sub))
             before = list(job.Operations.Group)
-            cancel = panel.buttonBox.button(QtGui.QDialogButtonBox.Cancel)
-            wait_for(lambda: cancel is not None and cancel.isVisible(), what="Cancel on %s %s" % (case, sub))
+            wait_for(lambda p=panel: cancel_shown(p), what="Cancel on %s %s" % (case, sub))
             task_button(panel, QtGui.QDialogButtonBox.Cancel).click()
             wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
             process(0.05)
