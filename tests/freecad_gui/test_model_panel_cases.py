@@ -23,8 +23,9 @@ from PySide import QtGui
 
 from freecad_groove import make_groove
 from freecad_groove.freecad.groove_properties import CHAMFER_MEASURES
-from freecad_groove.freecad.model_grooves import MODEL_VALUES, read_model_groove
+from freecad_groove.freecad.model_grooves import MODEL_HINT, MODEL_VALUES, read_model_groove
 from freecad_groove.gui import COMMAND, task_panel
+from freecad_groove.gui.widgets import ERROR_LABEL
 
 LENGTH_TOL = 0.001  # mm
 ANGLE_TOL = 0.01  # degrees
@@ -135,5 +136,31 @@ def test_ok_on_an_untouched_panel_keeps_the_models_unrounded_values():
         doc.recompute()
         assert list(op.ModelOverrides) == [] and list(op.FromModel) == list(MODEL_VALUES)
         assert op.Position.Value == pytest.approx(position, abs=1e-9)
+    finally:
+        close_shop(doc)
+
+
+def test_a_corner_radius_picked_says_tick_groove_from_the_model_and_ticking_it_cuts_the_groove():
+    call = CASES["angled_radii"]
+    doc, job, model = make_gui_shop("ModelPanelHint", shape=part_shape(call))
+    try:
+        torus = next("Face%d" % (i + 1) for i, f in enumerate(model.Shape.Faces)
+                     if type(f.Surface).__name__ == "Toroid")
+        panel = open_on_face(doc, model, torus)
+        page = panel.groove_page
+        wait_for(lambda: page.replans > 0, what="the first preview")
+        assert page.error is not None and "toroid face" in str(page.error), page.error
+        assert str(page.error).endswith(MODEL_HINT), page.error
+        error_label = page.form.findChild(QtGui.QLabel, ERROR_LABEL)
+        assert 'tick "Groove from the model"' in error_label.text(), error_label.text()
+        replans = page.replans
+        page.model_box().click()
+        wait_for(lambda: page.replans > replans, what="the preview after ticking")
+        # the face is fine now; what is left is the Job's default end mill (no grooving blade yet)
+        assert page.error is None or str(page.error).startswith("ToolWidth: the blade's width is unknown"), page.error
+        assert_fields(page, expected_fields(call), ("angled_radii", torus))
+        wait_for(lambda p=panel: cancel_shown(p), what="Cancel")
+        task_button(panel, QtGui.QDialogButtonBox.Cancel).click()
+        wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
     finally:
         close_shop(doc)
