@@ -44,6 +44,15 @@ class Settings:
     # when the cycle itself has no retract parameter (per side).
     clearance: float = 1.0
 
+    # Milltronics G33/G34: the end mill's diameter (None: unknown, and the
+    # autoroutines are refused; there is no default tool).
+    mill_tool_diameter: Optional[float] = None
+
+    # Milltronics G33/G34: how far the tool rises above the depth just cut
+    # before it goes to the next depth's start, in inches (the seed's 0.1";
+    # 2.54 mm in a metric program).
+    milltronics_lift_inch: float = 0.1
+
     def retract_e(self, metric: bool = True) -> float:
         """The peck retract e in the program's units."""
         if self.peck_retract is not None:
