@@ -52,7 +52,7 @@ from ..registry import G_WORD, register
 from ..settings import DEFAULT_SETTINGS, Settings
 from .pecking import check_number, format_number
 
-__all__ = ["G33", "G34", "MilltronicsCycle"]
+__all__ = ["G31", "G32", "G33", "G34", "MilltronicsCycle"]
 
 TOLERANCE = 1e-9
 PARAMETERS = ("P150", "P151", "P152", "P153", "P154", "P155")
@@ -91,7 +91,8 @@ def _read_assignment(line: str, name: str, values: Dict[str, object]) -> None:
     values[key] = float(match.group(2))
 
 
-def _read_call(line: str, name: str, values: Dict[str, object]) -> None:
+def _read_call(line: str, cls: type, values: Dict[str, object]) -> None:
+    name = cls.NAME
     pos, seen = 0, False
     while pos < len(line):
         match = _WORD.match(line, pos)
@@ -103,15 +104,15 @@ def _read_call(line: str, name: str, values: Dict[str, object]) -> None:
             code = "G%d" % int(float(number)) if float(number).is_integer() else "G" + number
             if code == name and not seen:
                 seen = True
-            elif code == "G99":
+            elif code == "G99" and code in cls.OPTIONS:
                 values["G99"] = True
-            elif code in COMPENSATION:
+            elif code in COMPENSATION and code in cls.OPTIONS:
                 if values.get("compensation") not in (None, code):
                     raise CycleError(code, None, "G41 and G42 in one block: program one", cycle=name)
                 values["compensation"] = code
             else:
                 raise CycleError(code, None, "may not share the %s block" % name, cycle=name)
-        elif letter in LETTERS and letter not in values:
+        elif letter in cls.WORDS and letter not in values:
             values[letter] = float(number)
         else:
             raise CycleError(letter, float(number), "is not a word of %s (or is given twice)" % name, cycle=name)
@@ -130,6 +131,8 @@ class MilltronicsCycle:
     MILL: ClassVar[bool] = True
     COUNTED: ClassVar[tuple] = ()
     WORDS: ClassVar[tuple] = LETTERS  # the call's letter words; the P parameters come from assignment blocks
+    OPTIONS: ClassVar[tuple] = ("G99",) + COMPENSATION  # the G codes the call block may hold
+    PARAMETERS: ClassVar[tuple] = PARAMETERS  # set by assignment blocks (the translator keeps them under MEMORY)
 
     R: Optional[float] = None
     Z: Optional[float] = None
@@ -157,7 +160,7 @@ class MilltronicsCycle:
             if not _ASSIGNMENT.match(line):
                 raise CycleError("block", line, "only P assignments (P151=1) may come before the call", cycle=cls.NAME)
             _read_assignment(line, cls.NAME, values)
-        _read_call(lines[-1], cls.NAME, values)
+        _read_call(lines[-1], cls, values)
         return cls(**values).validate()
 
     def emit(self) -> str:
@@ -464,3 +467,54 @@ class G34(MilltronicsCycle):
             if size - 2 * stock < 2 * cut.radius - TOLERANCE:
                 raise CycleError("P153", stock, "the pocket less the finish stock on both walls (%s = %s) is "
                                  "smaller than the tool" % (key, format_number(size)), cycle=self.NAME)
+
+
+@register
+@dataclass(frozen=True)
+class G31(MilltronicsCycle):
+    """Milltronics ``G31``: Z rapids to the clearance plane, the last R of the program,
+    else ``Settings.milltronics_clearance_inch`` (parameter 140)."""
+
+    NAME: ClassVar[str] = "G31"
+    KEY: ClassVar[str] = "milltronics-g31"
+    ALIASES: ClassVar[tuple] = ("g31",)
+    TITLE: ClassVar[str] = "Milltronics G31 Z to the clearance position (the last R, else parameter 140)"
+    WORDS: ClassVar[tuple] = ()
+    OPTIONS: ClassVar[tuple] = ()
+    PARAMETERS: ClassVar[tuple] = ()  # reads none (the P parameters pass through its memory unchanged)
+    WORD_HELP: ClassVar[tuple] = ()
+
+    def height(self, state: MachineState, settings: Settings) -> float:
+        """The Z the block goes to, in the program's units."""
+        if self.R is not None:
+            return self.R
+        return settings.milltronics_clearance_inch * (MM_PER_INCH if state.metric else 1.0)
+
+    def note(self, state: MachineState, settings: Settings) -> str:
+        """The Z used and where it comes from, for the translated program's comment."""
+        source = "the last R" if self.R is not None else "setting milltronics_clearance_inch"
+        return "Z%s, %s" % (format_number(self.height(state, settings)), source)
+
+    def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
+        """One rapid of Z; X and Y held."""
+        if state.x is None or state.y is None:
+            raise CycleError("X", None, "the start position is not known: program X and Y before %s" % self.NAME,
+                             cycle=self.NAME)
+        return [Move(RAPID, state.x, self.height(state, settings), None, 0.0, state.y)]
+
+
+@register
+@dataclass(frozen=True)
+class G32(G31):
+    """Milltronics ``G32``: Z rapids to the tool change position, ``Settings.milltronics_tool_change_inch``."""
+
+    NAME: ClassVar[str] = "G32"
+    KEY: ClassVar[str] = "milltronics-g32"
+    ALIASES: ClassVar[tuple] = ("g32",)
+    TITLE: ClassVar[str] = "Milltronics G32 Z to the tool change position (a machine setting)"
+
+    def height(self, state: MachineState, settings: Settings) -> float:
+        return settings.milltronics_tool_change_inch * (MM_PER_INCH if state.metric else 1.0)
+
+    def note(self, state: MachineState, settings: Settings) -> str:
+        return "Z%s, setting milltronics_tool_change_inch" % format_number(self.height(state, settings))
