@@ -110,6 +110,10 @@ def test_a_metric_pocket_program():
     ("G0 X0 Y0 Z1.\nF20\nP152=1\nP155=.1\nG33 R.1 Z-.1 V-.1\n", r"5: G33 P151: must be given"),
     ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\nP155=.1\nG33 G0 R.1 Z-.1 V-.1\n", "6: G0 shares the block with the cycle"),
     ("G0 X0 Y0 Z1.\nG31 X1\n", "2: G31 X=1: is not a word of G31"),
+    ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\nP155=.1\nG91 G33 R.1 Z-.1 V-.1\n",
+     "6: G33 G91: R, Z and V are read as absolute Z: program the autoroutine in G90"),
+    ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\n/P155=.1\nG33 R.1 Z-.1 V-.1\n",
+     "6: the P parameters and the clearance plane R G33 runs with depends on a block-delete '/' line"),
 ])
 def test_errors_name_the_line_and_the_rule(text, message):
     settings = QUARTER if "tool diameter" not in message else Settings()

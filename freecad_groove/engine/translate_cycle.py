@@ -226,7 +226,8 @@ class CycleTranslation(TranslatorBase):
     def _with_memory(self, key: str, model: object, start: MachineState) -> object:
         """A cycle with a program memory (class MEMORY, G83): the words it omits
         from the previous cycle of its kind; what it leaves for the next one."""
-        self._not_ambiguous("cycle_memory", why="the words %s takes from the cycle before" % model.NAME)
+        why = getattr(model, "MEMORY_WHAT", "the words %s takes from the cycle before") % model.NAME
+        self._not_ambiguous("cycle_memory", why=why)
         model = model.with_earlier(self.state.cycle_memory.get(key, {}), start)
         self.state.cycle_memory = dict(self.state.cycle_memory, **{key: model.remembered(start)})
         self._defined.add("cycle_memory")

@@ -133,6 +133,7 @@ class MilltronicsCycle:
     WORDS: ClassVar[tuple] = LETTERS  # the call's letter words; the P parameters come from assignment blocks
     OPTIONS: ClassVar[tuple] = ("G99",) + COMPENSATION  # the G codes the call block may hold
     PARAMETERS: ClassVar[tuple] = PARAMETERS  # set by assignment blocks (the translator keeps them under MEMORY)
+    MEMORY_WHAT: ClassVar[str] = "the P parameters and the clearance plane R %s runs with"
 
     R: Optional[float] = None
     Z: Optional[float] = None
@@ -259,6 +260,9 @@ class MilltronicsCycle:
             if value is None:
                 raise CycleError(axis, None, "the start position is not known: program it before the call",
                                  cycle=self.NAME)
+        if state.incremental:
+            raise CycleError("G91", None, "R, Z and V are read as absolute Z: program the autoroutine in G90",
+                             cycle=self.NAME)
         size_x = self._require("P151", "the X size of the rectangle, P151=...")
         size_y = self._require("P152", "the Y size of the rectangle, P152=...")
         width = self._require("P155", "the cut width, P155=...")
