@@ -241,3 +241,36 @@ _amounts = st.integers(1, 99999).map(lambda n: n / 1000.0)
 def test_parse_of_emit_is_the_model(cycle, words):
     model = cycle(**words)
     assert cycle.parse(model.emit()) == model
+
+
+@hsettings(max_examples=60, deadline=None)
+@given(st.data())
+def test_generated_pockets_and_facings_cover_their_rectangle_and_stay_inside(data):
+    draw = data.draw
+    diameter = draw(st.integers(10, 50)) / 100.0
+    radius = diameter / 2
+    size_x = round(diameter + draw(st.integers(0, 300)) / 100.0, 2)
+    size_y = round(diameter + draw(st.integers(0, 300)) / 100.0, 2)
+    width = draw(st.integers(1, int(diameter * 100))) / 100.0
+    pocket = draw(st.booleans())
+    words = dict(R=0.1, Z=-0.2, V=-0.1, Q=0.1, P151=size_x, P152=size_y, P155=width,
+                 compensation=draw(st.sampled_from([None, "G41", "G42"])))
+    corner = 0.0
+    if pocket:
+        limit = min(size_x, size_y) / 2
+        corner = draw(st.sampled_from([0.0, radius, (radius + limit) / 2, limit]))
+        words["P150"] = round(corner, 3)
+        corner = words["P150"]
+        if 0 < corner < radius or corner > limit:
+            return
+    model = (G34 if pocket else G33)(**words)
+    settings = Settings(mill_tool_diameter=diameter)
+    moves = model.expand(start(), settings)
+    assert inside(moves, 1, 2, size_x / 2, size_y / 2, corner, radius)
+    area = swept(moves, -0.2, radius)
+    target = box(1 - size_x / 2, 2 - size_y / 2, 1 + size_x / 2, 2 + size_y / 2)
+    shown = max(corner, radius)
+    target = target.buffer(-shown).buffer(shown, quad_segs=64) if min(size_x, size_y) > 2 * shown else area
+    # the facing leaves the step-over's scallop at its short sides; the pocket its corners' chords
+    margin = radius - (radius ** 2 - (width / 2) ** 2) ** 0.5 if not pocket else ARC_CHORD_TOLERANCE
+    assert target.buffer(-margin - 1e-4).difference(area).area < 1e-7

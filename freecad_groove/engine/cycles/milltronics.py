@@ -27,7 +27,9 @@ row with a test), the tool an end mill of diameter ``Settings.mill_tool_diameter
   short side; the step-overs are equal and at most P155 [choice].
 - G34 [choice where not documented]: plunge at the centre; the centre line
   along the long side, then laps each the inward offset of the last lap by an
-  equal step at most P155, out to the walls less the X-Y finish stock P153,
+  equal step at most P155 (and at most 0.85 tool diameters, LAP_STEP_LIMIT,
+  so no island is left between the corners of two laps), out to the walls
+  less the X-Y finish stock P153,
   their corners those offsets of the corner radius P150 (0: cut at the tool
   radius); G41 (or none) climbs (counter-clockwise with M3), G42 runs
   clockwise. With P154 the depths stop P154 above Z and one more depth is cut
@@ -55,6 +57,9 @@ from .pecking import check_number, format_number
 __all__ = ["G31", "G32", "G33", "G34", "MilltronicsCycle"]
 
 TOLERANCE = 1e-9
+# G34's laps step out at most this many tool diameters even when P155 allows more: between two laps with
+# sharp corners, a point on the corner's bisector is left uncut once the step exceeds (1 + 1/sqrt(2)) radii
+LAP_STEP_LIMIT = 0.85
 PARAMETERS = ("P150", "P151", "P152", "P153", "P154", "P155")
 LETTERS = ("R", "Z", "V", "Q", "F")
 COMPENSATION = ("G41", "G42")
@@ -395,7 +400,7 @@ def pocket_laps(cut: Cut, stock: float, corner: float) -> List[List[Tuple[float,
     inset = min(half_x, half_y)
     spine_x, spine_y = half_x - inset, half_y - inset
     paths = [[(0.0, 0.0), (-spine_x, -spine_y), (spine_x, spine_y)]]
-    for offset in _even_steps(inset, cut.width)[1:]:
+    for offset in _even_steps(inset, min(cut.width, LAP_STEP_LIMIT * 2 * cut.radius))[1:]:
         rest = inset - offset
         paths.append(lap_points(half_x - rest, half_y - rest, max(outer_corner - rest, 0.0), cut.clockwise))
     return paths
