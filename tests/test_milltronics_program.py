@@ -103,6 +103,8 @@ def test_a_metric_pocket_program():
     ("G0 X0 Y0 Z1.\nP151=1 X2\n", "2: P151=1: a parameter assignment stands alone in its block"),
     ("G0 X0 Y0 Z1.\nP149=1\n", r"2: P149=1: not a parameter of the Milltronics cycles \(P150, P151"),
     ("G0 X0 Y0 Z1.\nG43 H1\n", "2: G43: tool length offset"),
+    ("T1\n", r"1: T1: tool changes and offsets \(T, D, H\) in a Milltronics program are not translated"),
+    ("S1000 M3 D1\n", r"1: D1: tool changes and offsets"),
     ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\nP155=.1\nG33 R.1 Z-.1 V-.1\n",
      "6: G33 tool diameter: is not known: give the end mill's diameter"),
     ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\nP155=.3\nG34 R.1 Z-.1 V-.1\n",

@@ -239,6 +239,9 @@ _MILLTRONICS_CODES = {
     "42": GCode(CYCLE_COMPENSATION, "G42"),
 }
 
+_MILLTRONICS_TOOLS = ("tool changes and offsets (T, D, H) in a Milltronics program are not translated: one end mill "
+                      "per program, its diameter given by --tool-diameter; set its offsets on the target machine")
+
 _FANUC = InputControl(
     name="fanuc",
     maker="Fanuc",
@@ -295,7 +298,8 @@ INPUT_CONTROLS: Dict[str, InputControl] = {
             help="Milltronics mill (G33 facing and G34 rectangular pocket autoroutines with P151=.. assignment "
             "blocks, G31/G32 Z to clearance / tool change; X/Y/Z, feed per minute; G20/G21, G90/G91)",
             g_codes=_MILLTRONICS_CODES,
-            plain_letters=frozenset("XYZFSTMG"),
+            plain_letters=frozenset("XYZFSMG"),
+            letter_refusals={letter: _MILLTRONICS_TOOLS for letter in "TDH"},
             decimal_point=False,  # the seed writes X1 Y2 F20 for 1", 2", 20 in/min
             dwell_unsupported="G04: the Milltronics dwell word is not documented here; not translated",
             mill=True,
