@@ -194,6 +194,10 @@ def test_a_metric_program_lifts_2_54_mm_between_depths():
     (G34, "P151=1\nP152=.4\nP155=.1\nP153=.1\nG34 R.1 Z-.5 Q.1",
      r"G34 P153=0.1: the pocket less the finish stock on both walls \(P152 = 0.4\) is smaller than the tool"),
     (G34, "P151=1\nP152=1\nP155=.1\nP154=.5\nG34 R.1 Z-.5 V-.1 Q.1", r"G34 V=-0.1: the first depth -0.1 is below"),
+    (G34, "P151=9000\nP152=9000\nP155=.0001\nG34 R.1 Z-.1 V-.1",
+     r"G34 P155=0.0001: the cut width is too small for the rectangle: more than 1000000 passes"),
+    (G33, "P151=9000\nP152=900\nP155=.0001\nG33 R.1 Z-.1 V-.1", r"G33 P155=0.0001: the cut width is too small"),
+    (G33, "P151=2\nP152=1\nP155=.1\nG33 R.1 Z-900 Q.0001", r"G33 Q=0.0001: too small for the depth"),
 ])
 def test_every_rule_that_needs_the_start_or_the_tool(cycle, text, message):
     model = cycle.parse(text)

@@ -334,11 +334,14 @@ class _Tool:
         return self.moves
 
 
-def _even_steps(span: float, width: float) -> List[float]:
+def _even_steps(span: float, width: float, cycle: str) -> List[float]:
     """0, s, 2s, ... span with s the largest equal step at most ``width``."""
     if span <= TOLERANCE:
         return [0.0]
     count = max(1, math.ceil(span / width - 1e-9))
+    if count > MAX_MOVES:  # before the list is made: the moves' own limit would come too late
+        raise CycleError("P155", width, "the cut width is too small for the rectangle: more than %d passes"
+                         % MAX_MOVES, cycle=cycle)
     return [span * index / count for index in range(count + 1)]
 
 
@@ -348,7 +351,7 @@ def facing_moves(cut: Cut, name: str = "G33") -> List[Move]:
     half_x, half_y = cut.size_x / 2.0 - cut.radius, cut.size_y / 2.0 - cut.radius
     along_x = cut.size_x >= cut.size_y
     short = 2.0 * (half_y if along_x else half_x)
-    steps = _even_steps(short, cut.width)
+    steps = _even_steps(short, cut.width, name)
     for index, depth in enumerate(cut.depths):
         tool.enter(half_x, half_y, depth, index == 0)
         for number, step in enumerate(steps):
@@ -392,7 +395,7 @@ def lap_points(half_x: float, half_y: float, corner: float, clockwise: bool) -> 
     return points
 
 
-def pocket_laps(cut: Cut, stock: float, corner: float) -> List[List[Tuple[float, float]]]:
+def pocket_laps(cut: Cut, stock: float, corner: float, name: str = "G34") -> List[List[Tuple[float, float]]]:
     """The tool centre's paths at one depth, from the centre outward (see the module notes)."""
     half_x = cut.size_x / 2.0 - cut.radius - stock
     half_y = cut.size_y / 2.0 - cut.radius - stock
@@ -400,7 +403,7 @@ def pocket_laps(cut: Cut, stock: float, corner: float) -> List[List[Tuple[float,
     inset = min(half_x, half_y)
     spine_x, spine_y = half_x - inset, half_y - inset
     paths = [[(0.0, 0.0), (-spine_x, -spine_y), (spine_x, spine_y)]]
-    for offset in _even_steps(inset, min(cut.width, LAP_STEP_LIMIT * 2 * cut.radius))[1:]:
+    for offset in _even_steps(inset, min(cut.width, LAP_STEP_LIMIT * 2 * cut.radius), name)[1:]:
         rest = inset - offset
         paths.append(lap_points(half_x - rest, half_y - rest, max(outer_corner - rest, 0.0), cut.clockwise))
     return paths
@@ -410,14 +413,14 @@ def pocket_moves(cut: Cut, stock: float, corner: float, finish_depth: Optional[f
     """G34: at each depth the centre line and the laps; the last depth and the finishing lap."""
     tool = _Tool(cut, name)
     depths = cut.depths + ((finish_depth,) if finish_depth is not None else ())
-    laps = pocket_laps(cut, stock, corner)
+    laps = pocket_laps(cut, stock, corner, name)
     for index, depth in enumerate(depths):
         tool.enter(0.0, 0.0, depth, index == 0)
         for lap in laps:
             for u, v in lap:
                 tool.feed_xy(u, v)
     if stock > 0:
-        finish = pocket_laps(cut._replace(width=max(cut.size_x, cut.size_y)), 0.0, corner)[-1]
+        finish = pocket_laps(cut._replace(width=max(cut.size_x, cut.size_y)), 0.0, corner, name)[-1]
         for u, v in finish:
             tool.feed_xy(u, v)
     return tool.leave()
