@@ -1,0 +1,131 @@
+"""The Cylinder slot op inside FreeCAD (1.1 and 1.0; run by tests/freecad/run_suite.py).
+
+An R20 cylinder (Z 0..50) turned about Z, with the slot's centre line a
+separate model object: a helix of one turn (pitch 20) from Z10, or a keyway
+line along Z at C90. The expected Paths are derived here by hand from the
+G7.1 Type II rules (gsk_g71's module notes): the rough passes at radius
+20 - (Depth - Allowance) * n / max(L, 2), the finish at 20 - Depth, the
+cycle start at 20 + Retract; each pass: G1 X in, G1 along the developed
+path, G0 X out, G0 Z C back.
+"""
+
+import math
+
+import FreeCAD
+import Part
+import Path.Main.Job as PathJob
+import pytest
+
+from freecad_groove import make_cylinder_slot
+from freecad_groove.freecad.cylinder_slot_op import op_error
+
+V = FreeCAD.Vector
+FEED = 120.0  # mm/min, the tool controller's HorizFeed
+
+
+def _shop(edge_shape, cylinder=None):
+    doc = FreeCAD.newDocument("slot")
+    shaft = doc.addObject("Part::Feature", "Shaft")
+    shaft.Shape = cylinder if cylinder is not None else Part.makeCylinder(20, 50)
+    line = doc.addObject("Part::Feature", "SlotLine")
+    line.Shape = edge_shape
+    doc.recompute()
+    job = PathJob.Create("Job", [shaft, line])
+    tc = job.Tools.Group[0]
+    tc.HorizFeed = "%g mm/min" % FEED
+    doc.recompute()
+    return doc, shaft, line, job
+
+
+@pytest.fixture
+def closing():
+    docs = []
+    yield docs
+    for doc in docs:
+        FreeCAD.closeDocument(doc.Name)
+
+
+def _helix():
+    helix = Part.makeHelix(20.0, 20.0, 20.0)  # pitch, height, radius: one turn from (20, 0, 0)
+    helix.translate(V(0, 0, 10))
+    return helix
+
+
+def _safe_radius(job, retract):
+    radius = 20.0
+    for shape in [m.Shape for m in job.Model.Group] + [job.Stock.Shape]:
+        box = shape.BoundBox
+        radius = max(radius, math.hypot(max(abs(box.XMin), abs(box.XMax)), max(abs(box.YMin), abs(box.YMax))))
+    return radius + retract
+
+
+def _words(op):
+    """(name, {axis: value}) of the op's Path after its label comment."""
+    return [(c.Name, dict(c.Parameters)) for c in op.Path.Commands[1:]]
+
+
+def _expected(safe, start, end, radii, clear, feed_along):
+    z0, c0 = start
+    z1, c1 = end
+    out = [("G18", {}), ("G0", {"X": safe}), ("G0", {"Z": z0, "C": c0})]
+    if safe != clear:
+        out.append(("G0", {"X": clear}))
+    for radius in radii:
+        out += [("G1", {"X": radius, "Z": z0, "C": c0, "F": FEED / 60}),
+                ("G1", {"X": radius, "Z": z1, "C": c1, "F": feed_along / 60}),
+                ("G0", {"X": clear, "Z": z1, "C": c1}),
+                ("G0", {"X": clear, "Z": z0, "C": c0})]
+    return out + [("G0", {"X": safe})]
+
+
+def _same(got, want):
+    assert [name for name, _ in got[1:]] == [name for name, _ in want], got
+    for (name, words), (_n, expected) in zip(got[1:], want):
+        assert set(words) == set(expected), (name, words, expected)
+        for axis, value in expected.items():
+            assert words[axis] == pytest.approx(value, abs=1e-6), (name, axis, words, expected)
+
+
+def test_helical_groove_moves_by_hand(closing):
+    doc, shaft, line, job = _shop(_helix())
+    closing.append(doc)
+    op = make_cylinder_slot(job, (shaft, "Face1"), [(line, "Edge1")], depth=2, passes=2, allowance=0.2, retract=1)
+    assert op_error(op) is None
+    assert op.Region == "G7.1 C20. J-4. R2. K0.4 L2"
+    # developed: Z 10 -> 30 while C turns 0 -> 360, i.e. s = 20 * 2pi along the surface
+    along = FEED * 20.0 / math.hypot(20.0, 40.0 * math.pi)  # F is along Z when Z moves (LinuxCNC's rule)
+    want = _expected(_safe_radius(job, 1.0), (10.0, 0.0), (30.0, 360.0), [19.1, 18.2, 18.0], 21.0, along)
+    assert op.Path.Commands[1].Name.startswith("(Face1") or "Face1" in op.Path.Commands[1].Name
+    _same(_words(op), want)
+
+
+def test_keyway_along_z_moves_by_hand(closing):
+    doc, shaft, line, job = _shop(Part.makeLine(V(0, 20, 5), V(0, 20, 45)))
+    closing.append(doc)
+    op = make_cylinder_slot(job, (shaft, "Face1"), (line, "Edge1"), depth=1.5, passes=1, allowance=0.1, retract=2)
+    assert op_error(op) is None
+    assert op.Region == "G7.1 C20. J-3. R4. K0.2 L1"
+    # L1 runs as 2 rough passes of (1.5 - 0.1) / 2 each, then the finish at 18.5
+    want = _expected(_safe_radius(job, 2.0), (5.0, 90.0), (45.0, 90.0), [19.3, 18.6, 18.5], 22.0, FEED)
+    _same(_words(op), want)
+
+
+@pytest.mark.parametrize("case, prefix", [
+    ("plane", "Base: Shaft.Face2 is not a cylindrical face"),
+    ("off_face", "Base: SlotLine.Edge1 does not lie on Shaft.Face1"),
+    ("depth", "Depth=0.0: must be greater than 0"),
+    ("not_z", "Base: Shaft.Face1 is a cylinder about (1, 0, 0)"),
+])
+def test_bad_inputs_give_one_line_naming_the_property(closing, case, prefix):
+    edge = Part.makeLine(V(25, 0, 5), V(25, 0, 45)) if case == "off_face" else Part.makeLine(V(20, 0, 5),
+                                                                                            V(20, 0, 45))
+    cylinder = Part.makeCylinder(20, 50, V(0, 0, 0), V(1, 0, 0)) if case == "not_z" else None
+    doc, shaft, line, job = _shop(edge, cylinder)
+    closing.append(doc)
+    face = "Face2" if case == "plane" else "Face1"
+    op = make_cylinder_slot(job, (shaft, face), [(line, "Edge1")], depth=0 if case == "depth" else 1)
+    message = op_error(op)
+    assert message is not None and message.startswith(prefix), message
+    assert "\n" not in message
+    shown = message.replace("(", "[").replace(")", "]")  # a Path comment has no inner parentheses
+    assert len(op.Path.Commands) == 2 and shown in op.Path.Commands[1].Name  # label, then the error
