@@ -129,3 +129,93 @@ def test_bad_inputs_give_one_line_naming_the_property(closing, case, prefix):
     assert "\n" not in message
     shown = message.replace("(", "[").replace(")", "]")  # a Path comment has no inner parentheses
     assert len(op.Path.Commands) == 2 and shown in op.Path.Commands[1].Name  # label, then the error
+
+
+# ----------------------------------------------------------------------------- posts
+
+def _post(name, objects, args):
+    import importlib.util
+    import os
+
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    spec = importlib.util.spec_from_file_location(name + "_post", os.path.join(root, "postprocessors",
+                                                                               name + "_post.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.export(objects, "-", args)
+
+
+def _positions(words_list, scale_x):
+    """[(kind, x radius, z, c, f)] of full positions from [(code, {axis: value})] (modal G0/G1; f None on G0)."""
+    here, kind, out = {}, None, []
+    for code, words in words_list:
+        if code in ("G0", "G00", "G1", "G01"):
+            kind = "G0" if code in ("G0", "G00") else "G1"
+        if not any(a in words for a in "XZC") or kind is None:
+            continue
+        here.update({a: words[a] * (scale_x if a == "X" else 1.0) for a in "XZC" if a in words})
+        out.append((kind, here.get("X"), here.get("Z"), here.get("C")))
+    return out
+
+
+def _read_text(text):
+    """[(code, {axis: value})] of a LinuxCNC-style text (comments dropped)."""
+    import re
+
+    out = []
+    for line in text.splitlines():
+        line = re.sub(r"\([^)]*\)", "", line).strip()
+        code = next(iter(re.findall(r"\bG0*[01]\b", line)), None)
+        words = {a: float(v) for a, v in re.findall(r"([XZCF])([-+]?[\d.]+)", line)}
+        out.append(({"G00": "G0", "G01": "G1"}.get(code, code), words))
+    return out
+
+
+def _op_positions(op):
+    return _positions([(c.Name, dict(c.Parameters)) for c in op.Path.Commands], 1.0)
+
+
+def _helix_op(closing):
+    doc, shaft, line, job = _shop(_helix())
+    closing.append(doc)
+    op = make_cylinder_slot(job, (shaft, "Face1"), [(line, "Edge1")], depth=2, passes=2, allowance=0.2, retract=1)
+    assert op_error(op) is None
+    return job, op
+
+
+@pytest.mark.parametrize("args", ["--native-cycles", "--expand-cycles"])
+def test_gsk_post_read_back_equals_the_op(closing, args):
+    from freecad_groove.engine.translator import translate_program
+
+    job, op = _helix_op(closing)
+    text = _post("gsk_lathe", [job], args)
+    region = [line for line in text.splitlines() if line.startswith("G7.1") or line.startswith("G1 Z")]
+    if args == "--native-cycles":
+        assert region == ["G7.1 C20. J-4. R2. K0.4 L2", "G1 Z30. C360. F120.", "G7.1 C0"], text
+    else:  # each of the 3 passes: its path as a Type I region at the pass's X
+        assert region == ["G7.1 C20.", "G1 Z30. C360. F120.", "G7.1 C0"] * 3, text
+    translated = translate_program(text, "gsk", target="linuxcnc-c")
+    got = _positions(_read_text(translated), 0.5)
+    want = _op_positions(op)
+    assert len(got) >= len(want)
+    tail = got[len(got) - len(want):]
+    for a, b in zip(tail, want):
+        assert a[0] == b[0] and a[1:] == pytest.approx(b[1:], abs=1e-3), (a, b, translated)
+
+
+def test_linuxcnc_post_writes_the_c_moves(closing):
+    job, op = _helix_op(closing)
+    text = _post("linuxcnc_lathe", [job], "")
+    got = _positions(_read_text(text), 0.5)
+    want = _op_positions(op)
+    assert got[len(got) - len(want):] == [(k, pytest.approx(x, abs=1e-4), pytest.approx(z, abs=1e-4),
+                                           pytest.approx(c, abs=1e-4)) for k, x, z, c in want]
+    assert "C360." in text
+
+
+def test_a_post_without_c_refuses_the_slot(closing):
+    from freecad_groove.freecad.posts import PostError
+
+    job, op = _helix_op(closing)
+    with pytest.raises(PostError, match="the C axis, which the fanuc_lathe post does not write"):
+        _post("fanuc_lathe", [job], "")
