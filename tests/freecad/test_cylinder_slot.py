@@ -219,3 +219,24 @@ def test_a_post_without_c_refuses_the_slot(closing):
     job, op = _helix_op(closing)
     with pytest.raises(PostError, match="the C axis, which the fanuc_lathe post does not write"):
         _post("fanuc_lathe", [job], "")
+
+
+def test_gsk_post_writes_grooves_as_fanuc_style_g75(closing):
+    """A plain Groove op on the gsk post: the two-block G75 of the fanuc post, read back by the gsk reader."""
+    from freecad_groove import make_groove
+    from freecad_groove.engine.translator import translate_program
+
+    doc, shaft, line, job = _shop(Part.makeLine(V(20, 0, 5), V(20, 0, 45)))
+    closing.append(doc)
+    make_groove(job, (shaft, "Face1"), position=10, width=3, depth=2, infeed=1, tool_width=3,
+                tool_corner_radius=0)
+    body = {name: [line for line in _post(name, [job], "--native-cycles --no-header").splitlines()
+                   if not line.startswith("(")] for name in ("gsk_lathe", "fanuc_lathe")}
+    assert body["gsk_lathe"] == body["fanuc_lathe"]
+    calls = [line for line in body["gsk_lathe"] if line.startswith("G75")]
+    assert len(calls) == 2, body["gsk_lathe"]
+    text = "\n".join(body["gsk_lathe"]) + "\n"
+    def moves(dialect):
+        return [line for line in translate_program(text, dialect).splitlines() if not line.startswith("(")]
+
+    assert moves("gsk") == moves("fanuc")
