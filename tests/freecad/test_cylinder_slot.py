@@ -240,3 +240,34 @@ def test_gsk_post_writes_grooves_as_fanuc_style_g75(closing):
         return [line for line in translate_program(text, dialect).splitlines() if not line.startswith("(")]
 
     assert moves("gsk") == moves("fanuc")
+
+
+def test_a_chain_of_edges_is_one_path_whatever_their_direction(closing):
+    """The keyway as two edges, the second modelled backwards (45 -> 25): the same Path as the one edge."""
+    halves = Part.makeCompound([Part.makeLine(V(0, 20, 5), V(0, 20, 25)), Part.makeLine(V(0, 20, 45), V(0, 20, 25))])
+    doc, shaft, line, job = _shop(halves)
+    closing.append(doc)
+    op = make_cylinder_slot(job, (shaft, "Face1"), [(line, "Edge1"), (line, "Edge2")], depth=1.5, passes=1,
+                            allowance=0.1, retract=2)
+    assert op_error(op) is None
+    want = _expected(_safe_radius(job, 2.0), (5.0, 90.0), (45.0, 90.0), [19.3, 18.6, 18.5], 22.0, FEED)
+    _same(_words(op), want)
+    reversed_first = make_cylinder_slot(job, (shaft, "Face1"), [(line, "Edge2"), (line, "Edge1")], depth=1.5)
+    assert reversed_first.Region.startswith("G7.1 C20.")
+    assert [c.Parameters.get("Z") for c in reversed_first.Path.Commands if c.Name == "G0"][1] == 45.0  # from 45
+
+
+def test_no_feed_is_an_error_not_a_default(closing):
+    doc, shaft, line, job = _shop(_helix())
+    closing.append(doc)
+    job.Tools.Group[0].HorizFeed = 0
+    op = make_cylinder_slot(job, (shaft, "Face1"), [(line, "Edge1")], depth=1)
+    assert op_error(op).startswith("HorizFeed=0.0: the tool controller's feed must be greater than 0")
+
+
+def test_gsk_refuses_inches(closing):
+    from freecad_groove.freecad.posts import PostError
+
+    job, op = _helix_op(closing)
+    with pytest.raises(PostError, match="--inches: the G7.1 region of a Cylinder slot is written in mm"):
+        _post("gsk_lathe", [job], "--inches")
