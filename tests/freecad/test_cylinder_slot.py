@@ -271,3 +271,61 @@ def test_gsk_refuses_inches(closing):
     job, op = _helix_op(closing)
     with pytest.raises(PostError, match="--inches: the G7.1 region of a Cylinder slot is written in mm"):
         _post("gsk_lathe", [job], "--inches")
+
+
+def _developed_distance(point, polyline):
+    """Distance on the developed surface (z, s) from ``point`` to the polyline."""
+    best = float("inf")
+    for (z0, s0), (z1, s1) in zip(polyline, polyline[1:]):
+        dz, ds = z1 - z0, s1 - s0
+        t = max(0.0, min(1.0, ((point[0] - z0) * dz + (point[1] - s0) * ds) / (dz * dz + ds * ds)))
+        best = min(best, math.hypot(point[0] - z0 - t * dz, point[1] - s0 - t * ds))
+    return best
+
+
+def test_a_curved_track_is_followed_within_the_chord_tolerance(closing):
+    """A barrel-cam bend: half an ellipse drawn in the cylinder's own (angle, z) parameters, an exact edge
+    on the face. Every point of the edge is within 0.001 mm of the region's path on the developed surface."""
+    cylinder = Part.makeCylinder(20, 50)
+    surface = cylinder.Face1.Surface
+    curve = Part.Geom2d.Circle2d(FreeCAD.Base.Vector2d(1.0, 25.0), 0.8)
+    edge = curve.toShape(surface, 0.0, math.pi)  # u: angle in radians, v: z
+    doc, shaft, line, job = _shop(edge, cylinder)
+    closing.append(doc)
+    op = make_cylinder_slot(job, (shaft, "Face1"), [(line, "Edge1")], depth=1)
+    assert op_error(op) is None, op_error(op)
+    region = op.Proxy.current_plan(op).region
+    to_s = 20.0 * math.pi / 180.0
+    start = op.Proxy.current_plan(op).start
+    polyline, z, c = [(start.z, start.c * to_s)], start.z, start.c
+    for block in region.path:
+        z = block.z if block.z is not None else z
+        c = block.c if block.c is not None else c
+        polyline.append((z, c * to_s))
+    assert 10 < len(polyline) < 400, len(polyline)  # straight pieces, not one per sample
+    shape = line.Shape.Edges[0]
+    a, b = shape.ParameterRange
+    worst = 0.0
+    for k in range(2001):
+        p = shape.valueAt(a + (b - a) * k / 2000)
+        worst = max(worst, _developed_distance((p.z, math.atan2(p.y, p.x) * 20.0), polyline))
+    assert worst <= 0.001 + 1e-4, worst  # the chord tolerance (+ the 4-decimal rounding of C and Z)
+
+
+def test_the_op_recomputes_after_reopening_the_saved_document(closing, tmp_path):
+    doc, shaft, line, job = _shop(_helix())
+    op = make_cylinder_slot(job, (shaft, "Face1"), [(line, "Edge1")], depth=2, passes=2, allowance=0.2, retract=1)
+    before = [(c.Name, dict(c.Parameters)) for c in op.Path.Commands]
+    path = str(tmp_path / "slot.FCStd")
+    doc.saveAs(path)
+    name = op.Name
+    FreeCAD.closeDocument(doc.Name)
+    doc = FreeCAD.openDocument(path)
+    closing.append(doc)
+    op = doc.getObject(name)
+    assert type(op.Proxy).__module__ + "." + type(op.Proxy).__name__ == \
+        "freecad_groove.freecad.cylinder_slot_op.ObjectCylinderSlot"
+    op.touch()
+    doc.recompute()
+    assert op_error(op) is None
+    assert [(c.Name, dict(c.Parameters)) for c in op.Path.Commands] == before
