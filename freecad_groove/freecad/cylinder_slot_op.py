@@ -38,6 +38,7 @@ import Path
 import Path.Op.Base as PathOp
 import PathScripts.PathUtils as PathUtils
 
+from .. import hooks
 from ..engine.cycles.gsk_g71 import DECIMALS, GskG71, PathBlock
 from ..engine.moves import FEED, RAPID, MachineState, Move
 from .faces import element_name
@@ -295,6 +296,8 @@ def Create(name: str, obj: object = None, parentJob: object = None, tool_control
         doc = parentJob.Document if parentJob is not None else FreeCAD.ActiveDocument
         obj = doc.addObject("Path::FeaturePython", name)
     obj.Proxy = ObjectCylinderSlot(obj, name, parentJob, tool_controller)
+    if hooks.slot_view_provider_factory is not None and getattr(obj, "ViewObject", None) is not None:
+        hooks.slot_view_provider_factory(obj)  # the GUI's (gui/slot_view.py), set when the GUI is up
     return obj
 
 
