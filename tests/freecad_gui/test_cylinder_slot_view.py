@@ -9,7 +9,7 @@ import FreeCAD
 import FreeCADGui
 import Part
 import pytest
-from gui_helpers import process, screenshot
+from gui_helpers import process, screenshot, version
 
 from freecad_groove.gui import slot_view
 
@@ -72,4 +72,4 @@ def test_command_makes_the_op_and_draws_it_wrapped(shop):
     process(0.2)
     FreeCADGui.ActiveDocument.ActiveView.viewIsometric()
     FreeCADGui.SendMsgToActiveView("ViewFit")
-    screenshot("cylinder-slot-wrapped")
+    screenshot("%s-cylinder-slot" % version())
