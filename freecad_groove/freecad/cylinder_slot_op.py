@@ -34,6 +34,7 @@ import traceback
 from typing import List, NamedTuple, Optional, Tuple
 
 import FreeCAD
+import Part
 import Path
 import Path.Op.Base as PathOp
 import PathScripts.PathUtils as PathUtils
@@ -58,6 +59,8 @@ PROPERTIES = (
      0.1),
     ("App::PropertyLength", "Retract", "Clearance above the cylinder the tool retracts to between passes, radial "
      "(R = 2 Retract); also the clearance of the safe radius.", 1.0),
+    ("App::PropertyLink", "DevelopedSketch", "A sketch of the slot's path on the developed surface, used instead "
+     "of edges in Base: sketch x = Z, sketch y = the developed length radius*C (C 0 at y 0).", None),
     ("App::PropertyLength", "SlotWidth", "The slot's width: the end mill's diameter (read only).", 0.0),
     ("App::PropertyString", "Region", "The G7.1 start block the op cuts with (read only).", ""),
 )
@@ -150,7 +153,8 @@ class ObjectCylinderSlot(PathOp.ObjectOp):
         for type_id, name, tooltip, default in PROPERTIES:
             if name not in obj.PropertiesList:
                 obj.addProperty(type_id, name, GROUP, tooltip)
-                setattr(obj, name, default)
+                if default is not None:
+                    setattr(obj, name, default)
         for name in DERIVED:
             obj.setEditorMode(name, 1)
 
@@ -242,7 +246,13 @@ class ObjectCylinderSlot(PathOp.ObjectOp):
         """The region and its moves (GrooveInputError/CycleError naming what is wrong)."""
         (face, face_name), edges = self.picked(obj)
         cylinder = read_cylinder(face, face_name)
-        points = developed_path(cylinder, face, edges)
+        sketch = getattr(obj, "DevelopedSketch", None)
+        if sketch is not None:
+            if edges:
+                raise GrooveInputError("Base: edges picked and a DevelopedSketch given: the path is one or the "
+                                       "other", ("Base", "DevelopedSketch"))
+            edges = sketch_edges(sketch)
+        points = developed_path(cylinder, face, edges, sketch=sketch is not None)
         region = self.region(obj, cylinder, points)
         first = region.path[0]
         start = MachineState(x=region.clearance_radius(), z=_rounded(points[0][0]), c=_rounded(points[0][1]),
@@ -264,6 +274,16 @@ class ObjectCylinderSlot(PathOp.ObjectOp):
             if box.isValid():
                 radius = max(radius, math.hypot(max(abs(box.XMin), abs(box.XMax)), max(abs(box.YMin), abs(box.YMax))))
         return radius
+
+
+def sketch_edges(sketch: object) -> List[Tuple[object, str]]:
+    """The sketch's edges in its own coordinates, sorted into a chain, named "Label.EdgeN"."""
+    shape = sketch.Shape.copy()
+    shape.transformShape(sketch.Placement.inverse().toMatrix())
+    edges = Part.__sortEdges__(shape.Edges)
+    if not edges:
+        raise GrooveInputError("DevelopedSketch: %s has no edges" % sketch.Label, ("DevelopedSketch",))
+    return [(edge, "%s.Edge%d" % (sketch.Label, i + 1)) for i, edge in enumerate(edges)]
 
 
 def path_commands(plan: SlotPlan) -> list:

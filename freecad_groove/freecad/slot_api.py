@@ -19,20 +19,29 @@ def _pair(pair: object, prefix: str, what: str) -> tuple:
 def _elements(job: object, face: object, path: object) -> list:
     """[(model clone, "FaceN"), (model clone, "EdgeN"), ...], each checked."""
     pairs = [_pair(face, "Face", "face")]
+    if is_sketch(path):  # the path is the op's DevelopedSketch
+        return [_checked(job, *pairs[0])]
     if isinstance(path, tuple) and len(path) == 2 and isinstance(path[1], str):
         path = [path]  # one (part, "EdgeN") pair
     if not isinstance(path, (list, tuple)) or not path:
         raise ValueError("make_cylinder_slot(): path=%r: give a list of (part, \"EdgeN\")" % (path,))
     pairs += [_pair(p, "Edge", "path") for p in path]
-    out = []
-    for part, sub in pairs:
-        model = _model(job, part)
-        try:
-            model.Shape.getElement(sub)
-        except Exception:
-            raise ValueError("make_cylinder_slot(): %s has no %s" % (part.Label, sub)) from None
-        out.append((model, sub))
-    return out
+    return [_checked(job, part, sub) for part, sub in pairs]
+
+
+def is_sketch(path: object) -> bool:
+    """Whether ``path`` is one object with a shape (a sketch of the developed surface), not (part, "EdgeN") pairs."""
+    return hasattr(path, "Shape") and hasattr(path, "Placement") and hasattr(path, "Document")
+
+
+def _checked(job: object, part: object, sub: str) -> tuple:
+    """(the Job's model clone of ``part``, ``sub``); ValueError when it has no such element."""
+    model = _model(job, part)
+    try:
+        model.Shape.getElement(sub)
+    except Exception:
+        raise ValueError("make_cylinder_slot(): %s has no %s" % (part.Label, sub)) from None
+    return model, sub
 
 
 def make_cylinder_slot(job, face, path, name="CylinderSlot", tool_controller=None, recompute=True, **values):
@@ -40,7 +49,8 @@ def make_cylinder_slot(job, face, path, name="CylinderSlot", tool_controller=Non
 
     ``face``: (part, "FaceN"), a cylindrical face about Z; ``path``: the slot's
     centre line on it, [(part, "EdgeN"), ...] in order (one pair alone is
-    fine). Keywords (mm): depth, passes, allowance, retract (radial: see
+    fine), or a sketch of the developed surface (its x = Z, its y = the
+    developed length radius*C; the op's DevelopedSketch). Keywords (mm): depth, passes, allowance, retract (radial: see
     cylinder_slot_op), coolant_mode, comment. ``tool_controller`` defaults to
     the Job's first (an end mill: its diameter is the slot's width).
     ``recompute``: then a slot that cannot be cut reports its message
@@ -71,6 +81,8 @@ def make_cylinder_slot(job, face, path, name="CylinderSlot", tool_controller=Non
             obj.ToolController = tc
         for model, sub in elements:
             obj.Proxy.addBase(obj, model, sub)
+        if is_sketch(path):
+            obj.DevelopedSketch = path
         for key, value in values.items():
             try:
                 setattr(obj, KEYWORDS[key], value)

@@ -13,7 +13,9 @@ line along Z are each one straight piece.
 
 Choices (README "Cylinder slot" table): the path starts where the first
 edge starts (its direction as modelled, or reversed when only its start
-meets the second edge); C of the start in (-180, 180]; an edge "lies on the
+meets the second edge); C of the start in (-180, 180]; a sketch of the
+developed surface (its own x = Z, y = the developed length R*C, C = 0 at
+y = 0) gives C as drawn, its edges chained by Part's edge sort; an edge "lies on the
 face" when every sample is within ON_FACE_TOLERANCE of the cylinder and of
 the face (its Z range and its angular span).
 """
@@ -136,6 +138,21 @@ class _Developer:
             self._refine(edge, name, tm, t1, pm, p1, depth + 1)
 
 
+class _SketchDeveloper(_Developer):
+    """Develops an edge of a sketch of the developed surface, in the sketch's own
+    coordinates: x is Z, y the developed length s (C = y / radius in radians)."""
+
+    def point(self, edge: object, name: str, t: float, last_c: float) -> Tuple[float, float]:
+        p, cyl = edge.valueAt(t), self.cylinder
+        if not cyl.z_min - ON_FACE_TOLERANCE <= p.x <= cyl.z_max + ON_FACE_TOLERANCE:
+            raise GrooveInputError("DevelopedSketch: %s leaves %s (a point at sketch x = Z %.4f; the face: Z %.4f "
+                                   "to %.4f)" % (name, cyl.name, p.x, cyl.z_min, cyl.z_max), ("DevelopedSketch",))
+        return p.x, p.y / self.to_s
+
+    def _check_span(self, edge: object, name: str) -> None:
+        pass  # a developed path wraps round the whole cylinder
+
+
 def _offset(p0, p1, p, to_s: float) -> float:
     """Distance on the developed surface from ``p`` to the chord p0-p1 (points (z, C degrees))."""
     z0, s0, z1, s1, z, s = p0[0], p0[1] * to_s, p1[0], p1[1] * to_s, p[0], p[1] * to_s
@@ -161,12 +178,14 @@ def _simplify(points: List[Tuple[float, float]], to_s: float) -> List[Tuple[floa
     return [points[k] for k in sorted(keep)]
 
 
-def developed_path(cylinder: SlotCylinder, face: object, edges: List[Tuple[object, str]]) -> List[Tuple[float, float]]:
-    """The slot's path as (z, C degrees) corners of straight pieces on the developed surface, start first."""
+def developed_path(cylinder: SlotCylinder, face: object, edges: List[Tuple[object, str]],
+                   sketch: bool = False) -> List[Tuple[float, float]]:
+    """The slot's path as (z, C degrees) corners of straight pieces on the developed surface, start first.
+    ``sketch``: the edges are a sketch's, in its own coordinates (x = Z, y = the developed length)."""
     if not edges:
         raise GrooveInputError("Base: no edge of the slot's path: pick the edges it follows on %s"
                                % cylinder.name, ("Base",))
-    developer = _Developer(cylinder, face)
+    developer = _SketchDeveloper(cylinder, face) if sketch else _Developer(cylinder, face)
     points: List[Tuple[float, float]] = []
     last_c = 0.0
     for edge, name, reverse in _oriented(edges):

@@ -329,3 +329,27 @@ def test_the_op_recomputes_after_reopening_the_saved_document(closing, tmp_path)
     doc.recompute()
     assert op_error(op) is None
     assert [(c.Name, dict(c.Parameters)) for c in op.Path.Commands] == before
+
+
+def test_a_sketch_of_the_developed_surface_is_the_path(closing):
+    """The helix drawn flat: a line from (x=Z 10, y=0) to (30, 40*pi), i.e. C 0 -> 360 on R20, in a sketch
+    placed anywhere (its own coordinates count): the same Path as the helix edge."""
+    import Sketcher
+
+    doc, shaft, line, job = _shop(_helix())
+    closing.append(doc)
+    sketch = doc.addObject("Sketcher::SketchObject", "Developed")
+    sketch.Placement = FreeCAD.Placement(V(100, 0, 0), FreeCAD.Rotation(V(1, 0, 0), 90))
+    sketch.addGeometry(Part.LineSegment(V(10, 0, 0), V(30, 40 * math.pi, 0)))
+    assert Sketcher  # the workbench's module is loaded for the sketch type
+    doc.recompute()
+    op = make_cylinder_slot(job, (shaft, "Face1"), sketch, depth=2, passes=2, allowance=0.2, retract=1)
+    assert op_error(op) is None, op_error(op)
+    assert op.DevelopedSketch == sketch
+    along = FEED * 20.0 / math.hypot(20.0, 40.0 * math.pi)
+    want = _expected(_safe_radius(job, 1.0), (10.0, 0.0), (30.0, 360.0), [19.1, 18.2, 18.0], 21.0, along)
+    _same(_words(op), want)
+    sketch.delGeometry(0)
+    sketch.addGeometry(Part.LineSegment(V(10, 0, 0), V(60, 40 * math.pi, 0)))  # off the face's Z range 0..50
+    doc.recompute()
+    assert op_error(op).startswith("DevelopedSketch: Developed.Edge1 leaves Shaft.Face1"), op_error(op)
