@@ -22,3 +22,11 @@ def verify_job(*args, **kwargs):
     from .freecad.turning_check import verify_job as _verify_job
 
     return _verify_job(*args, **kwargs)
+
+
+def make_cylinder_slot(*args, **kwargs):
+    """Create a Cylinder slot operation in a CAM Job (needs FreeCAD); see
+    freecad_groove.freecad.slot_api.make_cylinder_slot for the arguments."""
+    from .freecad.slot_api import make_cylinder_slot as _make_cylinder_slot
+
+    return _make_cylinder_slot(*args, **kwargs)

@@ -12,6 +12,7 @@ the page class): keep them stable.
     tool_page.py   the panel's "Tool and coolant" page (grooving tool controller button)
     widgets.py     the Qt helpers the pages are built from (forms, fields, error labels)
     preview.py     the groove cross-section and toolpath drawn while editing
+    slot_view.py   the Cylinder slot command and the op's Path drawn wrapped on its cylinder
     turning_view.py  the Check turning command: verify_job's section in the 3D view, figures in a task panel
 """
 
@@ -36,10 +37,12 @@ def register():
     import FreeCADGui
 
     from .. import hooks
-    from . import command, turning_view
+    from . import command, slot_view, turning_view
 
     FreeCADGui.addLanguagePath(TRANSLATIONS)
     FreeCADGui.updateLocale()
     command.register()
     turning_view.register()
     hooks.view_provider_factory = _attach_view_provider
+    slot_view.register()
+    hooks.slot_view_provider_factory = slot_view.attach_view_provider

@@ -2,7 +2,7 @@
 
 Headless FreeCAD layer: FreeCAD and Path only (no Qt, no FreeCADGui). The
 posts in ``postprocessors/`` (``sinumerik_lathe_post.py``, ``ab9_lathe_post.py``,
-``fanuc_lathe_post.py``, ``haas_lathe_post.py``, ``linuxcnc_lathe_post.py``) are
+``fanuc_lathe_post.py``, ``haas_lathe_post.py``, ``gsk_lathe_post.py``, ``linuxcnc_lathe_post.py``) are
 thin FreeCAD script posts: an argument parser from :func:`make_parser` and an
 ``export`` that calls :func:`export` here.
 
@@ -26,6 +26,8 @@ in order:
     native cycle starts where the tool stands) or as the engine's expanded
     moves (``--expand-cycles``, the controls without a cycle, grooves the
     control's cycle cannot cut - a comment says why);
+  - a Cylinder slot op: its X/Z/C moves, on GSK its G7.1 region (slots.py);
+    a control without a C axis refuses it;
   - any other object with a Path (a turning op, a custom Path, a dressup's
     Path, the Job's fixture blocks): its commands as plain moves: G0/G1/G2/G3
     in the XZ plane, X a radius in model coordinates (written as a diameter
@@ -63,6 +65,7 @@ sinumerik ``G18 G71 G90 G40 G94 DIAMON`` ``T<n> D1``            CYCLE93 (every g
 ab9       ``G18 G21 G90 G40 G94 G07``  ``T<nnnn>`` (tool+offs)  G77 / G76 (plain grooves)
 fanuc     ``%``, ``G21``, ``G40 G98``  ``T<nn><nn>``            G75 / G74 two-block
 haas      ``%``, ``G21``, ``G40 G98``  ``T<nn><nn>``            G75 / G74 one-block
+gsk       ``%``, ``G21``, ``G40 G98``  ``T<nn><nn>``            G75 / G74 two-block
 linuxcnc  ``G18 G7 G21 G90 G91.1 G40 G94`` ``T<n> M6 G43``      none: always expanded
 ========= ============================ ====================== ===================
 

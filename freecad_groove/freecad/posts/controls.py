@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Dict, List, Optional
 from ...engine import FEED, RAPID, ProgramError
 from ...engine.numbers import format_decimal
 from ...engine.registry import cycle_for
+from ...engine.targets import C_FEED_COMPOSITE, C_FEED_LINEAR
 from ...engine.targets import comment as paren_comment
 
 if TYPE_CHECKING:
@@ -45,6 +46,8 @@ class Control:
     max_tool_number = 9999
     m6_stops_spindle = False  # a tool change stops the spindle
     cr_arcs = False  # arcs with their radius CR= (Siemens) instead of I/K
+    c_feed: Optional[str] = None  # a C axis: how F of a move that turns C is read (targets.C_FEED_*); None: no C
+    native_slot = False  # a Cylinder slot op as a native GSK G7.1 Type II region (--native-cycles)
 
     @property
     def has_x_mode(self) -> bool:
@@ -226,6 +229,13 @@ class Haas(FanucFrame):
         return "G04 P" + format_decimal(seconds, DWELL_DIGITS)
 
 
+class Gsk(Fanuc):
+    name, post, title = "gsk", "gsk_lathe", "GSK 980TDi lathe (G75/G74 two-block, G7.1 cylinder slots)"
+    cycle_control = "gsk"
+    c_feed = C_FEED_COMPOSITE  # Fanuc-like: F of a linear and rotary move along their composite path
+    native_slot = True
+
+
 class LinuxCNC(Control):
     name, post, title = "linuxcnc", "linuxcnc_lathe", "LinuxCNC lathe (G7, grooves expanded)"
     digits = 4
@@ -233,6 +243,7 @@ class LinuxCNC(Control):
     x_words = "a diameter, G7"
     expand_help_note = "; the default: LinuxCNC has no grooving cycle"
     m6_stops_spindle = True  # LinuxCNC's M6 stops the spindle
+    c_feed = C_FEED_LINEAR  # a lathe with a rotary C axis: F along X/Z when they move, else degrees/min
 
     def setup(self, options: Options) -> List[str]:
         return ["G18 %s %s G90 G91.1 G40 G94" % ("G7" if options.diameter else "G8", self.units(options.inches))]
@@ -250,7 +261,7 @@ class LinuxCNC(Control):
         return ["M2"]
 
 
-CONTROLS: Dict[str, Control] = {c.name: c() for c in (Sinumerik, AllenBradley9, Fanuc, Haas, LinuxCNC)}
+CONTROLS: Dict[str, Control] = {c.name: c() for c in (Sinumerik, AllenBradley9, Fanuc, Haas, Gsk, LinuxCNC)}
 
 
 def control_named(name: str) -> Control:

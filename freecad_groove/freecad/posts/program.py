@@ -13,6 +13,7 @@ from .grooves import GrooveOutput, groove_cutting
 from .objects import groove_op_of, is_fixture_block, is_job, is_tool_controller, label_of, op_property
 from .options import Options
 from .path_commands import PathCommands
+from .slots import SlotOutput, is_slot_op
 from .writer import LatheWriter
 
 MAX_RPM = 99999
@@ -214,6 +215,8 @@ class Program:
                     self.note("%s: native cycles from %s; the dressup's changes are not in them"
                               % (label, label_of(groove)))
                 GrooveOutput(self, groove).write()
+            elif is_slot_op(obj):
+                SlotOutput(self, obj).write()
             else:
                 PathCommands(self, label).write(obj.Path.Commands)
         except PostError:

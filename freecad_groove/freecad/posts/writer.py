@@ -27,7 +27,8 @@ class LatheWriter(Writer):
         super().__init__("linuxcnc", True, False)  # a target to start from: the control's own spec replaces it
         self.spec = TargetSpec(control.name, dict(control.codes), precision, precision,
                                {True: control.units(False), False: control.units(True)},
-                               {False: control.feed_mode(False), True: control.feed_mode(True)}, "M2", False)
+                               {False: control.feed_mode(False), True: control.feed_mode(True)}, "M2", False,
+                               c_feed=control.c_feed)
         self.set_units(not inches)
 
     def out(self, mm: float) -> float:
@@ -51,8 +52,9 @@ class LatheWriter(Writer):
         moves = list(moves)
         for move in moves:
             self.check_axes(move)
-        moves = [(k, None if x is None else self.out(x * half), None if z is None else self.out(z),
-                  None if f is None else self.out(f), p) for k, x, z, f, p, *_extra in moves]
+        moves = [Move(k, None if x is None else self.out(x * half), None if z is None else self.out(z),
+                      None if f is None else self.out(f), p, None, extra[1] if len(extra) > 1 else None)
+                 for k, x, z, f, p, *extra in moves]  # C (degrees) kept where the control has it
         return super().write(moves, prefix)
 
     def dwell(self, seconds: float) -> str:
@@ -63,7 +65,7 @@ class LatheWriter(Writer):
     def forget(self, position: bool = True, motion: bool = True, feed: bool = True) -> None:
         """The output no longer knows the position / the motion mode / the feed in force."""
         if position:
-            self.x_text = self.z_text = None
+            self.x_text = self.z_text = self.c_text = None
         if motion:
             self.motion = None
         if feed:
