@@ -1,0 +1,153 @@
+"""The Plunge grind op inside FreeCAD (1.1 and 1.0; run by tests/freecad/run_suite.py).
+
+A box 100 x 40 x 20 (X, Y, Z) at the origin: its top face (Face6, Z20) is
+ground with a 10 mm wide wheel. The G83 words are worked out here by hand
+from the face and the op's values; the Path's moves are compared with the
+engine's own expansion of that call; shapely checks that the wheel's strokes
+at the final depth cover the face and that no move goes below it.
+"""
+
+import FreeCAD
+import Part
+import Path.Main.Job as PathJob
+import pytest
+from pylib import require_shapely
+
+from freecad_groove import make_plunge_grind
+from freecad_groove.engine.cycles.ab_g83 import G83, G83_1
+from freecad_groove.engine.moves import DRESS, FEED, MachineState
+from freecad_groove.freecad.plunge_grind_op import op_error
+
+TOP = "Face6"  # Part.makeBox: Face5 z=0, Face6 z=height
+WHEEL = 10.0
+# the op's values (feeds in mm/min as quantity strings)
+VALUES = dict(depth=0.1, start_clearance=0.05, plunge_pick=0.02, cross_pick=5, spark_out_passes=1,
+              plunge_feed="60 mm/min", reciprocation_feed="6000 mm/min", wheel_width=WHEEL)
+# By hand: reversals 5 mm (Overtravel) past the face's X ends 0 and 100: I-5 (the start) and X105;
+# the crossover from the wheel flush with Y0 (its middle at Y5) to flush with Y40 (Z35); Y = the face Z20;
+# the start 0.1 + 0.05 above it (Z20.15).
+CALL = G83(X=105.0, I=-5.0, Y=20.0, J=0.02, Z=35.0, K=5.0, L=1, F=60.0, E=6000.0)
+START = MachineState(x=-5.0, z=5.0, y=20.15, feed=60.0, diameter_mode=False)
+
+
+def make_box_job(size=(100, 40, 20)):
+    doc = FreeCAD.newDocument("PlungeGrind")
+    block = doc.addObject("Part::Feature", "Block")
+    block.Shape = Part.makeBox(*size)
+    doc.recompute()
+    job = PathJob.Create("Job", [block])
+    doc.recompute()
+    return doc, block, job
+
+
+@pytest.fixture
+def shop():
+    doc, block, job = make_box_job()
+    yield doc, block, job
+    FreeCAD.closeDocument(doc.Name)
+
+
+def _moves_in_path(op):
+    """(kind, x, y, z, feed mm/min or dress program) of the op's Path after the approach rapids."""
+    out = []
+    for command in op.Path.Commands:
+        if command.Name == "G1":
+            p = command.Parameters
+            out.append((FEED, p["X"], p["Y"], p["Z"], round(p["F"] * 60, 9)))
+        elif command.Name.startswith("(DRESS P"):
+            out.append((DRESS, None, None, None, int(command.Name[len("(DRESS P"):-1])))
+    return out
+
+
+def _engine_moves(call, start):
+    out = []
+    last = None
+    for move in call.expand(start):
+        if move.kind == FEED:
+            out.append((FEED, move.x, move.z, move.y, move.f))
+        else:
+            out.append((DRESS, None, None, None, move.p))
+        last = move
+    assert last is not None
+    return out
+
+
+def test_the_op_programs_the_hand_derived_g83(shop):
+    doc, block, job = shop
+    op = make_plunge_grind(job, (block, TOP), **VALUES)
+    assert op_error(op) is None
+    assert op.GrindCall == CALL.emit()
+    assert op.Proxy.current_plan(op).start == START
+
+
+def test_the_path_holds_the_engines_expansion_between_rapids_at_the_safe_height(shop):
+    doc, block, job = shop
+    op = make_plunge_grind(job, (block, TOP), **VALUES)
+    assert _moves_in_path(op) == _engine_moves(CALL, START)
+    commands = op.Path.Commands
+    safe = max(job.Stock.Shape.BoundBox.ZMax, 20.0) + 5.0  # Retract 5 over the stock's top
+    names = [c.Name for c in commands]
+    assert names[:2] == ["(PlungeGrind)", "G17"]  # the base class's label comment first
+    first_g1 = names.index("G1")
+    assert [(c.Name, c.Parameters) for c in commands[first_g1 - 3:first_g1]] == [
+        ("G0", {"Z": pytest.approx(safe)}), ("G0", {"X": -5.0, "Y": 5.0}), ("G0", {"Z": pytest.approx(20.15)})]
+    assert (commands[-1].Name, commands[-1].Parameters) == ("G0", {"Z": pytest.approx(safe)})
+
+
+def test_the_wheel_covers_the_face_at_the_final_depth_and_never_goes_below(shop):
+    require_shapely()
+    from shapely.geometry import box
+    from shapely.ops import unary_union
+
+    doc, block, job = shop
+    op = make_plunge_grind(job, (block, TOP), **dict(VALUES, cross_pick=7, secondary_cross_pick=4))
+    assert op_error(op) is None
+    points = [(c.Parameters["X"], c.Parameters["Y"], c.Parameters["Z"]) for c in op.Path.Commands if c.Name == "G1"]
+    assert min(z for _x, _y, z in points) == pytest.approx(20.0)
+    strokes = []
+    for (x0, y0, z0), (x1, y1, z1) in zip(points, points[1:]):
+        if abs(z0 - 20.0) < 1e-9 and abs(z1 - 20.0) < 1e-9 and x0 != x1:
+            assert y0 == y1  # a stroke reciprocates along X only
+            strokes.append(box(min(x0, x1), y0 - WHEEL / 2, max(x0, x1), y0 + WHEEL / 2))
+    assert box(0, 0, 100, 40).difference(unary_union(strokes)).area == 0.0
+
+
+def test_dresses_and_g83_1_come_from_the_properties(shop):
+    doc, block, job = shop
+    op = make_plunge_grind(job, (block, TOP), **dict(VALUES, dress_program=12, dress_count=2, dress_first=True,
+                                                     crossover_plunge_pick=0.03))
+    call = G83_1(X=105.0, I=-5.0, Y=20.0, J=0.02, Z=35.0, K=5.0, Q=0.03, L=1, F=60.0, E=6000.0, P=12, D=2)
+    assert op.GrindCall == call.emit()
+    moves = _moves_in_path(op)
+    assert moves == _engine_moves(call, START)
+    assert moves[0] == (DRESS, None, None, None, 12) and sum(m[0] == DRESS for m in moves) == 3
+
+
+def test_a_face_narrower_than_the_wheel_gets_no_crossover():
+    doc, block, job = make_box_job((60, 8, 10))
+    try:
+        op = make_plunge_grind(job, (block, TOP), **VALUES)
+        call = G83(X=65.0, I=-5.0, Y=10.0, J=0.02, Z=4.0, K=5.0, L=1, F=60.0, E=6000.0)
+        assert op.GrindCall == call.emit()
+        assert {c.Parameters["Y"] for c in op.Path.Commands if c.Name == "G1"} == {4.0}
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+
+
+@pytest.mark.parametrize("face, values, message", [
+    ("Face1", {}, "Block.Face1: its normal (-1, 0, 0) is not +Z"),
+    (TOP, dict(plunge_pick=0), "PlungePick=0: must be greater than 0"),
+    (TOP, dict(depth=0), "Allowance=0: must be greater than 0"),
+    (TOP, dict(cross_pick=12), "CrossPick=12: must be at most the wheel's width 10"),
+    (TOP, dict(wheel_width=0), "WheelWidth: the wheel's width is unknown"),
+    (TOP, dict(spark_out_passes=1000), "SparkOutPasses: G83 L=1000: must be a whole number from 0 to 999"),
+    (TOP, dict(dress_count=2), "DressProgram: G83 P: must be programmed (D=2 dresses"),
+    (TOP, dict(dress_program=10000), "DressProgram: G83 P=10000: must be a program number from 1 to 9999"),
+])
+def test_bad_inputs_give_one_line_naming_the_property(shop, face, values, message):
+    doc, block, job = shop
+    op = make_plunge_grind(job, (block, face), **dict(VALUES, **values))
+    error = op_error(op)
+    assert error is not None and error.startswith(message), error
+    assert "\n" not in error
+    assert [c.Name for c in op.Path.Commands if c.Name in ("G0", "G1")] == []
