@@ -9,6 +9,7 @@ at the final depth cover the face and that no move goes below it.
 
 import FreeCAD
 import Part
+import Path
 import Path.Main.Job as PathJob
 import pytest
 from pylib import require_shapely
@@ -151,3 +152,68 @@ def test_bad_inputs_give_one_line_naming_the_property(shop, face, values, messag
     assert error is not None and error.startswith(message), error
     assert "\n" not in error
     assert [c.Name for c in op.Path.Commands if c.Name in ("G0", "G1")] == []
+
+
+# ---------------------------------------------------------------- the grinder posts
+
+import importlib.util  # noqa: E402
+import os  # noqa: E402
+
+from freecad_groove.engine.grind_program import GrindItem, PlainMoves, grind_program  # noqa: E402
+from freecad_groove.engine.moves import RAPID, Move  # noqa: E402
+from freecad_groove.freecad.posts.errors import PostError  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def post_module(name):
+    """postprocessors/<name>_post.py, loaded from its file as FreeCAD loads a script post."""
+    spec = importlib.util.spec_from_file_location(name + "_post", os.path.join(ROOT, "postprocessors",
+                                                                               name + "_post.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def _expected(call, job, target, native, extra=()):
+    item = GrindItem("PlungeGrind: Block.Face6", call, START, max(job.Stock.Shape.BoundBox.ZMax, 20.0) + 5.0,
+                     call.expand(START))
+    return grind_program([item, *extra], target, native, "Job")
+
+
+def test_the_ab9_grind_post_writes_the_op_as_its_g83_block_or_expanded(shop):
+    doc, block, job = shop
+    make_plunge_grind(job, (block, TOP), **VALUES)
+    post = post_module("ab9_grind")
+    native = post.export([job], "-", "")
+    assert native == _expected(CALL, job, "ab9grind", True)
+    assert "G83 X105. I-5. Y20. J0.02 Z35. K5. L1 F60. E6000." in native.splitlines()
+    assert post.export([job], "-", "--expand-cycles") == _expected(CALL, job, "ab9grind", False)
+
+
+def test_the_linuxcnc_grind_post_expands_dresses_and_writes_other_paths_as_they_are(shop):
+    doc, block, job = shop
+    make_plunge_grind(job, (block, TOP), **dict(VALUES, dress_program=12, dress_count=2, dress_first=True))
+    custom = doc.addObject("Path::Feature", "Custom")
+    custom.Path = Path.Path([Path.Command("G0", {"X": 1, "Y": 2, "Z": 30}), Path.Command("G1", {"X": 4, "F": 2})])
+    doc.recompute()
+    call = G83_1(X=105.0, I=-5.0, Y=20.0, J=0.02, Z=35.0, K=5.0, L=1, F=60.0, E=6000.0, P=12, D=2)
+    plain = PlainMoves("Custom", [Move(RAPID, 1.0, 2.0, y=30.0), Move(FEED, 4.0, 2.0, 120.0, y=30.0)])
+    text = post_module("linuxcnc_grind").export([job, custom], "-", "")
+    assert text == _expected(call, job, "linuxcnc", False, [plain])
+    assert text.count("o<dress12> call") == 3
+    with pytest.raises(PostError, match=r"a dress \(P12\) cannot be written expanded for the 9/Series"):
+        post_module("ab9_grind").export([job], "-", "--expand-cycles")
+
+
+def test_the_grind_posts_refuse_an_op_that_cannot_grind_and_commands_they_cannot_write(shop):
+    doc, block, job = shop
+    op = make_plunge_grind(job, (block, TOP), **dict(VALUES, plunge_pick=0))
+    with pytest.raises(PostError, match="^PlungeGrind: PlungePick=0: must be greater than 0$"):
+        post_module("ab9_grind").export([job], "-", "")
+    op.PlungePick = 0.02
+    arc = doc.addObject("Path::Feature", "Arc")
+    arc.Path = Path.Path([Path.Command("G2", {"X": 1, "Y": 2, "Z": 3, "I": 1})])
+    doc.recompute()
+    with pytest.raises(PostError, match=r"^Arc: G2 \(command 1\) cannot be written by a grinder post"):
+        post_module("ab9_grind").export([job, arc], "-", "")
