@@ -20,6 +20,12 @@ The start height is the face + Allowance + StartClearance; Y = the face.
 J, Q, K, R, L, F, E, P, D and G83.1 come from the properties
 (plunge_grind_properties.py).
 
+The model must not rise above the face where the wheel's lowest point passes
+(between the reversal points, over the crossover and its half width, up to
+the safe height): the op refuses such a face (naming Base and Overtravel).
+The wheel's body above its lowest point is not checked (its diameter is not
+used).
+
 The Path: G17, a comment with the call, G0 to the safe height (the top of
 the stock and model + Retract), G0 over the start, G0 down to it, the
 engine's expansion (G1 X Y Z at the move's feed in mm/s; a dress call as the
@@ -47,6 +53,7 @@ from .plunge_grind_properties import DERIVED, PROPERTIES, WORD_PROPERTIES, Grind
 from .units import SECONDS_PER_MINUTE, length_mm
 
 TOLERANCE = 1e-6
+CLEAR_ABOVE_MM = 1e-3  # model material this far above the face's plane and more is in the wheel's way
 OP_NAME = "PlungeGrind"  # the op's kind in CAM's SetupSheet registry
 
 
@@ -272,7 +279,31 @@ class ObjectPlungeGrind(PathOp.ObjectOp):
             moves = call.expand(start)
         except CycleError as e:
             raise _named(e) from None
-        return GrindPlan(call, start, moves, self.safe_z(obj) + obj.Retract.Value, face.name)
+        safe = self.safe_z(obj) + obj.Retract.Value
+        self.check_clear(obj, face, call, start, width, safe)
+        return GrindPlan(call, start, moves, safe, face.name)
+
+    def check_clear(self, obj: object, face: FlatFace, call: G83, start: MachineState, width: float,
+                    safe: float) -> None:
+        """GrindInputError (naming Base and Overtravel) when the model rises above the face anywhere the
+        wheel's lowest point passes over it, between the reversal points and over the crossover, up to the
+        safe height: a wall within the overtravel, or a face that is the floor of a pocket."""
+        low, high = sorted((start.z, call.Z))
+        x0, x1 = sorted((call.I, call.X))
+        height = safe - face.z - CLEAR_ABOVE_MM
+        if height <= 0:
+            return
+        sweep = Part.makeBox(x1 - x0, high - low + width, height,
+                             FreeCAD.Vector(x0, low - width / 2, face.z + CLEAR_ABOVE_MM))
+        job = PathUtils.findParentJob(obj)
+        for model in job.Model.Group:
+            shape = getattr(model, "Shape", None)
+            if shape is not None and not shape.isNull() and shape.common(sweep).Volume > 1e-6:
+                raise GrindInputError(
+                    "Base: the wheel's path over %s (X%g..%g, Y%g..%g) meets %s above the face: a wall within the "
+                    "Overtravel or a pocket floor (reduce Overtravel, or grind another face)"
+                    % (face.name, x0, x1, low - width / 2, high + width / 2, job.Proxy.baseObject(job, model).Label),
+                    ("Base", "Overtravel"))
 
     def safe_z(self, obj: object) -> float:
         """The top of the Job's stock and model (ValueError when the op is in no Job)."""

@@ -217,3 +217,24 @@ def test_the_grind_posts_refuse_an_op_that_cannot_grind_and_commands_they_cannot
     doc.recompute()
     with pytest.raises(PostError, match=r"^Arc: G2 \(command 1\) cannot be written by a grinder post"):
         post_module("ab9_grind").export([job, arc], "-", "")
+
+
+def test_a_wall_within_the_overtravel_is_refused_and_none_without_overtravel():
+    doc = FreeCAD.newDocument("PlungeWall")
+    try:
+        block = doc.addObject("Part::Feature", "Stepped")
+        # the 100 x 40 face at Z20, a wall X100..110 up to Z30 right at its +X end
+        block.Shape = Part.makeBox(100, 40, 20).fuse(Part.makeBox(10, 40, 30, FreeCAD.Vector(100, 0, 0)))
+        doc.recompute()
+        job = PathJob.Create("Job", [block])
+        doc.recompute()
+        top = next("Face%d" % (i + 1) for i, f in enumerate(block.Shape.Faces)
+                   if abs(f.BoundBox.ZMin - 20) < 1e-9 and abs(f.BoundBox.ZMax - 20) < 1e-9)
+        op = make_plunge_grind(job, (block, top), **VALUES)
+        assert op_error(op).startswith("Base: the wheel's path over Stepped.%s (X-5..105, Y0..40) meets "
+                                       "Stepped above the face" % top)
+        op.Overtravel = 0
+        doc.recompute()
+        assert op_error(op) is None and op.GrindCall.startswith("G83 X100. I0. Y20.")
+    finally:
+        FreeCAD.closeDocument(doc.Name)
