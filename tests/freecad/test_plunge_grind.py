@@ -238,3 +238,39 @@ def test_a_wall_within_the_overtravel_is_refused_and_none_without_overtravel():
         assert op_error(op) is None and op.GrindCall.startswith("G83 X100. I0. Y20.")
     finally:
         FreeCAD.closeDocument(doc.Name)
+
+
+# ---------------------------------------------------------------- the grinding wheel tool bit
+
+from freecad_groove.freecad import wheel_toolbit  # noqa: E402
+
+
+def test_the_wheel_tool_bit_gives_the_op_its_width_and_survives_save_and_reopen(tmp_path):
+    doc, block, job = make_box_job()
+    tc = wheel_toolbit.make_wheel_tool_controller(job, width=10, diameter=200)
+    bit = tc.Tool
+    assert (bit.Width.Value, bit.Diameter.Value) == (10.0, 200.0)
+    if wheel_toolbit.NEW_TOOLBITS:
+        assert type(bit.Proxy).__name__ == "ToolBitGrindingWheel"
+    values = {k: v for k, v in VALUES.items() if k != "wheel_width"}
+    op = make_plunge_grind(job, (block, TOP), tool_controller=tc, **values)
+    assert op_error(op) is None and op.GrindCall == CALL.emit()  # K5 .. Z35: the 10 mm wheel
+    path, name = str(tmp_path / "wheel.FCStd"), op.Name
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    reopened = FreeCAD.openDocument(path)
+    try:
+        op = reopened.getObject(name)
+        assert type(op.Proxy).__name__ == "ObjectPlungeGrind"
+        op.touch()
+        reopened.recompute()
+        assert op_error(op) is None and op.GrindCall == CALL.emit()
+        assert op.ToolController.Tool.Width.Value == 10.0
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+
+
+def test_a_wheel_without_size_is_refused_in_one_line(shop):
+    doc, block, job = shop
+    with pytest.raises(ValueError, match=r"^make_wheel_bit\(\): width=0: must be greater than 0$"):
+        wheel_toolbit.make_wheel_bit(doc, 0, 200)
