@@ -23,6 +23,9 @@ parser = _grind.make_grind_parser(POST)
 TOOLTIP = _grind.GRIND_POSTS[POST][2]
 TOOLTIP_ARGS = parser.format_help()
 
+# CAM's Post Process command takes this class (named after the post) and reports a failed post in one line
+Linuxcnc_Grind = _grind.grind_command_post_class(POST)
+
 
 def export(objectslist, filename, argstring):
     """The program for ``objectslist``; ``filename`` "-" only returns it."""

@@ -274,3 +274,32 @@ def test_a_wheel_without_size_is_refused_in_one_line(shop):
     doc, block, job = shop
     with pytest.raises(ValueError, match=r"^make_wheel_bit\(\): width=0: must be greater than 0$"):
         wheel_toolbit.make_wheel_bit(doc, 0, 200)
+
+
+@pytest.fixture
+def console(monkeypatch):
+    """FreeCAD's report view: {"PrintMessage": [...], "PrintError": [...]} from now on."""
+    seen = {"PrintMessage": [], "PrintError": []}
+    for kind, lines in seen.items():
+        monkeypatch.setattr(FreeCAD.Console, kind, lines.append, raising=False)
+    return seen
+
+
+def test_cam_post_process_writes_the_program_or_reports_a_failed_post_in_one_line(shop, console):
+    from Path.Post.Processor import PostProcessorFactory
+
+    doc, block, job = shop
+    op = make_plunge_grind(job, (block, TOP), **VALUES)
+    job.PostProcessor = "ab9_grind"
+    found = PostProcessorFactory.get_post_processor(job, "ab9_grind")
+    assert type(found).__name__ == "Ab9_Grind"
+    ((_part, text),) = found.export()
+    assert text == _expected(CALL, job, "ab9grind", True)
+    op.PlungePick = 0
+    doc.recompute()
+    del console["PrintError"][:]
+    assert found.export() is None  # CAM_Post: no file, no traceback
+    assert console["PrintError"] == ["ab9_grind_post: PlungeGrind: PlungePick=0: must be greater than 0 "
+                                     "(no file written)\n"]
+    job.PostProcessorArgs = "--help"
+    assert found.export() is None and "--expand-cycles" in "".join(console["PrintMessage"])

@@ -18,6 +18,7 @@ in mm/min), comments dropped, any other command refused naming the op.
 
 import argparse
 import shlex
+import traceback
 from typing import Any, Iterable, List, Optional, Sequence, Union
 
 from ...engine.errors import ProgramError
@@ -96,31 +97,80 @@ def _items(objects: Iterable[Any]) -> list:
     return items
 
 
+def _program(name: str, objects: Iterable[Any], argstring: Union[None, str, Sequence[str]]) -> Optional[str]:
+    """The program of post ``name`` for ``objects``, None for --help (the options go to the report view)."""
+    import FreeCAD
+
+    parser = make_grind_parser(name)
+    args = shlex.split(argstring) if isinstance(argstring, str) else list(argstring or [])
+    options, unknown = parser.parse_known_args(args)
+    if unknown:
+        raise PostError("unrecognized arguments: %s" % " ".join(unknown))
+    if options.help:
+        FreeCAD.Console.PrintMessage("%s_post --help: no program written; the options:\n%s\n"
+                                     % (name, parser.format_help().rstrip("\n")))
+        return None
+    objects = list(objects or [])
+    job = job_of(objects)
+    target, native, _title = GRIND_POSTS[name]
+    try:
+        return grind_program(_items(objects), target, getattr(options, "native", native),
+                             label_of(job) if job is not None else "FreeCAD", options.program_number)
+    except ProgramError as e:
+        raise PostError(str(e)) from None
+
+
 def grind_export(name: str, objectslist: Optional[Iterable[Any]], filename: Optional[str],
                  argstring: Union[None, str, Sequence[str]]) -> Optional[str]:
     """A script post's export() for grinder post ``name`` (see the module notes); PostError on any problem."""
     import FreeCAD
 
-    parser = make_grind_parser(name)
     try:
-        args = shlex.split(argstring) if isinstance(argstring, str) else list(argstring or [])
-        options, unknown = parser.parse_known_args(args)
-        if unknown:
-            raise PostError("unrecognized arguments: %s" % " ".join(unknown))
-        if options.help:
-            FreeCAD.Console.PrintMessage(parser.format_help())
-            return None
-        objects = list(objectslist or [])
-        job = job_of(objects)
-        target, native, _title = GRIND_POSTS[name]
-        try:
-            text = grind_program(_items(objects), target, getattr(options, "native", native),
-                                 label_of(job) if job is not None else "FreeCAD", options.program_number)
-        except ProgramError as e:
-            raise PostError(str(e)) from None
-        if filename and filename != "-":
-            write_atomically(filename, text)
+        text = _program(name, objectslist or [], argstring)
+        if text is not None and filename and filename != "-":
+            try:
+                write_atomically(filename, text)
+            except OSError as e:
+                raise PostError("cannot write %s: %s" % (filename, e.strerror or e)) from None
         return text
     except PostError as e:
         FreeCAD.Console.PrintError("%s_post: %s\n" % (name, e))
         raise
+
+
+def grind_command_post_class(name: str) -> type:
+    """The class FreeCAD's PostProcessorFactory takes from grinder post ``name``'s module (as
+    command_post.py's for the lathe posts): its export() reports a failed post in one line and returns None."""
+    import FreeCAD
+    from Path.Post.Processor import PostProcessor
+
+    class GrindPost(PostProcessor):
+        """Grinder post ``name`` for CAM's Post Process command."""
+
+        def __init__(self, job: Any, *args: Any, **kwargs: Any) -> None:  # noqa: D107 - no base constructor
+            self._job = job
+            self._tooltip = GRIND_POSTS[name][2]
+            self._tooltipargs = make_grind_parser(name).format_help()
+            self._units = "Metric"
+            self._args = args
+            self._kwargs = kwargs
+
+        tooltip = property(lambda self: self._tooltip)
+        tooltipArgs = property(lambda self: self._tooltipargs)  # noqa: N815 - FreeCAD's name
+        units = property(lambda self: self._units)
+
+        def export(self) -> Optional[list]:
+            argstring = getattr(self._job, "PostProcessorArgs", "")
+            try:
+                sections = [(part, _program(name, objects, argstring)) for part, objects in self._buildPostList()]
+                return None if any(text is None for _part, text in sections) else sections
+            except PostError as e:
+                FreeCAD.Console.PrintError("%s_post: %s (no file written)\n" % (name, e))
+            except Exception as e:  # noqa: BLE001 - a user action must never end in a traceback
+                FreeCAD.Console.PrintError("%s_post: could not post the Job: %s: %s (no file written; please "
+                                           "report it)\n" % (name, type(e).__name__, e))
+                FreeCAD.Console.PrintLog(traceback.format_exc())
+            return None
+
+    GrindPost.__name__ = GrindPost.__qualname__ = name.title()
+    return GrindPost
