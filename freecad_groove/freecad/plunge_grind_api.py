@@ -63,7 +63,12 @@ def make_plunge_grind(job, face, name="PlungeGrind", tool_controller=None, recom
     if unknown:
         raise TypeError("make_plunge_grind() got unknown keyword(s) %s; valid: %s"
                         % (", ".join(unknown), ", ".join(sorted(KEYWORDS))))
-    faces = _faces(job, face)
+    try:
+        faces = _faces(job, face)
+    except ValueError as e:  # api.py's checks name make_groove
+        raise ValueError(str(e).replace("make_groove()", "make_plunge_grind()", 1)) from None
+    if sum(len(subs) for _model, subs in faces) != 1:
+        raise ValueError("make_plunge_grind(): face=%r: give one (part, \"FaceN\")" % (face,))
     doc = job.Document
     if FreeCAD.ActiveDocument is None or FreeCAD.ActiveDocument.Name != doc.Name:
         FreeCAD.setActiveDocument(doc.Name)

@@ -303,3 +303,18 @@ def test_cam_post_process_writes_the_program_or_reports_a_failed_post_in_one_lin
                                      "(no file written)\n"]
     job.PostProcessorArgs = "--help"
     assert found.export() is None and "--expand-cycles" in "".join(console["PrintMessage"])
+
+
+@pytest.mark.parametrize("face, values, error, message", [
+    ((None, TOP), {}, ValueError, r"^make_plunge_grind\(\): faces: None is not a FreeCAD object"),
+    (("block", "Face99"), {}, ValueError, r"^make_plunge_grind\(\): Block has no Face99$"),
+    (("block", ["Face5", "Face6"]), {}, ValueError, r"^make_plunge_grind\(\): face=.*: give one \(part, \"FaceN\"\)$"),
+    (("block", TOP), {"plunge_pik": 1}, TypeError, r"^make_plunge_grind\(\) got unknown keyword\(s\) plunge_pik;"),
+])
+def test_make_plunge_grind_refuses_bad_arguments_leaving_nothing_behind(shop, face, values, error, message):
+    doc, block, job = shop
+    before = {o.Name for o in doc.Objects}
+    face = tuple(block if part == "block" else part for part in face[:1]) + face[1:]
+    with pytest.raises(error, match=message):
+        make_plunge_grind(job, face, **values)
+    assert {o.Name for o in doc.Objects} == before
