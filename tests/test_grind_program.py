@@ -64,7 +64,15 @@ def test_an_expanded_dress_is_refused_for_the_9_series():
 
 def test_plain_moves_are_written_as_they_are_and_linuxcnc_has_no_native_cycle():
     moves = PlainMoves("Profile", [Move(RAPID, 1.0, 2.0, y=30.0), Move(FEED, 4.0, 2.0, 50.0, y=30.0)])
-    assert grind_program([moves], "linuxcnc", False, "Job").splitlines()[-4:] == [
-        "(Profile)", "G0 X1. Y30. Z2.", "G1 X4. F50.", "M2"]
+    assert grind_program([moves], "linuxcnc", False, "Job").splitlines() == [
+        "G17 G21 G90 G91.1 G40 G94", "(Job)", "(Profile)", "G0 X1. Y30. Z2.", "G1 X4. F50.", "M2"]
     with pytest.raises(ProgramError, match="linuxcnc has no G83 cycle"):
         grind_program([item()], "linuxcnc", True, "Job")
+
+
+def test_coolant_goes_on_after_the_comment_and_off_after_the_op():
+    lines = grind_program([item()._replace(coolant=8)], "ab9grind", True, "Job").splitlines()
+    assert lines[4:7] == ["(PlungeGrind: Block.Face6)", "M08", "G00 Y26."] and lines[-3:] == ["G00 Y26.", "M09", "M30"]
+    moves = PlainMoves("Profile", [Move(RAPID, 1.0, 2.0, y=30.0)], 7)
+    assert grind_program([moves], "linuxcnc", False, "Job").splitlines()[-5:] == [
+        "(Profile)", "M7", "G0 X1. Y30. Z2.", "M9", "M2"]

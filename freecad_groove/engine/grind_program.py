@@ -11,7 +11,8 @@ X Z over the start point, G0 Y down to it; then the native G83/G83.1 block
 (the cycle starts where the wheel stands) or the engine's expansion (a dress
 is the target's subprogram call; the 9/Series' own call is not in the
 manuals this follows: an expanded dress for it is refused); then G0 Y back
-to the safe position. After a native cycle the output forgets the position
+to the safe position. An item's coolant: its M code after the comment, M9
+(``M09`` for the 9/Series) after its last move. After a native cycle the output forgets the position
 (every axis of the next move is written).
 
 Targets: "ab9grind" (native or expanded; "%", O number, G90 G94 G21 ... M30,
@@ -19,7 +20,7 @@ read back by the engine's ab9grind reader) and "linuxcnc" (expanded only:
 the linuxcnc-mill writer, dress calls ``o<dressN> call``).
 """
 
-from typing import List, NamedTuple, Sequence, Union
+from typing import List, NamedTuple, Optional, Sequence, Union
 
 from .cycles.ab_g83 import G83
 from .errors import ProgramError
@@ -38,6 +39,7 @@ class GrindItem(NamedTuple):
     start: MachineState
     safe: float
     moves: List[Move]
+    coolant: Optional[int] = None  # the coolant M code (8 flood, 7 mist) on before the op, M9 after
 
 
 class PlainMoves(NamedTuple):
@@ -45,6 +47,7 @@ class PlainMoves(NamedTuple):
 
     label: str
     moves: List[Move]
+    coolant: Optional[int] = None
 
 
 Item = Union[GrindItem, PlainMoves]
@@ -53,7 +56,7 @@ Item = Union[GrindItem, PlainMoves]
 def _header(writer: Writer, target: str, title: str, number: int) -> List[str]:
     if target == NATIVE_TARGET:
         return ["%", "O%04d" % number, comment(title), "G90 G94 G21"]
-    return writer.header(title) + ["G94"]
+    return writer.header(title)
 
 
 def _retract(writer: Writer, safe: float) -> List[str]:
@@ -86,11 +89,14 @@ def grind_program(items: Sequence[Item], target: str, native: bool, title: str, 
         raise ProgramError("%s has no G83 cycle: the cycles are expanded for it" % target)
     writer = Writer(TARGETS[target], True, False)
     lines = _header(writer, target, title, number)
+    m_code = "M%02d" if target == NATIVE_TARGET else "M%d"
     for item in items:
         if isinstance(item, GrindItem):
-            lines += _grind_lines(writer, item, native, target)
+            body = _grind_lines(writer, item, native, target)
         else:
-            lines.append(comment(item.label))
-            lines += writer.write(item.moves)
+            body = [comment(item.label)] + writer.write(item.moves)
+        if item.coolant:
+            body = body[:1] + [m_code % item.coolant] + body[1:] + [m_code % 9]
+        lines += body
     lines += ["M30"] if target == NATIVE_TARGET else writer.footer()
     return "\n".join(lines) + "\n"

@@ -183,10 +183,14 @@ def _expected(call, job, target, native, extra=()):
 
 def test_the_ab9_grind_post_writes_the_op_as_its_g83_block_or_expanded(shop):
     doc, block, job = shop
-    make_plunge_grind(job, (block, TOP), **VALUES)
+    op = make_plunge_grind(job, (block, TOP), **VALUES)
     post = post_module("ab9_grind")
     native = post.export([job], "-", "")
     assert native == _expected(CALL, job, "ab9grind", True)
+    op.CoolantMode = "Flood"
+    lines = post.export([job], "-", "").splitlines()
+    assert lines[5] == "M08" and lines[-2:] == ["M09", "M30"]
+    op.CoolantMode = "None"
     assert "G83 X105. I-5. Y20. J0.02 Z35. K5. L1 F60. E6000." in native.splitlines()
     assert post.export([job], "-", "--expand-cycles") == _expected(CALL, job, "ab9grind", False)
 

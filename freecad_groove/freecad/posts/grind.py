@@ -13,7 +13,8 @@ controller or a fixture block: nothing (the grinder has one wheel; its work
 offset is the machine's); an inactive op: nothing; a Plunge grind op: its
 plan (op.Proxy.current_plan; an op that cannot grind is refused with its
 message); any other object with a Path: its G0/G1 moves as they are (feeds
-in mm/min), comments dropped, any other command refused naming the op.
+in mm/min), comments dropped, any other command refused naming the op. An
+op's CoolantMode: M8 (flood) or M7 (mist) before it, M9 after it.
 """
 
 import argparse
@@ -30,6 +31,7 @@ from ..units import SECONDS_PER_MINUTE
 from .errors import PostError
 from .objects import is_fixture_block, is_job, is_tool_controller, job_of, label_of
 
+COOLANT_CODES = {"Flood": 8, "Mist": 7}  # CoolantMode -> M code; M9 after the op
 # post name -> (engine target, native G83 by default, title)
 GRIND_POSTS = {
     "ab9_grind": ("ab9grind", True, "Allen-Bradley 9/Series grinder (G83/G83.1 plunge grinding)"),
@@ -75,6 +77,11 @@ def _moves_of_path(obj: Any) -> List[Move]:
     return moves
 
 
+def _coolant(obj: Any) -> Optional[int]:
+    """The M code of the op's CoolantMode (8 flood, 7 mist), None for none."""
+    return COOLANT_CODES.get(str(getattr(obj, "CoolantMode", "None") or "None"))
+
+
 def _items(objects: Iterable[Any]) -> list:
     items = []
     for obj in objects:
@@ -91,9 +98,9 @@ def _items(objects: Iterable[Any]) -> list:
             except ValueError as e:
                 raise PostError(str(e), label_of(obj)) from None
             items.append(GrindItem("%s: %s" % (label_of(obj), plan.face_name), plan.call, plan.start, plan.safe_z,
-                                   plan.moves))
+                                   plan.moves, _coolant(obj)))
         elif hasattr(obj, "Path"):
-            items.append(PlainMoves(label_of(obj), _moves_of_path(obj)))
+            items.append(PlainMoves(label_of(obj), _moves_of_path(obj), _coolant(obj)))
     return items
 
 
