@@ -35,6 +35,7 @@ Errors never escape execute (as in groove_op.py): one line "<Label>: <message>"
 naming the property, the Path a comment repeating it, op_error(obj) keeps it.
 """
 
+import math
 import traceback
 from dataclasses import dataclass
 from typing import List, Optional
@@ -223,11 +224,13 @@ class ObjectPlungeGrind(PathOp.ObjectOp):
         out = []
         for prop, tc_prop in (("PlungeFeed", "VertFeed"), ("ReciprocationFeed", "HorizFeed")):
             value = getattr(obj, prop).Value
+            if not (value >= 0 and math.isfinite(value)):
+                raise GrindInputError("%s=%s mm/s: must be a finite feed, 0 or more" % (prop, value), (prop,))
             if value == 0 and tc is not None:
                 value = getattr(tc, tc_prop).Value
-            if not value > 0:
-                raise GrindInputError("%s=0: no feed (the tool controller's %s is 0 too): set %s"
-                                      % (prop, tc_prop, prop), (prop,))
+            if not (value > 0 and math.isfinite(value)):
+                raise GrindInputError("%s=0: no feed (the tool controller's %s is %s): set %s"
+                                      % (prop, tc_prop, value, prop), (prop,))
             out.append(value * SECONDS_PER_MINUTE)
         return tuple(out)
 

@@ -144,6 +144,9 @@ def test_a_face_narrower_than_the_wheel_gets_no_crossover():
     (TOP, dict(spark_out_passes=1000), "SparkOutPasses: G83 L=1000: must be a whole number from 0 to 999"),
     (TOP, dict(dress_count=2), "DressProgram: G83 P: must be programmed (D=2 dresses"),
     (TOP, dict(dress_program=10000), "DressProgram: G83 P=10000: must be a program number from 1 to 9999"),
+    (TOP, dict(plunge_feed=0), "PlungeFeed=0: no feed (the tool controller's VertFeed is 0.0): set PlungeFeed"),
+    (TOP, dict(reciprocation_feed=-1), "ReciprocationFeed=-1.0 mm/s: must be a finite feed, 0 or more"),
+    (TOP, dict(overtravel=float("nan")), "Overtravel=nan: must be a finite length, 0 or more"),
 ])
 def test_bad_inputs_give_one_line_naming_the_property(shop, face, values, message):
     doc, block, job = shop
