@@ -5,11 +5,12 @@ Headless layer: FreeCAD, Part and Path only. The class path
 ``freecad_groove.freecad.plunge_grind_op.ObjectPlungeGrind`` is stored in
 saved documents: it must never move.
 
-Axes (the op's, fixed; README "Plunge grind"): the face is planar and looks
-up (+Z); the wheel reciprocates along FreeCAD X (the face's length: its X
-extent), crosses over along FreeCAD Y (its width) and plunges down along -Z.
-In the G83's words: X/I = FreeCAD X, Y = FreeCAD Z, Z = FreeCAD Y (grinder X,
-Y, Z = FreeCAD X, Z, Y). The Path drives the lowest point of the wheel's
+Axes (README "Plunge grind"): the face is planar and looks up (+Z); the
+wheel reciprocates along FreeCAD X (ReciprocationAxis, or Y), crosses over
+along the other of X and Y and plunges down along -Z. In the G83's words:
+X/I = FreeCAD X, Y = FreeCAD Z, Z = FreeCAD Y (GrindPlan.axes "XZY"; with
+ReciprocationAxis Y: "YZX"). The grinder posts write with the same mapping
+(their --axes must agree). The Path drives the lowest point of the wheel's
 periphery at the middle of its width.
 
 The call (all absolute, G90): the reversal points I = the face's -X end -
@@ -63,10 +64,11 @@ class GrindPlan:
     """What the op grinds: the call, where the wheel stands before it, its expansion."""
 
     call: G83
-    start: MachineState  # x = FreeCAD X, y = FreeCAD Z (plunge), z = FreeCAD Y (crossover)
+    start: MachineState  # x reciprocation, y plunge (FreeCAD Z), z crossover
     moves: List[Move]
     safe_z: float
     face_name: str
+    axes: str = "XZY"  # the FreeCAD axes of the grinder's X, Y, Z words (reciprocation, plunge, crossover)
 
 
 @dataclass
@@ -79,6 +81,12 @@ class FlatFace:
     y_min: float
     y_max: float
     z: float
+
+    def along(self, axis: str) -> tuple:
+        """(length from, to, width from, to): along ``axis`` ("X" or "Y") and across it."""
+        if axis == "Y":
+            return self.y_min, self.y_max, self.x_min, self.x_max
+        return self.x_min, self.x_max, self.y_min, self.y_max
 
 
 def read_face(face: object, name: str) -> FlatFace:
@@ -181,6 +189,8 @@ class ObjectPlungeGrind(PathOp.ObjectOp):
             if name not in obj.PropertiesList:
                 obj.addProperty(type_id, name, group, tooltip)
                 setattr(obj, name, default)
+                if type_id == "App::PropertyEnumeration":
+                    setattr(obj, name, default[0])
         for name in DERIVED:
             obj.setEditorMode(name, 1)
 
@@ -256,14 +266,15 @@ class ObjectPlungeGrind(PathOp.ObjectOp):
         """(G83 or G83_1 call, start MachineState) for ``face`` (see the module notes)."""
         k, r = self._check(obj, width)
         feed, recip_feed = self.feeds(obj)
-        start_x = face.x_min - obj.Overtravel.Value
-        if face.y_max - face.y_min > width + TOLERANCE:
-            cross_start, cross_end = face.y_min + width / 2, face.y_max - width / 2
+        length_from, length_to, width_from, width_to = face.along(str(obj.ReciprocationAxis))
+        start_x = length_from - obj.Overtravel.Value
+        if width_to - width_from > width + TOLERANCE:
+            cross_start, cross_end = width_from + width / 2, width_to - width / 2
         else:
-            cross_start = cross_end = (face.y_min + face.y_max) / 2
+            cross_start = cross_end = (width_from + width_to) / 2
         start_y = _rounded(face.z + obj.Allowance.Value + obj.StartClearance.Value)
         kind = G83_1 if obj.DressFirst else G83
-        words = dict(X=face.x_max + obj.Overtravel.Value, I=start_x, Y=face.z, J=obj.PlungePick.Value,
+        words = dict(X=length_to + obj.Overtravel.Value, I=start_x, Y=face.z, J=obj.PlungePick.Value,
                      Z=cross_end, K=k, R=r if r != k else None, Q=obj.CrossoverPlungePick.Value or None,
                      L=int(obj.SparkOutPasses), F=feed, E=recip_feed, P=int(obj.DressProgram) or None,
                      D=int(obj.DressCount) or None)
@@ -283,21 +294,22 @@ class ObjectPlungeGrind(PathOp.ObjectOp):
         except CycleError as e:
             raise _named(e) from None
         safe = self.safe_z(obj) + obj.Retract.Value
-        self.check_clear(obj, face, call, start, width, safe)
-        return GrindPlan(call, start, moves, safe, face.name)
+        axes = "YZX" if str(obj.ReciprocationAxis) == "Y" else "XZY"
+        self.check_clear(obj, face, call, start, width, safe, axes)
+        return GrindPlan(call, start, moves, safe, face.name, axes)
 
     def check_clear(self, obj: object, face: FlatFace, call: G83, start: MachineState, width: float,
-                    safe: float) -> None:
+                    safe: float, axes: str) -> None:
         """GrindInputError (naming Base and Overtravel) when the model rises above the face anywhere the
         wheel's lowest point passes over it, between the reversal points and over the crossover, up to the
         safe height: a wall within the overtravel, or a face that is the floor of a pocket."""
         low, high = sorted((start.z, call.Z))
-        x0, x1 = sorted((call.I, call.X))
+        spans = {axes[0]: sorted((call.I, call.X)), axes[2]: [low - width / 2, high + width / 2]}
+        (x0, x1), (y0, y1) = spans["X"], spans["Y"]
         height = safe - face.z - CLEAR_ABOVE_MM
         if height <= 0:
             return
-        sweep = Part.makeBox(x1 - x0, high - low + width, height,
-                             FreeCAD.Vector(x0, low - width / 2, face.z + CLEAR_ABOVE_MM))
+        sweep = Part.makeBox(x1 - x0, y1 - y0, height, FreeCAD.Vector(x0, y0, face.z + CLEAR_ABOVE_MM))
         job = PathUtils.findParentJob(obj)
         for model in job.Model.Group:
             shape = getattr(model, "Shape", None)
@@ -305,7 +317,7 @@ class ObjectPlungeGrind(PathOp.ObjectOp):
                 raise GrindInputError(
                     "Base: the wheel's path over %s (X%g..%g, Y%g..%g) meets %s above the face: a wall within the "
                     "Overtravel or a pocket floor (reduce Overtravel, or grind another face)"
-                    % (face.name, x0, x1, low - width / 2, high + width / 2, job.Proxy.baseObject(job, model).Label),
+                    % (face.name, x0, x1, y0, y1, job.Proxy.baseObject(job, model).Label),
                     ("Base", "Overtravel"))
 
     def safe_z(self, obj: object) -> float:
@@ -327,13 +339,13 @@ def _rounded(value: object) -> object:
 
 def path_commands(plan: GrindPlan) -> list:
     """The op's Path commands (see the module notes)."""
-    start = plan.start
+    start, (recip, plunge, cross) = plan.start, plan.axes
     commands = [Path.Command("G17"), Path.Command(comment_body("%s: %s" % (plan.face_name, plan.call.emit()))),
-                Path.Command("G0", {"Z": plan.safe_z}), Path.Command("G0", {"X": start.x, "Y": start.z}),
-                Path.Command("G0", {"Z": start.y})]
+                Path.Command("G0", {plunge: plan.safe_z}), Path.Command("G0", {recip: start.x, cross: start.z}),
+                Path.Command("G0", {plunge: start.y})]
     for move in plan.moves:
         if move.kind == FEED:
-            commands.append(Path.Command("G1", {"X": move.x, "Y": move.z, "Z": move.y,
+            commands.append(Path.Command("G1", {recip: move.x, cross: move.z, plunge: move.y,
                                                 "F": move.f / SECONDS_PER_MINUTE}))
         elif move.kind == DRESS:
             commands.append(Path.Command(comment_body("DRESS P%d" % move.p)))

@@ -31,6 +31,9 @@ PROPERTIES = (
      0.0),
     ("App::PropertyLength", "SecondaryCrossPick", GROUP,
      _tip("G83 R: the cross pick at the secondary reversal, at most the wheel's width; 0 = CrossPick."), 0.0),
+    ("App::PropertyEnumeration", "ReciprocationAxis", GROUP,
+     _tip("The FreeCAD axis the wheel reciprocates along (the face's length; the crossover is along the other of "
+          "X and Y). The grinder posts' --axes must agree: XZY for X, YZX for Y."), ["X", "Y"]),
     ("App::PropertyLength", "Overtravel", GROUP,
      _tip("How far the wheel runs past each end of the face (the reversal points X and I): picks start while "
           "the reciprocating axis decelerates, so they must happen off the face."), DEFAULT_OVERTRAVEL_MM),

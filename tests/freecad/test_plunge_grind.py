@@ -325,3 +325,25 @@ def test_make_plunge_grind_refuses_bad_arguments_leaving_nothing_behind(shop, fa
     with pytest.raises(error, match=message):
         make_plunge_grind(job, face, **values)
     assert {o.Name for o in doc.Objects} == before
+
+
+def test_reciprocation_along_y_and_the_posts_axes():
+    doc, block, job = make_box_job((40, 100, 20))  # the face's length along Y
+    try:
+        op = make_plunge_grind(job, (block, TOP), reciprocation_axis="Y", **VALUES)
+        assert op_error(op) is None and op.GrindCall == CALL.emit()  # the same call: the face turned by 90 degrees
+        g1 = [c.Parameters for c in op.Path.Commands if c.Name == "G1"]
+        assert [(p["Y"], p["X"], p["Z"]) for p in g1] == [(m.x, m.z, m.y) for m in CALL.expand(START)]
+        post = post_module("ab9_grind")
+        with pytest.raises(PostError, match=r"^PlungeGrind: ReciprocationAxis=Y grinds with the grinder's X, Y, Z "
+                                            r"along FreeCAD YZX, the post's --axes is XZY"):
+            post.export([job], "-", "")
+        safe = max(job.Stock.Shape.BoundBox.ZMax, 20.0) + 5.0
+        item = GrindItem("PlungeGrind: Block.Face6", CALL, START, safe, CALL.expand(START))
+        custom = doc.addObject("Path::Feature", "Custom")
+        custom.Path = Path.Path([Path.Command("G0", {"X": 1, "Y": 2, "Z": 30})])
+        doc.recompute()
+        plain = PlainMoves("Custom", [Move(RAPID, 2.0, 1.0, y=30.0)])  # grinder X = FreeCAD Y, Z = FreeCAD X
+        assert post.export([op, custom], "-", "--axes YZX") == grind_program([item, plain], "ab9grind", True, "Job")
+    finally:
+        FreeCAD.closeDocument(doc.Name)

@@ -4,9 +4,10 @@ grind ops as native G83/G83.1 blocks, or expanded) and ``linuxcnc_grind``
 written by the engine (engine/grind_program.py); here the objects become its
 items.
 
-Axes: the Plunge grind op's (freecad/plunge_grind_op.py): grinder X, Y, Z =
-FreeCAD X, Z, Y (reciprocation along X, plunge along Z, crossover along Y);
-every other op's Path is written the same way.
+Axes: ``--axes`` (default XZY) names the FreeCAD axes of the grinder's X
+(reciprocation), Y (plunge) and Z (crossover) words: every other op's Path is
+written through it; a Plunge grind op grinds along its own (its
+ReciprocationAxis: XZY or YZX) and is refused when they differ.
 
 What a post writes for the objects: a Job: its operations in order; a tool
 controller or a fixture block: nothing (the grinder has one wheel; its work
@@ -31,6 +32,8 @@ from ..units import SECONDS_PER_MINUTE
 from .errors import PostError
 from .objects import is_fixture_block, is_job, is_tool_controller, job_of, label_of
 
+AXES = ("XZY", "YZX", "XYZ", "YXZ", "ZXY", "ZYX")
+DEFAULT_AXES = "XZY"
 COOLANT_CODES = {"Flood": 8, "Mist": 7}  # CoolantMode -> M code; M9 after the op
 # post name -> (engine target, native G83 by default, title)
 GRIND_POSTS = {
@@ -49,12 +52,15 @@ def make_grind_parser(name: str) -> argparse.ArgumentParser:
                            help="Plunge grind ops as G83/G83.1 blocks (the default)")
         group.add_argument("--expand-cycles", dest="native", action="store_false",
                            help="Plunge grind ops as their G1 moves (a dress cannot be written expanded)")
+    parser.add_argument("--axes", choices=AXES, default=DEFAULT_AXES,
+                        help="the FreeCAD axes of the grinder's X (reciprocation), Y (plunge), Z (crossover) words "
+                             "(default %s); a Plunge grind op's ReciprocationAxis must agree" % DEFAULT_AXES)
     parser.add_argument("--program-number", type=int, default=1, help="the O number (default 1)")
     parser.add_argument("--help", action="store_true", help="show these options, write no program")
     return parser
 
 
-def _moves_of_path(obj: Any) -> List[Move]:
+def _moves_of_path(obj: Any, axes: str) -> List[Move]:
     """The G0/G1 moves of ``obj``'s Path in grinder axes; PostError naming any other command."""
     where = {"X": None, "Y": None, "Z": None}
     moves = []
@@ -73,7 +79,7 @@ def _moves_of_path(obj: Any) -> List[Move]:
                                                                                   "/".join(unknown)), label_of(obj))
         rapid = name in ("G0", "G00")
         feed = None if rapid or "F" not in params else params["F"] * SECONDS_PER_MINUTE
-        moves.append(Move(RAPID if rapid else FEED, where["X"], where["Y"], feed, 0.0, where["Z"]))
+        moves.append(Move(RAPID if rapid else FEED, where[axes[0]], where[axes[2]], feed, 0.0, where[axes[1]]))
     return moves
 
 
@@ -82,11 +88,11 @@ def _coolant(obj: Any) -> Optional[int]:
     return COOLANT_CODES.get(str(getattr(obj, "CoolantMode", "None") or "None"))
 
 
-def _items(objects: Iterable[Any]) -> list:
+def _items(objects: Iterable[Any], axes: str) -> list:
     items = []
     for obj in objects:
         if is_job(obj):
-            items += _items(obj.Operations.Group)
+            items += _items(obj.Operations.Group, axes)
         elif is_tool_controller(obj) or is_fixture_block(obj) or not getattr(obj, "Active", True):
             continue
         elif isinstance(getattr(obj, "Proxy", None), ObjectPlungeGrind):
@@ -97,10 +103,14 @@ def _items(objects: Iterable[Any]) -> list:
                 plan = obj.Proxy.current_plan(obj)
             except ValueError as e:
                 raise PostError(str(e), label_of(obj)) from None
+            if plan.axes != axes:
+                raise PostError("ReciprocationAxis=%s grinds with the grinder's X, Y, Z along FreeCAD %s, the post's "
+                                "--axes is %s: give --axes %s or change ReciprocationAxis"
+                                % (obj.ReciprocationAxis, plan.axes, axes, plan.axes), label_of(obj))
             items.append(GrindItem("%s: %s" % (label_of(obj), plan.face_name), plan.call, plan.start, plan.safe_z,
                                    plan.moves, _coolant(obj)))
         elif hasattr(obj, "Path"):
-            items.append(PlainMoves(label_of(obj), _moves_of_path(obj), _coolant(obj)))
+            items.append(PlainMoves(label_of(obj), _moves_of_path(obj, axes), _coolant(obj)))
     return items
 
 
@@ -121,7 +131,7 @@ def _program(name: str, objects: Iterable[Any], argstring: Union[None, str, Sequ
     job = job_of(objects)
     target, native, _title = GRIND_POSTS[name]
     try:
-        return grind_program(_items(objects), target, getattr(options, "native", native),
+        return grind_program(_items(objects, options.axes), target, getattr(options, "native", native),
                              label_of(job) if job is not None else "FreeCAD", options.program_number)
     except ProgramError as e:
         raise PostError(str(e)) from None
