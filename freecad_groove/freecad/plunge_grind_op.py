@@ -13,9 +13,10 @@ ReciprocationAxis Y: "YZX"). The grinder posts write with the same mapping
 (their --axes must agree). The Path drives the lowest point of the wheel's
 periphery at the middle of its width.
 
-The call (all absolute, G90): the reversal points I = the face's -X end -
-Overtravel (the start) and X = its +X end + Overtravel; the crossover from the
-wheel flush with the face's -Y edge (start) to flush with its +Y edge (Z);
+The call (all absolute, G90): the reversal points I = the face's low end
+along ReciprocationAxis - Overtravel (the start) and X = its high end +
+Overtravel; the crossover from the wheel flush with the face's low edge
+across it (start) to flush with its high edge (Z);
 a face narrower than the wheel gets no crossover (the wheel centred on it).
 The start height is the face + Allowance + StartClearance; Y = the face.
 J, Q, K, R, L, F, E, P, D and G83.1 come from the properties
