@@ -113,6 +113,12 @@ def add_settings_options(parser: argparse.ArgumentParser) -> None:
         help="Allen-Bradley: G07 selects RADIUS mode and G08 diameter mode. Default: G07 = diameter, G08 = radius "
         "(the 9/Series manual uses both readings; check your control).",
     )
+    _add_clearance_and_limit_options(g)
+    _add_milltronics_options(g)
+
+
+def _add_clearance_and_limit_options(g: argparse._ArgumentGroup) -> None:
+    """The clearance of cycles without a retract parameter, CYCLE93's shop limit."""
     g.add_argument(
         "--clearance",
         type=not_negative,
@@ -126,6 +132,31 @@ def add_settings_options(parser: argparse.ArgumentParser) -> None:
         metavar="DEG",
         help="CYCLE93: refuse contours tilted more than DEG degrees from the groove's own axis (a shop "
         "limit; default: none, the whole ANGC range 0..180 is machined).",
+    )
+
+
+def _add_milltronics_options(g: argparse._ArgumentGroup) -> None:
+    """The Milltronics autoroutines' end mill and Z heights."""
+    g.add_argument(
+        "--tool-diameter",
+        type=positive,
+        metavar="D",
+        help="Milltronics G33/G34: the end mill's diameter, in the program's units. No default: the "
+        "autoroutines are refused without it.",
+    )
+    g.add_argument(
+        "--g31-clearance",
+        type=finite,
+        metavar="INCH",
+        help="Milltronics G31 before any R: the clearance Z (parameter 140), in inches (x 25.4 in a metric "
+        "program; default 0.1).",
+    )
+    g.add_argument(
+        "--g32-tool-change",
+        type=finite,
+        metavar="INCH",
+        help="Milltronics G32: the tool change Z (a machine builder's setting), in inches (x 25.4 in a metric "
+        "program; default 4).",
     )
 
 
@@ -155,6 +186,10 @@ def settings_from(args: argparse.Namespace) -> Settings:
         changes["clearance"] = args.clearance
     if args.max_contour_tilt is not None:
         changes["cycle93_max_contour_tilt"] = args.max_contour_tilt
+    for option, setting in (("tool_diameter", "mill_tool_diameter"), ("g31_clearance", "milltronics_clearance_inch"),
+                            ("g32_tool_change", "milltronics_tool_change_inch")):
+        if getattr(args, option, None) is not None:
+            changes[setting] = getattr(args, option)
     return replace(s, **changes) if changes else s
 
 

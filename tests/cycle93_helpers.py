@@ -1,6 +1,7 @@
 """Helpers shared by the CYCLE93 tests (test_cycle93.py,
-test_cycle93_simulation.py): the chip-breaking retracts of an expansion and
-the rule for what follows them."""
+test_cycle93_simulation.py, test_cycle93_air.py, test_cycle93_flank_steps.py):
+the chip-breaking retracts of an expansion and the rule for what follows
+them; the material standing when the contour passes begin."""
 
 import pytest
 
@@ -53,3 +54,30 @@ def assert_reentries(moves, plunge, vrt, clearance):
         assert on.kind == FEED and getattr(on, other) == at, (i, on)
         assert sign * (getattr(on, axis) - depth) > 0, (i, on)  # the next infeed goes deeper
     return len(breaks)
+
+
+def after_the_plunges(call, tool, start):
+    """(moves, first, remaining): the expansion of ``call`` from ``start`` (x,
+    z) with ``tool``, the index of its first contour-pass move (where it
+    differs from the expansion without contour and finishing passes), and the
+    material (shapely, from verify.simulate) standing before that move."""
+    from shapely.geometry import Polygon
+
+    from freecad_groove import verify as sim
+    from freecad_groove.engine import MachineState, Settings
+    from freecad_groove.engine.cycles.cycle93_geometry import GrooveGeometry
+
+    settings = Settings(tool=tool)
+    geo = call.geometry(settings)
+    state = MachineState(x=start[0], z=start[1])
+    moves = call.expand(state, settings)
+    original = GrooveGeometry._profile_passes
+    try:
+        GrooveGeometry._profile_passes = lambda self, *a: None
+        roughing = call.expand(state, settings)
+    finally:
+        GrooveGeometry._profile_passes = original
+    first = next(i for i, (a, b) in enumerate(zip(moves, roughing)) if a != b)
+    stock = Polygon([(z, x) for x, z in geo.stock_world()])
+    remaining = sim.simulate(moves[:first], tool, call.plunge_direction(), start, stock).remaining
+    return moves, first, remaining

@@ -77,3 +77,22 @@ def run(label, share, command, args=(), env_extra=None, timeout=1800, drop=()):
     if proc.returncode == 77:
         not_available(label, proc.stderr)
     return proc, where
+
+
+def once_per_label(write, tmp_path_factory, prefix):
+    """cases(label): what ``write(label, a new temporary folder named prefix...)``
+    returns, computed once per session and FreeCAD label; an outcome that
+    skipped or failed is raised again for every test that asks."""
+    outcomes = {}
+
+    def cases(label):
+        if label not in outcomes:
+            try:
+                outcomes[label] = write(label, tmp_path_factory.mktemp("%s%s-" % (prefix, label)))
+            except (Exception, pytest.skip.Exception, pytest.fail.Exception) as exc:
+                outcomes[label] = exc
+        if isinstance(outcomes[label], BaseException):
+            raise outcomes[label]
+        return outcomes[label]
+
+    return cases

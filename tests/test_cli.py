@@ -327,7 +327,8 @@ def test_demo_script(tmp_path):
                           timeout=300, env=dict(os.environ, PYTHON=sys.executable, FREECAD_GROOVE_DEMO_FREECAD="0"))
     assert proc.returncode == 0, proc.stderr
     names = sorted(os.listdir(tmp_path))
-    assert len(names) == 10 and "seed_cycle93.ngc" in names and "haas_g75.fanuc.nc" in names and "ab9_g83.ngc" in names
+    assert len(names) == 12 and "seed_cycle93.ngc" in names and "haas_g75.fanuc.nc" in names and "ab9_g83.ngc" in names
+    assert "milltronics_g33_g34.ngc" in names
     for name in names:
         assert str(tmp_path / name) in proc.stdout.decode()
 

@@ -27,7 +27,8 @@ EXAMPLE_OPTIONS = {
     "seed_cycle93.mpf": ["--dialect", "sinumerik", "--tool-table", TOOLS],
 }
 # Mill-style examples (a grinder's X/Y/Z): verify and plot refuse them with one line (no turned section)
-MILL_EXAMPLES = {"ab9_g83.nc": ["--dialect", "ab9grind"]}
+MILL_EXAMPLES = {"ab9_g83.nc": ["--dialect", "ab9grind"],
+                 "milltronics_g33_g34.nc": ["--dialect", "milltronics", "--tool-diameter", "0.25"]}
 SHARP_3MM = ["--dialect", "fanuc", "--tool-width", "3", "--tool-radius", "0"]
 
 # One groove 3 mm wide, 5 mm deep per side (X50 -> X40 at Z-10), pecked in

@@ -2,14 +2,14 @@
 measured with the shapely simulation against the moves themselves."""
 
 import pytest
+from cycle93_helpers import after_the_plunges
 from shapely.geometry import Polygon
 from test_cycle93_simulation import run
 
 from freecad_groove import verify as sim
-from freecad_groove.engine import GroovingTool, MachineState, Settings
+from freecad_groove.engine import GroovingTool, Settings
 from freecad_groove.engine.cycles import cycle93_material
 from freecad_groove.engine.cycles.cycle93 import Cycle93
-from freecad_groove.engine.cycles.cycle93_geometry import GrooveGeometry
 from freecad_groove.engine.moves import FEED
 from freecad_groove.verify.depth import depth_inside
 from freecad_groove.verify.overlay import area, difference, intersection
@@ -23,20 +23,8 @@ AIR_AREA = 1e-6  # mm^2: a feed removing less than this ran through air
 def air_feed(call, tool, start):
     """Length (mm) of the contour and finishing passes' feeds that remove no
     material, and the total feed length of the expansion."""
-    settings = Settings(tool=tool)
-    geo = call.geometry(settings)
-    state = MachineState(x=start[0], z=start[1])
-    moves = call.expand(state, settings)
-    original = GrooveGeometry._profile_passes
-    try:
-        GrooveGeometry._profile_passes = lambda self, *a: None
-        roughing = call.expand(state, settings)
-    finally:
-        GrooveGeometry._profile_passes = original
-    first = next(i for i, (a, b) in enumerate(zip(moves, roughing)) if a != b)
-    stock = Polygon([(z, x) for x, z in geo.stock_world()])
+    moves, first, remaining = after_the_plunges(call, tool, start)
     plunge = call.plunge_direction()
-    remaining = sim.simulate(moves[:first], tool, plunge, start, stock).remaining
     air = total = 0.0
     here = (moves[first - 1].x, moves[first - 1].z)
     for move in moves[first:]:

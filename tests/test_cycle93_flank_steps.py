@@ -10,14 +10,13 @@ w - 2r) across the groove, however wide the flank; measured here with the
 material-removal simulation, move by move."""
 
 import pytest
-from shapely.geometry import Polygon
+from cycle93_helpers import after_the_plunges
 from test_cycle93_simulation import run
 
 from freecad_groove import verify as sim
-from freecad_groove.engine import GroovingTool, MachineState, Settings
+from freecad_groove.engine import GroovingTool
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.cycles.cycle93_constants import WIDTH_STEP_FACTOR
-from freecad_groove.engine.cycles.cycle93_geometry import GrooveGeometry
 from freecad_groove.engine.moves import FEED
 from freecad_groove.verify.overlay import area, difference, intersection
 
@@ -35,20 +34,8 @@ def wide_flank_groove(typ=5, ang1=30.0, ang2=40.0, **kw):
 def step3_widths(call, tool, start):
     """For every feed of the contour passes (after the plunges): the width
     across the groove (along Z) of the material thicker than CHIP it removes."""
-    settings = Settings(tool=tool)
-    geo = call.geometry(settings)
-    state = MachineState(x=start[0], z=start[1])
-    moves = call.expand(state, settings)
-    original = GrooveGeometry._profile_passes
-    try:
-        GrooveGeometry._profile_passes = lambda self, *a: None
-        roughing = call.expand(state, settings)
-    finally:
-        GrooveGeometry._profile_passes = original
-    first = next(i for i, (a, b) in enumerate(zip(moves, roughing)) if a != b)
-    stock = Polygon([(z, x) for x, z in geo.stock_world()])
+    moves, first, remaining = after_the_plunges(call, tool, start)
     plunge = call.plunge_direction()
-    remaining = sim.simulate(moves[:first], tool, plunge, start, stock).remaining
     widths = []
     here = (moves[first - 1].x, moves[first - 1].z)
     for move in moves[first:]:

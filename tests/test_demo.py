@@ -38,7 +38,7 @@ from freecad_groove.engine.translator import translate_program
 SCRIPT = os.path.join(ROOT, "scripts", "demo")
 LABEL = "1.1"
 TIMEOUT = 1800  # seconds (the FreeCAD part takes a few seconds once FreeCAD is built)
-EXAMPLES = ["seed_cycle93", "ab9_g77", "fanuc_g75", "haas_g75", "ab9_g83"]
+EXAMPLES = ["seed_cycle93", "ab9_g77", "fanuc_g75", "haas_g75", "ab9_g83", "milltronics_g33_g34"]
 NATIVE = {"sinumerik": {"CYCLE93"}, "ab9": {"G77", "G76"}, "fanuc": {"G75", "G74"}, "haas": {"G75", "G74"}}
 SKIPPED = "FreeCAD part SKIPPED"
 

@@ -15,7 +15,7 @@ material).
 import json
 
 import pytest
-from freecad_roots import FREECADCMD, LABELS, describe, exec_code, run
+from freecad_roots import FREECADCMD, LABELS, describe, exec_code, once_per_label, run
 from shapely.geometry import Polygon
 
 from freecad_groove import verify as sim
@@ -30,19 +30,7 @@ CASES = 10  # the parts of model_parts.CASES
 @pytest.fixture(scope="session")
 def modelled(tmp_path_factory):
     """cases(label): the artifacts FreeCAD ``label`` wrote, once per session."""
-    outcomes = {}
-
-    def cases(label):
-        if label not in outcomes:
-            try:
-                outcomes[label] = _write(label, tmp_path_factory.mktemp("model-artifacts-%s-" % label))
-            except (Exception, pytest.skip.Exception, pytest.fail.Exception) as exc:
-                outcomes[label] = exc
-        if isinstance(outcomes[label], BaseException):
-            raise outcomes[label]
-        return outcomes[label]
-
-    return cases
+    return once_per_label(_write, tmp_path_factory, "model-artifacts-")
 
 
 def _write(label, share):

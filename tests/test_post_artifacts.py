@@ -29,7 +29,7 @@ import re
 
 import pytest
 import rs274
-from freecad_roots import FREECADCMD, LABELS, describe, exec_code, run
+from freecad_roots import FREECADCMD, LABELS, describe, exec_code, once_per_label, run
 from rs274 import RS274Error, canonical_matches, require_rs274, written_moves
 from shapely.geometry import Polygon
 from shapely.ops import unary_union
@@ -67,19 +67,7 @@ def write_artifacts(label, share):
 def posted(tmp_path_factory):
     """cases(label): the programs of FreeCAD ``label``, written once per session
     (an outcome that skipped or failed is repeated for every test that asks)."""
-    outcomes = {}
-
-    def cases(label):
-        if label not in outcomes:
-            try:
-                outcomes[label] = write_artifacts(label, tmp_path_factory.mktemp("post-artifacts-%s-" % label))
-            except (Exception, pytest.skip.Exception, pytest.fail.Exception) as exc:
-                outcomes[label] = exc
-        if isinstance(outcomes[label], BaseException):
-            raise outcomes[label]
-        return outcomes[label]
-
-    return cases
+    return once_per_label(write_artifacts, tmp_path_factory, "post-artifacts-")
 
 
 def run_rs274(text, tools):

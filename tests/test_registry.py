@@ -29,6 +29,7 @@ def test_every_input_control_calls_its_grooving_cycles():
         "fanuc": ["G74", "G75"],
         "haas": ["G74", "G75"],
         "gsk": ["G7.1", "G74", "G75"],
+        "milltronics": ["G31", "G32", "G33", "G34"],
     }
 
 

@@ -224,7 +224,7 @@ class ToyBladePlunge(ToyPlunge):
 def test_the_registry_carries_needs_blade():
     assert {entry.name: entry.needs_blade for entry in registry.cycles()} == {
         "CYCLE93": True, "G77": False, "G76": False, "G75": False, "G74": False, "G7.1": False,
-        "G83": False, "G83.1": False}
+        "G83": False, "G83.1": False, "G33": False, "G34": False, "G31": False, "G32": False}
 
 
 def test_a_cycle_that_needs_a_blade_by_its_declaration(monkeypatch):

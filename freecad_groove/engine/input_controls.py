@@ -41,6 +41,10 @@ FEED_MODE = "feed mode"
 DIAMETER = "diameter mode"
 SPEED_LIMIT = "spindle speed limit"
 CYCLE = "cycle"
+# G codes only a cycle's block may hold (Milltronics G99 and G41/G42 with G33/G34), two modal groups
+CYCLE_RETURN = "cycle option: return"
+CYCLE_COMPENSATION = "cycle option: compensation"
+CYCLE_OPTIONS = (CYCLE_RETURN, CYCLE_COMPENSATION)
 REFUSED = "refused"
 MODE_GROUPS = (UNITS, DISTANCE, FEED_MODE, DIAMETER)  # may share a block with a cycle
 
@@ -176,6 +180,8 @@ class InputControl:
     cycle_keeps_motion: bool = False  # after a cycle the motion mode is the one before it (group 00)
     program_numbers: bool = True  # an O number may name the program
     mill: bool = False  # mill-style programs (a grinder's X/Y/Z): X plain, Y words, output on the targets' mill twins
+    parameter_assignments: bool = False  # "P151=1" blocks set the cycles' P parameters (Milltronics)
+    feed_per_minute: bool = False  # feed per minute from the start (a mill), without G94
 
     def cycles(self) -> Tuple[CycleEntry, ...]:
         """The registered cycles of this control."""
@@ -215,6 +221,26 @@ _AB9_GRINDER_CODES = {
     "18": GCode(REFUSED, "plane selection: " + _GRINDER_AXES),
     "19": GCode(REFUSED, "plane selection: " + _GRINDER_AXES),
 }
+
+_MILLTRONICS_CODES = {
+    **{key: code for key, code in _COMMON.items() if key not in ("17", "18", "19", "96", "97")},
+    **_G58_G59,
+    **_G20_G21,
+    **_G90_G91,
+    "2": GCode(REFUSED, "arcs (G02/G03) in a Milltronics program are not translated"),
+    "3": GCode(REFUSED, "arcs (G02/G03) in a Milltronics program are not translated"),
+    "17": GCode(REFUSED, "plane selection is not translated: the output is in the XY plane (G17) already"),
+    "18": GCode(REFUSED, "plane selection: only the XY plane (G17) is translated"),
+    "19": GCode(REFUSED, "plane selection: only the XY plane (G17) is translated"),
+    "43": GCode(REFUSED, "tool length offset (G43 H) is not translated: the expanded moves are in the program's "
+                "coordinates; apply the offset on the target machine"),
+    "99": GCode(CYCLE_RETURN, "G99"),
+    "41": GCode(CYCLE_COMPENSATION, "G41"),
+    "42": GCode(CYCLE_COMPENSATION, "G42"),
+}
+
+_MILLTRONICS_TOOLS = ("tool changes and offsets (T, D, H) in a Milltronics program are not translated: one end mill "
+                      "per program, its diameter given by --tool-diameter; set its offsets on the target machine")
 
 _FANUC = InputControl(
     name="fanuc",
@@ -265,6 +291,20 @@ INPUT_CONTROLS: Dict[str, InputControl] = {
             plain_letters=frozenset("XYZFSTMG"),
             dwell_unsupported="G04: the 9/Series dwell word is not documented here; not translated",
             mill=True,
+        ),
+        InputControl(
+            name="milltronics",
+            maker="Milltronics",
+            help="Milltronics mill (G33 facing and G34 rectangular pocket autoroutines with P151=.. assignment "
+            "blocks, G31/G32 Z to clearance / tool change; X/Y/Z, feed per minute; G20/G21, G90/G91)",
+            g_codes=_MILLTRONICS_CODES,
+            plain_letters=frozenset("XYZFSMG"),
+            letter_refusals={letter: _MILLTRONICS_TOOLS for letter in "TDH"},
+            decimal_point=False,  # the seed writes X1 Y2 F20 for 1", 2", 20 in/min
+            dwell_unsupported="G04: the Milltronics dwell word is not documented here; not translated",
+            mill=True,
+            parameter_assignments=True,
+            feed_per_minute=True,
         ),
         _FANUC,
         replace(  # a Fanuc-like lathe that reads the dwell P with or without a decimal point

@@ -10,7 +10,7 @@ translator's business (translator.py).
 """
 
 import re
-from typing import List, NamedTuple, NoReturn, Optional, Set
+from typing import List, NamedTuple, NoReturn, Optional, Set, Tuple
 
 from .errors import ProgramError
 from .input_controls import InputControl, input_control
@@ -32,7 +32,7 @@ class Word(NamedTuple):
 class Block:
     """One line of an input program, read into words."""
 
-    __slots__ = ("line", "text", "delete", "number", "words", "keywords", "call", "comments", "percent")
+    __slots__ = ("line", "text", "delete", "number", "words", "keywords", "call", "comments", "percent", "parameters")
 
     def __init__(self, line: int, text: str) -> None:
         self.line = line
@@ -44,6 +44,7 @@ class Block:
         self.call: Optional[str] = None  # Siemens "CYCLE93(...)" as written, name upper case
         self.comments: List[str] = []
         self.percent = False
+        self.parameters: List[Tuple[str, str]] = []  # Milltronics "P151=1": ("P151", "1")
 
     def get(self, letter: str) -> Optional[Word]:
         """The first word with ``letter``, or None."""
@@ -62,7 +63,7 @@ class Block:
 
     def is_empty(self) -> bool:
         """True when the block holds nothing but comments."""
-        return not (self.words or self.keywords or self.call or self.number is not None)
+        return not (self.words or self.keywords or self.call or self.parameters or self.number is not None)
 
     def __repr__(self) -> str:
         return "Block(%d, %r)" % (self.line, self.text)
@@ -157,6 +158,11 @@ class _BlockReader:
         if self.control.long_names and self.char(self.pos) == "=":
             self.pos = self.skip_space(self.pos + 1)
         number = self.read_number(letter, "%s %s" % (letter, _NOT_EVALUATED))
+        if letter == "P" and self.control.parameter_assignments and self.char(self.skip_space(self.pos)) == "=":
+            self.pos = self.skip_space(self.skip_space(self.pos) + 1)
+            name = "P" + number
+            self.block.parameters.append((name, self.read_number(name + "=", "%s= %s" % (name, _NOT_EVALUATED))))
+            return
         if letter != "N":
             self.block.words.append(Word(letter, number, float(number)))
             return

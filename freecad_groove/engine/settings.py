@@ -44,6 +44,22 @@ class Settings:
     # when the cycle itself has no retract parameter (per side).
     clearance: float = 1.0
 
+    # Milltronics G33/G34: the end mill's diameter (None: unknown, and the
+    # autoroutines are refused; there is no default tool).
+    mill_tool_diameter: Optional[float] = None
+
+    # Milltronics G33/G34: how far the tool rises above the depth just cut
+    # before it goes to the next depth's start, in inches (the seed's 0.1";
+    # 2.54 mm in a metric program).
+    milltronics_lift_inch: float = 0.1
+
+    # Milltronics G31 without an earlier R in the program: the clearance
+    # position (the control's parameter 140), and G32's tool change position
+    # (set by the machine builder), as Z in inches (x 25.4 in a metric
+    # program). The translated program's comment shows the Z used.
+    milltronics_clearance_inch: float = 0.1
+    milltronics_tool_change_inch: float = 4.0
+
     def retract_e(self, metric: bool = True) -> float:
         """The peck retract e in the program's units."""
         if self.peck_retract is not None:

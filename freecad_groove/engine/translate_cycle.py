@@ -5,8 +5,9 @@ from dataclasses import replace
 from typing import List, NamedTuple, Optional, Sequence
 
 from .errors import CycleError, ProgramError
-from .input_controls import CYCLE, MODE_GROUPS
+from .input_controls import CYCLE, CYCLE_OPTIONS, MODE_GROUPS
 from .moves import MachineState, Move
+from .numbers import MAX_WORD
 from .reader import Block, Word
 from .registry import CycleEntry
 from .settings import Settings
@@ -78,6 +79,8 @@ class CycleTranslation(TranslatorBase):
             if memory_key:
                 model = self._with_memory(memory_key, model, start)
             moves = model.expand(start, settings)
+            if hasattr(model, "note"):  # what the call did that its words do not say (G32: the Z used)
+                label = "%s: %s" % (label, model.note(start, settings))
             self._collect_warnings(entry, model, start, settings)
         except CycleError as exc:
             self._fail(exc.message)
@@ -92,7 +95,7 @@ class CycleTranslation(TranslatorBase):
     def _cycle_call(self, block: Block, groups: Groups) -> CycleCall:
         """The cycle's name, text and words; refuses what may not share its block."""
         for group, code in groups.items():
-            if group not in MODE_GROUPS and group != CYCLE:
+            if group not in MODE_GROUPS + CYCLE_OPTIONS and group != CYCLE:
                 self._fail("G%s shares the block with the cycle call: only N, a comment and mode codes may"
                            % code.word.text + " share it")
         others = [word for word in block.words if word.letter != "G"]
@@ -110,7 +113,34 @@ class CycleTranslation(TranslatorBase):
         if block.keywords:
             self._fail("%s shares the block with %s" % (block.keywords[0], name))
         written = "G" + groups[CYCLE].word.text  # the spelling read (GSK G07.1, G107)
+        for group in CYCLE_OPTIONS:  # Milltronics G99, G41/G42: read by the cycle
+            if group in groups:
+                written += " G" + groups[group].word.text
         return CycleCall(name, " ".join([written] + ["%s%s" % (word.letter, word.text) for word in others]), others)
+
+    # -- parameter assignments (Milltronics "P151=1") ------------------------------------
+
+    def _parameter_block(self, block: Block) -> None:
+        """``P151=1``: a P parameter of the control's cycles (class PARAMETERS), kept
+        in the program's memory (class MEMORY) for the calls that follow."""
+        name, text = block.parameters[0]
+        if block.words or block.keywords or block.call or len(block.parameters) > 1:
+            self._fail("%s=%s: a parameter assignment stands alone in its block" % (name, text))
+        cycle = next((e.cycle_class for e in self.control.cycles() if getattr(e.cycle_class, "PARAMETERS", ())), None)
+        known = cycle.PARAMETERS if cycle is not None else ()
+        key = "P%d" % int(name[1:]) if name[1:].isdigit() else name
+        if key not in known:
+            self._fail("%s=%s: not a parameter of the %s cycles (%s)" % (name, text, self.control.maker,
+                                                                        ", ".join(known) or "none"))
+        value = float(text)
+        if not abs(value) < MAX_WORD:
+            self._fail("%s=%s: must be less than %g in magnitude" % (name, text, MAX_WORD))
+        self._not_ambiguous("cycle_memory", why="the parameters %s calls read" % cycle.NAME)
+        memory = dict(self.state.cycle_memory.get(cycle.MEMORY, {}), **{key: value})
+        self.state.cycle_memory = dict(self.state.cycle_memory, **{cycle.MEMORY: memory})
+        self._defined.add("cycle_memory")
+        self._emit(self._words_line(block, [], "%s=%s: for the %s that follow" % (
+            key, text, "/".join(e.name for e in self.control.cycles() if getattr(e.cycle_class, "PARAMETERS", ())))))
 
     # -- a cycle over several blocks (GSK G7.1 ... G7.1 C0) ------------------------------
 
@@ -196,7 +226,8 @@ class CycleTranslation(TranslatorBase):
     def _with_memory(self, key: str, model: object, start: MachineState) -> object:
         """A cycle with a program memory (class MEMORY, G83): the words it omits
         from the previous cycle of its kind; what it leaves for the next one."""
-        self._not_ambiguous("cycle_memory", why="the words %s takes from the cycle before" % model.NAME)
+        why = getattr(model, "MEMORY_WHAT", "the words %s takes from the cycle before") % model.NAME
+        self._not_ambiguous("cycle_memory", why=why)
         model = model.with_earlier(self.state.cycle_memory.get(key, {}), start)
         self.state.cycle_memory = dict(self.state.cycle_memory, **{key: model.remembered(start)})
         self._defined.add("cycle_memory")

@@ -122,7 +122,17 @@ import re
 from typing import Iterable, Iterator, List, Optional, Tuple, Union
 
 from .errors import CycleError, ProgramError
-from .input_controls import COMPENSATION, CYCLE, DWELL, OFFSET, PLANE, REFUSED, g_code_key, input_control
+from .input_controls import (
+    COMPENSATION,
+    CYCLE,
+    CYCLE_OPTIONS,
+    DWELL,
+    OFFSET,
+    PLANE,
+    REFUSED,
+    g_code_key,
+    input_control,
+)
 from .modal import TRACKED, ModalState
 from .moves import MachineState
 from .reader import Block, parse_block
@@ -170,6 +180,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
             state.feed_per_rev = start.feed_per_rev
         if self.control.mill:
             state.diameter = False  # X is a plain coordinate
+        if self.control.feed_per_minute and state.feed_per_rev is None:
+            state.feed_per_rev = False  # a mill feeds per minute (Milltronics: no G94 in its programs)
         self.state = state
         self.start_metric = state.metric
         self.start_feed_per_rev = state.feed_per_rev
@@ -240,6 +252,9 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         for letter in set(letters):
             if letter not in ("G", "M") and letters.count(letter) > 1:
                 self._fail("%s is programmed twice in the block" % letter)
+        if block.parameters:
+            self._parameter_block(block)
+            return
         groups = self._g_codes(block)
         if block.call is not None or CYCLE in groups:
             self._cycle_block(block, groups)
@@ -277,6 +292,10 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         """A block without a cycle or dwell: modes, tool, spindle, M codes, motion."""
         state = self.state
         self._check_plain_letters(block)
+        for group in CYCLE_OPTIONS:
+            if group in groups:
+                self._fail("G%s: only a cycle's block (%s) may hold it" % (
+                    groups[group].word.text, "/".join(entry.name for entry in self.control.cycles())))
         early: List[str] = []  # Fanuc output: blocks that must stand alone before this one
         output: List[str] = []
         self._modes(block, groups, output, early)

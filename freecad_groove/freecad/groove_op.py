@@ -90,7 +90,7 @@ from .groove_properties import (  # noqa: F401 - this module's API too
     error_properties,
 )
 from .links import SafeEnvelope
-from .model_grooves import MODEL_VALUES, ModelGroove, not_overridden, read_picked_groove
+from .model_grooves import MODEL_VALUES, ModelGroove, not_overridden, read_picked_groove, with_model_hint
 from .op_path import comment_body, path_commands
 from .units import feed_mm_per_min, length_mm
 
@@ -419,7 +419,7 @@ class ObjectGroove(PathOp.ObjectOp):
             try:
                 faces.append(analyse_face(shape, name))
             except ValueError as e:
-                raise GrooveInputError(str(e), ("Base",)) from None
+                raise GrooveInputError(with_model_hint(str(e), base.Shape, sub), ("Base",)) from None
         return faces
 
     def settings(self, obj: object) -> Settings:

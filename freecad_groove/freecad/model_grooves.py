@@ -193,3 +193,17 @@ def not_overridden(values: Dict[str, object], overrides: List[str]) -> Dict[str,
         if not {name, corner, corner + "Type"} & set(overrides):
             out[name] = value
     return out
+
+
+MODEL_HINT = 'It is a face of a modelled groove: tick "Groove from the model" (ModelGroove) to cut that groove'
+
+
+def with_model_hint(message: str, shape: object, sub: str) -> str:
+    """A face error ``message`` for face ``sub`` of ``shape``, with MODEL_HINT
+    when the face belongs to a groove in the model (a corner radius is a torus,
+    which no groove typed in by its values goes on)."""
+    try:
+        read_model_groove(shape, sub, sub)
+    except ValueError:
+        return message
+    return "%s. %s" % (message, MODEL_HINT)

@@ -74,23 +74,31 @@ class CommandGroove:
 
 
 class Manipulator:
-    """Puts the command into CAM's toolbar and menu whenever CAM is built."""
+    """Puts ``command`` at the end of CAM's toolbar ``toolbar`` and into its
+    menu right after ``menu_after`` whenever CAM is built."""
+
+    def __init__(self, command: str, toolbar: str, menu_after: str):
+        self.command, self.toolbar, self.menu_after = command, toolbar, menu_after
 
     def modifyToolBars(self):
-        return [{"append": COMMAND, "toolBar": TOOLBAR}]
+        return [{"append": self.command, "toolBar": self.toolbar}]
 
     def modifyMenuBar(self):
-        # "insert" with "after" puts it right after MENU_AFTER; "append" would
-        # put it at the very end of the menu that holds MENU_AFTER.
-        return [{"insert": COMMAND, "menuItem": MENU_AFTER, "after": ""}]
+        # "insert" with "after" puts it right after menu_after; "append" would
+        # put it at the very end of the menu that holds menu_after.
+        return [{"insert": self.command, "menuItem": self.menu_after, "after": ""}]
 
 
-_manipulator = None
+_manipulators = {}  # command name -> its Manipulator (added once)
+
+
+def add_to_cam(name: str, command: object, toolbar: str, menu_after: str) -> None:
+    """Add FreeCAD command ``name`` and (once) its place in CAM's toolbar and menu."""
+    FreeCADGui.addCommand(name, command)
+    if name not in _manipulators:
+        _manipulators[name] = Manipulator(name, toolbar, menu_after)
+        FreeCADGui.addWorkbenchManipulator(_manipulators[name])
 
 
 def register():
-    global _manipulator
-    FreeCADGui.addCommand(COMMAND, CommandGroove())
-    if _manipulator is None:
-        _manipulator = Manipulator()
-        FreeCADGui.addWorkbenchManipulator(_manipulator)
+    add_to_cam(COMMAND, CommandGroove(), TOOLBAR, MENU_AFTER)

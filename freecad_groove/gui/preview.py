@@ -46,7 +46,8 @@ def polylines(plans):
     return sections, rapids, feeds
 
 
-def _lines(color, width, pattern=None):
+def line_nodes(color: tuple, width: float, pattern: object = None) -> tuple:
+    """(separator, coordinates, line set) of Coin nodes drawing lines in ``color``."""
     sep = coin.SoSeparator()
     mat = coin.SoBaseColor()
     mat.rgb.setValue(*color)
@@ -81,9 +82,9 @@ class Preview:
         pick = coin.SoPickStyle()
         pick.style = coin.SoPickStyle.UNPICKABLE
         self.root.addChild(pick)
-        self._section = _lines(SECTION_COLOR, 3)
-        self._rapid = _lines(RAPID_COLOR, 1, 0x0F0F)
-        self._feed = _lines(FEED_COLOR, 1.5)
+        self._section = line_nodes(SECTION_COLOR, 3)
+        self._rapid = line_nodes(RAPID_COLOR, 1, 0x0F0F)
+        self._feed = line_nodes(FEED_COLOR, 1.5)
         for separator, _coords, _line_set in (self._section, self._rapid, self._feed):
             self.root.addChild(separator)
         self.sections, self.rapids, self.feeds = [], [], []

@@ -61,6 +61,7 @@ from .widgets import (
     new_warning_label,
     select_data,
     show_error,
+    show_quantity,
     show_warnings,
 )
 
@@ -314,7 +315,7 @@ class GroovePage(PathOpGui.TaskPanelPage):
             if prop.endswith("Type"):
                 select_data(widget, value)
             else:
-                widget.setProperty("rawValue", float(value))
+                show_quantity(widget, value)
             widget.blockSignals(False)
         self._show_from_model()
 

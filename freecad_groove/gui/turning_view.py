@@ -15,6 +15,8 @@ from pivy import coin
 from PySide import QtGui
 
 from . import ICON
+from .command import add_to_cam
+from .preview import line_nodes
 
 COMMAND_CHECK = "FreeCADGroove_CheckTurning"
 _open_panel = None  # the TurningPanel shown in the task view, if any
@@ -44,19 +46,6 @@ def rings(geometry):
     return out
 
 
-def _layer(color, width):
-    separator = coin.SoSeparator()
-    material = coin.SoBaseColor()
-    material.rgb.setValue(*color)
-    style = coin.SoDrawStyle()
-    style.lineWidth = width
-    coords = coin.SoCoordinate3()
-    lines = coin.SoLineSet()
-    for node in (material, style, coords, lines):
-        separator.addChild(node)
-    return separator, coords, lines
-
-
 class SectionDrawing:
     """Coin nodes in a view's scene graph; show(result) redraws, remove()
     takes them out. ``drawn`` holds the rings of each layer by name."""
@@ -72,7 +61,7 @@ class SectionDrawing:
         self.root.addChild(pick)
         self._layers = {}
         for name, color, width in self.LAYERS:
-            self._layers[name] = _layer(color, width)
+            self._layers[name] = line_nodes(color, width)
             self.root.addChild(self._layers[name][0])
         self.drawn = {name: [] for name, _c, _w in self.LAYERS}
         self._graph = view.getSceneGraph() if view is not None else None
@@ -202,22 +191,5 @@ class CommandCheckTurning:
         return _open_panel
 
 
-class Manipulator:
-    """Puts the command into CAM's Project Setup toolbar and after CAM_Sanity in its menu."""
-
-    def modifyToolBars(self):
-        return [{"append": COMMAND_CHECK, "toolBar": TOOLBAR}]
-
-    def modifyMenuBar(self):
-        return [{"insert": COMMAND_CHECK, "menuItem": MENU_AFTER, "after": ""}]
-
-
-_manipulator = None
-
-
 def register():
-    global _manipulator
-    FreeCADGui.addCommand(COMMAND_CHECK, CommandCheckTurning())
-    if _manipulator is None:
-        _manipulator = Manipulator()
-        FreeCADGui.addWorkbenchManipulator(_manipulator)
+    add_to_cam(COMMAND_CHECK, CommandCheckTurning(), TOOLBAR, MENU_AFTER)

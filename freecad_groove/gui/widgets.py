@@ -270,6 +270,28 @@ def new_warning_label(form: object) -> object:
     return label
 
 
+FIELD_MAX_DECIMALS = 6  # a model's values carry 6 decimals (cycle93_recognize.VALUE_DECIMALS)
+
+
+def field_decimals(value: float, least: int) -> int:
+    """The fewest decimals, at least ``least``, that show ``value`` exactly (at most FIELD_MAX_DECIMALS)."""
+    for digits in range(least, FIELD_MAX_DECIMALS):
+        if abs(round(value, digits) - value) <= 1e-12 * max(1.0, abs(value)):
+            return digits
+    return max(least, FIELD_MAX_DECIMALS)
+
+
+def show_quantity(widget: object, value: float) -> None:
+    """Show ``value`` (in the field's unit) in a Gui::QuantitySpinBox with as many decimals as it has. Its
+    rawValue keeps only the decimals shown (the user's preference, 2 by default), so a value from the model
+    (6.212132 mm) would reach the op rounded on OK, as a change (an override of the model's value)."""
+    quantity = FreeCAD.Units.Quantity(float(value), widget.property("value").Unit)
+    number_format = dict(quantity.Format)
+    number_format["Precision"] = field_decimals(float(value), int(number_format["Precision"]))
+    quantity.Format = number_format
+    widget.setProperty("value", quantity)
+
+
 class QuantityFields:
     """Quantity fields (Gui::QuantitySpinBox, unit set in the .ui) for op
     properties. Not CAM's PathGuiUtil.QuantitySpinBox: that one resets a field
@@ -285,7 +307,7 @@ class QuantityFields:
         """Show the op's values (no change signals)."""
         for prop, widget in self.widgets.items():
             widget.blockSignals(True)
-            widget.setProperty("rawValue", float(getattr(obj, prop).Value))
+            show_quantity(widget, getattr(obj, prop).Value)
             widget.blockSignals(False)
 
     def write_to(self, obj: object) -> None:

@@ -171,15 +171,16 @@ def close_shop(doc):
     process()
 
 
-def make_gui_shop(name, feed="120 mm/min"):
-    """(doc, job, model): the stepped shaft of tests/freecad/parts.py in a new
-    document, in a Job made as CAM's GUI makes it (with its view provider);
-    its tool controllers feed at ``feed`` (None: as the Job made them)."""
+def make_gui_shop(name, feed="120 mm/min", shape=None):
+    """(doc, job, model): the stepped shaft of tests/freecad/parts.py (or
+    ``shape``) in a new document, in a Job made as CAM's GUI makes it (with
+    its view provider and its default stock around that shape); its tool
+    controllers feed at ``feed`` (None: as the Job made them)."""
     import Path.Main.Gui.Job as PathJobGui
 
     doc = FreeCAD.newDocument(name)
     shaft = doc.addObject("Part::Feature", "Shaft")
-    shaft.Shape = shaft_shape()
+    shaft.Shape = shaft_shape() if shape is None else shape
     doc.recompute()
     job = PathJobGui.Create([shaft], openTaskPanel=False)
     for tc in job.Tools.Group if feed is not None else []:

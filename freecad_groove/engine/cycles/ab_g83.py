@@ -65,7 +65,7 @@ from ..moves import DRESS, FEED, MachineState, Move
 from ..numbers import MAX_MOVES
 from ..registry import G_WORD, register
 from ..settings import DEFAULT_SETTINGS, Settings
-from .pecking import TOLERANCE, check_number, format_number, read_block
+from .pecking import TOLERANCE, check_number, format_number, read_block, words_text
 
 __all__ = ["G83", "G83_1", "GrindPlan", "MAX_PROGRAM_NUMBER", "MAX_COUNT"]
 
@@ -165,12 +165,7 @@ class G83:
 
     def emit(self) -> str:
         """The block as the control reads it (no N number, no end of block)."""
-        parts = [self.NAME]
-        for letter in self.WORDS:
-            value = getattr(self, letter)
-            if value is not None:
-                parts.append(letter + (str(value) if letter in self.COUNTED else format_number(value, letter)))
-        return " ".join(parts)
+        return words_text(self, self.NAME, self.WORDS, self.COUNTED)
 
     def _error(self, letter: str, rule: str) -> CycleError:
         return CycleError(letter, getattr(self, letter), rule, cycle=self.NAME)

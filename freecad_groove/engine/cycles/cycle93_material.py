@@ -168,36 +168,6 @@ def _floored(field: Curve, low: Curve, floor: List[Point], x0: float, x1: float,
     return False
 
 
-def _candidates(field: Curve, low: Curve, x0: float, x1: float) -> List[float]:
-    """The ends of (x0, x1) and, inside, where the field (a line) has the slope
-    of the outline (an arc): field minus outline peaks at one of them."""
-    out = [x0, x1]
-    if field.kind == LINE and low.kind == CUP:
-        m = -field.size  # the field is stored negated
-        x = low.cu + low.size * m / math.sqrt(1.0 + m * m)
-        if x0 < x < x1:
-            out.append(x)
-    return out
-
-
-def _floored(field: Curve, low: Curve, floor: List[Point], x0: float, x1: float, limit: float) -> bool:
-    """Whether the field stands more than ``limit`` over (x0, x1) above the
-    outline ``low`` raised to the floor less FLOOR_TOL: per straight piece of
-    the floor, at the candidates and where the outline crosses the floor."""
-    i = max(bisect_right(floor, (x0, math.inf)) - 1, 0)
-    while i + 1 < len(floor) and floor[i][0] < x1:
-        (u0, v0), (u1, v1) = floor[i], floor[i + 1]
-        i += 1
-        y0, y1 = max(u0, x0), min(u1, x1)
-        if u1 <= u0 or y1 <= y0:
-            continue
-        line = Curve(u0, u1, LINE, u0, v0 - FLOOR_TOL, (v1 - v0) / (u1 - u0))
-        for y in _candidates(field, low, y0, y1) + [y for y in crossings(low, line) if y0 < y < y1]:
-            if -value(field, y) - max(value(low, y), value(line, y)) > limit:
-                return True
-    return False
-
-
 def top_at(top: List[Point], x: float) -> Point:
     """(level just left of x, just right of x) of a material top (points by
     increasing u, a vertical step as two points at one u)."""

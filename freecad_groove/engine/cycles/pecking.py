@@ -63,6 +63,17 @@ def format_number(value: float, letter: str = "") -> str:
     return format_decimal(value, decimals(letter))
 
 
+def words_text(model: object, name: str, words: Sequence[str], counted: Sequence[str]) -> str:
+    """A block: ``name``, then each word of ``words`` that ``model`` holds (not
+    None), the ``counted`` ones as whole numbers, the others by format_number."""
+    parts = [name]
+    for letter in words:
+        value = getattr(model, letter)
+        if value is not None:
+            parts.append(letter + (str(value) if letter in counted else format_number(value, letter)))
+    return " ".join(parts)
+
+
 def check_number(cycle: str, letter: str, value: object, counted: bool = False) -> None:
     """Refuse a word value the control cannot read back exactly as held."""
     if counted:
@@ -467,12 +478,7 @@ class PeckingCycle:
         return [CycleWarning(self.NAME, self.RELIEF, message)]
 
     def _words_text(self):
-        parts = [self.NAME]
-        for letter in self.WORDS:
-            value = getattr(self, letter)
-            if value is not None:
-                parts.append(letter + (str(value) if letter in self.COUNTED else format_number(value, letter)))
-        return " ".join(parts)
+        return words_text(self, self.NAME, self.WORDS, self.COUNTED)
 
     def emit(self) -> str:
         """The block as the control reads it (no N number, no end of block)."""

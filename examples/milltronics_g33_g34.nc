@@ -1,0 +1,21 @@
+(Milltronics mill: the seed's facing example, then a rectangular pocket, 0.25" end mill)
+(expand: --dialect milltronics --tool-diameter 0.25)
+N1 G20 G90 (inch/absolute)
+N2 S1000 M3 (spindle CW 1000 RPM; the seed's D1 G43 H1 is set on the target machine)
+N3 G0 X1 Y2 Z1. (rapid to the center of the pocket)
+N4 F20 (X-Y feedrate)
+N5 P151=1 (X dimension)
+N6 P152=3 (Y dimension)
+N7 P155=.1 (cut width)
+N8 G33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5
+N9 G31 (Z to the clearance: R.1)
+N10 G0 X4 Y2 (the centre of the pocket)
+N11 P151=2 (X dimension)
+N12 P152=1.5 (Y dimension)
+N13 P150=.25 (corner radius)
+N14 P153=.01 (X-Y finish stock)
+N15 P154=.01 (Z finish stock)
+N16 P155=.15 (cut width)
+N17 G34 G99 G41 R.1 Z-.4 V-.1 Q.15 F5
+N18 G32 (Z to the tool change position)
+N19 M30

@@ -1,0 +1,532 @@
+"""Milltronics mill autoroutines G33 (facing a rectangle) and G34 (clearing a
+rectangular pocket), seed 004 (section four of a Milltronics mill manual).
+
+Program shape [documented]: the P parameters are set by assignment blocks
+before the call (``P151=1``) and stay in force until changed; the call block
+holds the autoroutine's G code, G99 (return to the Z clearance at the end),
+G41 or G42 (cutter compensation on), R (clearance plane), Z (final depth), V
+(first depth; omitted: R - Q), Q (Z increment) and F (Z feed; the X-Y feed is
+the F in force before the call). The rectangle is P151 (X size) x P152 (Y size)
+centred on the XY position before the call; P155 is the cut width.
+
+A model holds the block's words and the P parameters it runs with; ``emit()``
+writes the assignment blocks and then the call, ``parse()`` reads them back.
+
+Expansion (choices the manual leaves open are marked [choice]; each is a README
+row with a test), the tool an end mill of diameter ``Settings.mill_tool_diameter``:
+
+- Depths [documented + choice]: V, V - Q, ... down to Z (the last step clipped
+  at Z). Between depths the tool rises ``Settings.milltronics_lift_inch`` (0.1",
+  2.54 mm in a metric program) above the depth just cut and rapids to the next
+  depth's start, then feeds down at the Z feed.
+- The tool stays inside the rectangle [choice]: its edge touches the sides, so
+  its centre runs inset by the tool radius (G41 and G42 do the same, the seed
+  says; without either the same path is cut).
+- G33 [documented]: starts at the upper right corner, back and forth along the
+  long side (X when the sides are equal [choice]), stepping over along the
+  short side; the step-overs are equal and at most P155 [choice].
+- G34 [choice where not documented]: plunge at the centre; the centre line
+  along the long side, then laps each the inward offset of the last lap by an
+  equal step at most P155 (and at most 0.85 tool diameters, LAP_STEP_LIMIT,
+  so no island is left between the corners of two laps), out to the walls
+  less the X-Y finish stock P153,
+  their corners those offsets of the corner radius P150 (0: cut at the tool
+  radius); G41 (or none) climbs (counter-clockwise with M3), G42 runs
+  clockwise. With P154 the depths stop P154 above Z and one more depth is cut
+  at Z; with P153 one finishing lap at the walls follows at Z. Arcs are written
+  as chords with their ends on the arc (ARC_CHORD_TOLERANCE): inside it, never
+  beyond the wall.
+- Before the first depth the tool goes to the clearance plane R, then over the
+  start point, rapids to R and feeds down [choice]; at the end G99 rapids to R,
+  without G99 the tool rises the lift above the last depth [choice]; X and Y
+  stay where the cut ended.
+"""
+
+import math
+import re
+from dataclasses import dataclass, fields, replace
+from typing import ClassVar, Dict, List, NamedTuple, Optional, Tuple
+
+from ..errors import CycleError
+from ..moves import FEED, RAPID, MachineState, Move
+from ..numbers import ARC_CHORD_TOLERANCE, MAX_MOVES, MM_PER_INCH
+from ..registry import G_WORD, register
+from ..settings import DEFAULT_SETTINGS, Settings
+from .pecking import check_number, format_number
+
+__all__ = ["G31", "G32", "G33", "G34", "MilltronicsCycle"]
+
+TOLERANCE = 1e-9
+# G34's laps step out at most this many tool diameters even when P155 allows more: between two laps with
+# sharp corners, a point on the corner's bisector is left uncut once the step exceeds (1 + 1/sqrt(2)) radii
+LAP_STEP_LIMIT = 0.85
+PARAMETERS = ("P150", "P151", "P152", "P153", "P154", "P155")
+LETTERS = ("R", "Z", "V", "Q", "F")
+COMPENSATION = ("G41", "G42")
+Memory = Dict[str, float]  # "P151" -> value, "R" -> the last clearance plane
+
+_ASSIGNMENT = re.compile(r"^P(\d+)=([+-]?(?:\d+\.?\d*|\.\d+))$")
+_WORD = re.compile(r"([A-Z])([+-]?(?:\d+\.?\d*|\.\d+))")
+
+
+class Cut(NamedTuple):
+    """An autoroutine with every value resolved, in the program's units."""
+
+    cx: float  # the rectangle's centre: the XY position before the call
+    cy: float
+    z0: float  # Z before the call
+    size_x: float  # P151
+    size_y: float  # P152
+    width: float  # P155
+    radius: float  # the tool's radius
+    clearance: float  # R
+    depths: Tuple[float, ...]  # V .. Z
+    lift: float
+    xy_feed: float
+    z_feed: float
+    back_to_clearance: bool  # G99
+    clockwise: bool  # G42 (G34 laps)
+
+
+def _read_assignment(line: str, name: str, values: Dict[str, object]) -> None:
+    match = _ASSIGNMENT.match(line)
+    key = "P" + str(int(match.group(1)))
+    if key not in PARAMETERS:
+        raise CycleError(key, None, "is not a parameter of the autoroutines (%s)" % ", ".join(PARAMETERS), cycle=name)
+    values[key] = float(match.group(2))
+
+
+def _read_call(line: str, cls: type, values: Dict[str, object]) -> None:
+    name = cls.NAME
+    pos, seen = 0, False
+    while pos < len(line):
+        match = _WORD.match(line, pos)
+        if match is None:
+            raise CycleError("block", line, "is not a %s block (letter-number words)" % name, cycle=name)
+        letter, number = match.groups()
+        pos = match.end()
+        if letter == "G":
+            code = "G%d" % int(float(number)) if float(number).is_integer() else "G" + number
+            if code == name and not seen:
+                seen = True
+            elif code == "G99" and code in cls.OPTIONS:
+                values["G99"] = True
+            elif code in COMPENSATION and code in cls.OPTIONS:
+                if values.get("compensation") not in (None, code):
+                    raise CycleError(code, None, "G41 and G42 in one block: program one", cycle=name)
+                values["compensation"] = code
+            else:
+                raise CycleError(code, None, "may not share the %s block" % name, cycle=name)
+        elif letter in cls.WORDS and letter not in values:
+            values[letter] = float(number)
+        else:
+            raise CycleError(letter, float(number), "is not a word of %s (or is given twice)" % name, cycle=name)
+    if not seen:
+        raise CycleError("block", line, "does not call %s" % name, cycle=name)
+
+
+@dataclass(frozen=True)
+class MilltronicsCycle:
+    """The words and P parameters shared by G33 and G34 (see the module notes)."""
+
+    NAME: ClassVar[str] = ""
+    CONTROLS: ClassVar[tuple] = ("milltronics",)
+    FORM: ClassVar[str] = G_WORD
+    MEMORY: ClassVar[str] = "milltronics"  # the P parameters and the last R, for the next call
+    MILL: ClassVar[bool] = True
+    COUNTED: ClassVar[tuple] = ()
+    WORDS: ClassVar[tuple] = LETTERS  # the call's letter words; the P parameters come from assignment blocks
+    OPTIONS: ClassVar[tuple] = ("G99",) + COMPENSATION  # the G codes the call block may hold
+    PARAMETERS: ClassVar[tuple] = PARAMETERS  # set by assignment blocks (the translator keeps them under MEMORY)
+    MEMORY_WHAT: ClassVar[str] = "the P parameters and the clearance plane R %s runs with"
+
+    R: Optional[float] = None
+    Z: Optional[float] = None
+    V: Optional[float] = None
+    Q: Optional[float] = None
+    F: Optional[float] = None
+    G99: bool = False
+    compensation: Optional[str] = None  # "G41", "G42" or None
+    P150: Optional[float] = None
+    P151: Optional[float] = None
+    P152: Optional[float] = None
+    P153: Optional[float] = None
+    P154: Optional[float] = None
+    P155: Optional[float] = None
+
+    @classmethod
+    def parse(cls, text: str) -> "MilltronicsCycle":
+        """The model of ``P1nn=value`` assignment lines and the call block; CycleError naming the word."""
+        values: Dict[str, object] = {}
+        lines = ["".join(line.split()).upper().rstrip(";") for line in text.split("\n")]
+        lines = [line for line in lines if line]
+        if not lines:
+            raise CycleError("block", text, "is empty", cycle=cls.NAME)
+        for line in lines[:-1]:
+            if not _ASSIGNMENT.match(line):
+                raise CycleError("block", line, "only P assignments (P151=1) may come before the call", cycle=cls.NAME)
+            _read_assignment(line, cls.NAME, values)
+        _read_call(lines[-1], cls, values)
+        return cls(**values).validate()
+
+    def emit(self) -> str:
+        """The assignment blocks and the call as the control reads them."""
+        lines = ["%s=%s" % (key, format_number(getattr(self, key))) for key in PARAMETERS
+                 if getattr(self, key) is not None]
+        parts = [self.NAME] + (["G99"] if self.G99 else []) + ([self.compensation] if self.compensation else [])
+        parts += [letter + format_number(getattr(self, letter), letter) for letter in LETTERS
+                  if getattr(self, letter) is not None]
+        return "\n".join(lines + [" ".join(parts)])
+
+    def _error(self, name: str, rule: str) -> CycleError:
+        return CycleError(name, getattr(self, name, None), rule, cycle=self.NAME)
+
+    def validate(self, settings: Settings = DEFAULT_SETTINGS) -> "MilltronicsCycle":
+        """The rules on the words and parameters as held; returns self."""
+        for item in fields(self):
+            value = getattr(self, item.name)
+            if item.name in LETTERS + PARAMETERS and value is not None:
+                check_number(self.NAME, item.name, value)
+        if self.compensation not in (None,) + COMPENSATION:
+            raise self._error("compensation", "must be G41, G42 or none")
+        if self.Q is not None and not self.Q > 0:
+            raise self._error("Q", "must be greater than 0: the depths would never reach Z")
+        if self.F is not None and not self.F > 0:
+            raise self._error("F", "must be greater than 0")
+        if self.V is not None and self.Z is not None and self.V < self.Z - TOLERANCE:
+            raise self._error("V", "the first depth is below the final depth Z%s" % format_number(self.Z))
+        for key in ("P151", "P152", "P155"):
+            value = getattr(self, key)
+            if value is not None and not value > 0:
+                raise self._error(key, "must be greater than 0")
+        for key in ("P150", "P153", "P154"):
+            value = getattr(self, key)
+            if value is not None and value < 0:
+                raise self._error(key, "must not be negative")
+        if settings.mill_tool_diameter is not None:
+            self._check_tool(settings.mill_tool_diameter)
+        return self
+
+    def _check_tool(self, diameter: float) -> None:
+        if not diameter > 0:
+            raise CycleError("tool diameter", diameter, "must be greater than 0", cycle=self.NAME)
+        if self.P155 is not None and self.P155 > diameter + TOLERANCE:
+            raise self._error("P155", "the cut width is larger than the tool (diameter %s): ridges would be left"
+                              % format_number(diameter))
+
+    # -- the program's memory -------------------------------------------------------
+
+    def with_earlier(self, memory: Memory, state: MachineState) -> "MilltronicsCycle":
+        """This call with the P parameters in force and the last clearance plane R."""
+        filled = {key: memory[key] for key in PARAMETERS + ("R",) if getattr(self, key) is None and key in memory}
+        return replace(self, **filled)
+
+    def remembered(self, state: MachineState) -> Memory:
+        """The P parameters in force and the clearance plane, for what follows."""
+        return {key: getattr(self, key) for key in PARAMETERS + ("R",) if getattr(self, key) is not None}
+
+    # -- the plan ---------------------------------------------------------------------
+
+    def _require(self, name: str, why: str) -> float:
+        value = getattr(self, name)
+        if value is None:
+            raise CycleError(name, None, "must be given (%s)" % why, cycle=self.NAME)
+        return value
+
+    def _depths(self, clearance: float, final: float) -> Tuple[float, ...]:
+        """V, V - Q, ... down to ``final`` (Z, or Z + P154)."""
+        if not final < clearance - TOLERANCE:
+            raise self._error("Z", "the final depth must be below the clearance plane R%s" % format_number(clearance))
+        first = self.V
+        if first is None:
+            first = clearance - self._require("Q", "the first depth without V is R - Q")
+        if first > clearance + TOLERANCE:
+            raise self._error("V", "the first depth is above the clearance plane R%s" % format_number(clearance))
+        if first < final - TOLERANCE:
+            name = "V" if self.V is not None else "Q"
+            raise CycleError(name, getattr(self, name), "the first depth %s is below the final depth %s"
+                             % (format_number(first), format_number(final)), cycle=self.NAME)
+        depths = [max(first, final)]
+        while depths[-1] > final + TOLERANCE:
+            step = self._require("Q", "more than one depth from V to Z")
+            depths.append(max(depths[-1] - step, final))
+            if len(depths) > MAX_MOVES:
+                raise self._error("Q", "too small for the depth: more than %d depths" % MAX_MOVES)
+        return tuple(depths)
+
+    def plan(self, state: MachineState, settings: Settings, final: Optional[float] = None) -> Cut:
+        """Every value resolved against the start ``state``; CycleError on a rule broken."""
+        self.validate(settings)
+        diameter = settings.mill_tool_diameter
+        if diameter is None:
+            raise CycleError("tool diameter", None, "is not known: give the end mill's diameter "
+                             "(--tool-diameter or the tool table)", cycle=self.NAME)
+        for axis, value in (("X", state.x), ("Y", state.y), ("Z", state.z)):
+            if value is None:
+                raise CycleError(axis, None, "the start position is not known: program it before the call",
+                                 cycle=self.NAME)
+        if state.incremental:
+            raise CycleError("G91", None, "R, Z and V are read as absolute Z: program the autoroutine in G90",
+                             cycle=self.NAME)
+        size_x = self._require("P151", "the X size of the rectangle, P151=...")
+        size_y = self._require("P152", "the Y size of the rectangle, P152=...")
+        width = self._require("P155", "the cut width, P155=...")
+        clearance = self._require("R", "the clearance plane; no earlier call gave it")
+        z = self._require("Z", "the final depth")
+        if state.feed is None:
+            raise CycleError("F", None, "no X-Y feed in force: program F before the call", cycle=self.NAME)
+        for key, size in (("P151", size_x), ("P152", size_y)):
+            if size < diameter - TOLERANCE:
+                raise self._error(key, "the rectangle is smaller than the tool (diameter %s)" % format_number(diameter))
+        lift = settings.milltronics_lift_inch * (MM_PER_INCH if state.metric else 1.0)
+        depths = self._depths(clearance, z if final is None else final)
+        return Cut(state.x, state.y, state.z, size_x, size_y, width, diameter / 2.0, clearance, depths, lift,
+                   state.feed, state.feed if self.F is None else self.F, self.G99, self.compensation == "G42")
+
+
+# ---------------------------------------------------------------- the tool's moves
+
+
+class _Tool:
+    """The tool's position as the moves are made; points relative to the centre."""
+
+    def __init__(self, cut: Cut, name: str) -> None:
+        self.cut = cut
+        self.name = name
+        self.x, self.y, self.z = cut.cx, cut.cy, cut.z0
+        self.moves: List[Move] = []
+
+    def _add(self, kind: str, x: float, y: float, z: float, f: Optional[float]) -> None:
+        if abs(x - self.x) <= TOLERANCE and abs(y - self.y) <= TOLERANCE and abs(z - self.z) <= TOLERANCE:
+            return
+        self.x, self.y, self.z = x, y, z
+        self.moves.append(Move(kind, x, z, f, 0.0, y))
+        if len(self.moves) > MAX_MOVES:
+            raise CycleError("P155", self.cut.width, "the cycle would make more than %d moves" % MAX_MOVES,
+                             cycle=self.name)
+
+    def rapid_z(self, z: float) -> None:
+        self._add(RAPID, self.x, self.y, z, None)
+
+    def rapid_xy(self, u: float, v: float) -> None:
+        self._add(RAPID, self.cut.cx + u, self.cut.cy + v, self.z, None)
+
+    def feed_z(self, z: float) -> None:
+        self._add(FEED, self.x, self.y, z, self.cut.z_feed)
+
+    def feed_xy(self, u: float, v: float) -> None:
+        self._add(FEED, self.cut.cx + u, self.cut.cy + v, self.z, self.cut.xy_feed)
+
+    def enter(self, u: float, v: float, depth: float, first: bool) -> None:
+        """To the start (u, v) of a depth: over it at the clearance plane first, else by the lift."""
+        if first:
+            self.rapid_z(max(self.z, self.cut.clearance))
+            self.rapid_xy(u, v)
+            self.rapid_z(self.cut.clearance)
+        else:
+            self.rapid_z(self.z + self.cut.lift)
+            self.rapid_xy(u, v)
+        self.feed_z(depth)
+
+    def leave(self) -> List[Move]:
+        """G99: to the clearance plane; else the lift above the last depth."""
+        self.rapid_z(self.cut.clearance if self.cut.back_to_clearance else self.z + self.cut.lift)
+        return self.moves
+
+
+def _even_steps(span: float, width: float, cycle: str) -> List[float]:
+    """0, s, 2s, ... span with s the largest equal step at most ``width``."""
+    if span <= TOLERANCE:
+        return [0.0]
+    count = max(1, math.ceil(span / width - 1e-9))
+    if count > MAX_MOVES:  # before the list is made: the moves' own limit would come too late
+        raise CycleError("P155", width, "the cut width is too small for the rectangle: more than %d passes"
+                         % MAX_MOVES, cycle=cycle)
+    return [span * index / count for index in range(count + 1)]
+
+
+def facing_moves(cut: Cut, name: str = "G33") -> List[Move]:
+    """G33: from the upper right corner, back and forth along the long side."""
+    tool = _Tool(cut, name)
+    half_x, half_y = cut.size_x / 2.0 - cut.radius, cut.size_y / 2.0 - cut.radius
+    along_x = cut.size_x >= cut.size_y
+    short = 2.0 * (half_y if along_x else half_x)
+    steps = _even_steps(short, cut.width, name)
+    for index, depth in enumerate(cut.depths):
+        tool.enter(half_x, half_y, depth, index == 0)
+        for number, step in enumerate(steps):
+            if along_x:
+                v = half_y - step
+                tool.feed_xy(tool.x - cut.cx, v)
+                tool.feed_xy(-half_x if number % 2 == 0 else half_x, v)
+            else:
+                u = half_x - step
+                tool.feed_xy(u, tool.y - cut.cy)
+                tool.feed_xy(u, -half_y if number % 2 == 0 else half_y)
+    return tool.leave()
+
+
+def _corner_points(cx: float, cy: float, radius: float, start: float, clockwise: bool) -> List[Tuple[float, float]]:
+    """Chord ends of a quarter arc of ``radius`` about (cx, cy) from angle ``start``, the first point left out."""
+    if radius <= TOLERANCE:
+        return [(cx, cy)]
+    count = max(1, math.ceil((math.pi / 2) / (2 * math.acos(max(-1.0, 1 - ARC_CHORD_TOLERANCE / radius)))))
+    sign = -1.0 if clockwise else 1.0
+    return [(cx + radius * math.cos(start + sign * math.pi / 2 * k / count),
+             cy + radius * math.sin(start + sign * math.pi / 2 * k / count)) for k in range(1, count + 1)]
+
+
+def lap_points(half_x: float, half_y: float, corner: float, clockwise: bool) -> List[Tuple[float, float]]:
+    """A closed lap of a rectangle with rounded corners about (0, 0), from (half_x, 0) back to it."""
+    corner = min(max(corner, 0.0), half_x, half_y)
+    ix, iy = half_x - corner, half_y - corner
+    # corner centres and the angle each arc starts at, counter-clockwise from the right side
+    corners = [((ix, iy), 0.0), ((-ix, iy), math.pi / 2), ((-ix, -iy), math.pi), ((ix, -iy), 1.5 * math.pi)]
+    points: List[Tuple[float, float]] = [(half_x, 0.0)]  # each lap starts and ends at the right side's middle
+    if clockwise:
+        for (x, y), start in reversed(corners):
+            points.append((x + corner * math.cos(start + math.pi / 2), y + corner * math.sin(start + math.pi / 2)))
+            points += _corner_points(x, y, corner, start + math.pi / 2, True)
+    else:
+        for (x, y), start in corners:
+            points.append((x + corner * math.cos(start), y + corner * math.sin(start)))
+            points += _corner_points(x, y, corner, start, False)
+    points.append((half_x, 0.0))
+    return points
+
+
+def pocket_laps(cut: Cut, stock: float, corner: float, name: str = "G34") -> List[List[Tuple[float, float]]]:
+    """The tool centre's paths at one depth, from the centre outward (see the module notes)."""
+    half_x = cut.size_x / 2.0 - cut.radius - stock
+    half_y = cut.size_y / 2.0 - cut.radius - stock
+    outer_corner = max(corner - cut.radius - stock, 0.0) if corner > 0 else 0.0
+    inset = min(half_x, half_y)
+    spine_x, spine_y = half_x - inset, half_y - inset
+    paths = [[(0.0, 0.0), (-spine_x, -spine_y), (spine_x, spine_y)]]
+    for offset in _even_steps(inset, min(cut.width, LAP_STEP_LIMIT * 2 * cut.radius), name)[1:]:
+        rest = inset - offset
+        paths.append(lap_points(half_x - rest, half_y - rest, max(outer_corner - rest, 0.0), cut.clockwise))
+    return paths
+
+
+def pocket_moves(cut: Cut, stock: float, corner: float, finish_depth: Optional[float], name: str = "G34") -> List[Move]:
+    """G34: at each depth the centre line and the laps; the last depth and the finishing lap."""
+    tool = _Tool(cut, name)
+    depths = cut.depths + ((finish_depth,) if finish_depth is not None else ())
+    laps = pocket_laps(cut, stock, corner, name)
+    for index, depth in enumerate(depths):
+        tool.enter(0.0, 0.0, depth, index == 0)
+        for lap in laps:
+            for u, v in lap:
+                tool.feed_xy(u, v)
+    if stock > 0:
+        finish = pocket_laps(cut._replace(width=max(cut.size_x, cut.size_y)), 0.0, corner, name)[-1]
+        for u, v in finish:
+            tool.feed_xy(u, v)
+    return tool.leave()
+
+
+@register
+@dataclass(frozen=True)
+class G33(MilltronicsCycle):
+    """Milltronics ``G33`` facing autoroutine."""
+
+    NAME: ClassVar[str] = "G33"
+    KEY: ClassVar[str] = "milltronics-g33"
+    ALIASES: ClassVar[tuple] = ("g33",)
+    TITLE: ClassVar[str] = "Milltronics G33 facing a rectangle P151 x P152 (cut width P155) centred on the start"
+    WORD_HELP: ClassVar[tuple] = (
+        ("R", "clearance plane (default the last R of the program)"),
+        ("Z", "final depth"),
+        ("V", "first depth (default R - Q)"),
+        ("Q", "Z increment, greater than 0"),
+        ("F", "Z feed (default the X-Y feed in force)"),
+    )
+
+    def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
+        """The moves of the facing from ``state`` (see the module notes)."""
+        return facing_moves(self.plan(state, settings), self.NAME)
+
+
+@register
+@dataclass(frozen=True)
+class G34(MilltronicsCycle):
+    """Milltronics ``G34`` rectangular pocket autoroutine."""
+
+    NAME: ClassVar[str] = "G34"
+    KEY: ClassVar[str] = "milltronics-g34"
+    ALIASES: ClassVar[tuple] = ("g34",)
+    TITLE: ClassVar[str] = ("Milltronics G34 rectangular pocket P151 x P152 centred on the start, corner radius P150, "
+                            "finish stock P153 (X-Y) and P154 (Z), cut width P155")
+    WORD_HELP: ClassVar[tuple] = G33.WORD_HELP
+
+    def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
+        """The moves of the pocket from ``state`` (see the module notes)."""
+        floor = self.P154 or 0.0
+        z = self._require("Z", "the final depth")
+        cut = self.plan(state, settings, z + floor)
+        self._check_pocket(cut)
+        return pocket_moves(cut, self.P153 or 0.0, self.P150 or 0.0, z if floor > 0 else None, self.NAME)
+
+    def _check_pocket(self, cut: Cut) -> None:
+        corner, stock = self.P150 or 0.0, self.P153 or 0.0
+        if 0 < corner < cut.radius - TOLERANCE:
+            raise self._error("P150", "the corner radius is smaller than the tool radius %s (0 cuts the corners at "
+                                      "the tool radius)" % format_number(cut.radius))
+        if corner > min(cut.size_x, cut.size_y) / 2.0 + TOLERANCE:
+            raise self._error("P150", "the corner radius is more than half the pocket's short side")
+        for key, size in (("P151", cut.size_x), ("P152", cut.size_y)):
+            if size - 2 * stock < 2 * cut.radius - TOLERANCE:
+                raise CycleError("P153", stock, "the pocket less the finish stock on both walls (%s = %s) is "
+                                 "smaller than the tool" % (key, format_number(size)), cycle=self.NAME)
+
+
+@register
+@dataclass(frozen=True)
+class G31(MilltronicsCycle):
+    """Milltronics ``G31``: Z rapids to the clearance plane, the last R of the program,
+    else ``Settings.milltronics_clearance_inch`` (parameter 140)."""
+
+    NAME: ClassVar[str] = "G31"
+    KEY: ClassVar[str] = "milltronics-g31"
+    ALIASES: ClassVar[tuple] = ("g31",)
+    TITLE: ClassVar[str] = "Milltronics G31 Z to the clearance position (the last R, else parameter 140)"
+    WORDS: ClassVar[tuple] = ()
+    OPTIONS: ClassVar[tuple] = ()
+    PARAMETERS: ClassVar[tuple] = ()  # reads none (the P parameters pass through its memory unchanged)
+    WORD_HELP: ClassVar[tuple] = ()
+
+    def height(self, state: MachineState, settings: Settings) -> float:
+        """The Z the block goes to, in the program's units."""
+        if self.R is not None:
+            return self.R
+        return settings.milltronics_clearance_inch * (MM_PER_INCH if state.metric else 1.0)
+
+    def note(self, state: MachineState, settings: Settings) -> str:
+        """The Z used and where it comes from, for the translated program's comment."""
+        source = "the last R" if self.R is not None else "setting milltronics_clearance_inch"
+        return "Z%s, %s" % (format_number(self.height(state, settings)), source)
+
+    def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
+        """One rapid of Z; X and Y held."""
+        if state.x is None or state.y is None:
+            raise CycleError("X", None, "the start position is not known: program X and Y before %s" % self.NAME,
+                             cycle=self.NAME)
+        return [Move(RAPID, state.x, self.height(state, settings), None, 0.0, state.y)]
+
+
+@register
+@dataclass(frozen=True)
+class G32(G31):
+    """Milltronics ``G32``: Z rapids to the tool change position, ``Settings.milltronics_tool_change_inch``."""
+
+    NAME: ClassVar[str] = "G32"
+    KEY: ClassVar[str] = "milltronics-g32"
+    ALIASES: ClassVar[tuple] = ("g32",)
+    TITLE: ClassVar[str] = "Milltronics G32 Z to the tool change position (a machine setting)"
+
+    def height(self, state: MachineState, settings: Settings) -> float:
+        return settings.milltronics_tool_change_inch * (MM_PER_INCH if state.metric else 1.0)
+
+    def note(self, state: MachineState, settings: Settings) -> str:
+        return "Z%s, setting milltronics_tool_change_inch" % format_number(self.height(state, settings))

@@ -1,0 +1,135 @@
+"""Reading Milltronics programs (--dialect milltronics): P assignment blocks, the G33/G34
+autoroutines with G99 and G41/G42 in their block, G31/G32, inch and metric, LinuxCNC through rs274."""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from rs274 import require_rs274, run_rs274
+
+from freecad_groove.engine.cycles.milltronics import G33, G34
+from freecad_groove.engine.errors import ProgramError
+from freecad_groove.engine.moves import MachineState
+from freecad_groove.engine.settings import Settings
+from freecad_groove.engine.translator import translate_program
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLE = ROOT / "examples" / "milltronics_g33_g34.nc"
+QUARTER = Settings(mill_tool_diameter=0.25)
+SEED = """N1 G20 G90
+N3 G0 X1 Y2 Z1.
+N4 F20
+N5 P151=1
+N6 P152=3
+N7 P155=.1
+N8 G33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5
+N9 M30
+"""
+
+
+def test_the_seed_program_expands_to_the_engine_moves_in_the_xy_plane():
+    lines = translate_program(SEED, "milltronics", QUARTER, target="linuxcnc").splitlines()
+    assert lines[0] == "G17 G21 G90 G91.1 G40 G94"  # feed per minute: a mill's programs have no G94
+    assert lines[2:9] == ["N1 G20", "N3 G0 X1. Y2. Z1.", "N4 F20.",
+                          "N5 (P151=1: for the G33/G34 that follow)", "N6 (P152=3: for the G33/G34 that follow)",
+                          "N7 (P155=.1: for the G33/G34 that follow)", "N8 (G33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5)"]
+    assert lines[9:13] == ["X1.375 Y3.375", "Z0.1", "G1 Z-0.3 F5.", "Y0.625 F20."]
+    assert lines[-2:] == ["G0 Z0.1", "N9 M2"]
+
+
+def test_the_seed_program_runs_in_linuxcnc_as_the_engine_moves():
+    require_rs274()
+    canon = run_rs274(translate_program(SEED, "milltronics", QUARTER, target="linuxcnc"), xyz=True)
+    model = G33.parse("P151=1\nP152=3\nP155=.1\nG33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5")
+    moves = model.expand(MachineState(x=1.0, y=2.0, z=1.0, feed=20.0, metric=False, diameter_mode=False), QUARTER)
+    # canon[0] is the G0 to X1 Y2 Z1 (rs274 reports in the program's inches)
+    assert [c[0] for c in canon[1:]] == [m.kind for m in moves]
+    for c, m in zip(canon[1:], moves):  # the inch output has 4 decimals (X1.28125 is written X1.2812)
+        assert c[1:4] == pytest.approx((m.x, m.y, m.z), abs=6e-5)
+
+
+def test_the_example_program_runs_in_linuxcnc_and_every_move_stays_in_its_rectangles():
+    require_rs274()
+    proc = subprocess.run([sys.executable, "-m", "freecad_groove", "expand", str(EXAMPLE), "--dialect", "milltronics",
+                           "--tool-diameter", "0.25", "--to", "linuxcnc"], cwd=ROOT, capture_output=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    canon = run_rs274(proc.stdout.decode(), xyz=True)
+    inch = [c[:4] for c in canon]
+    cuts = [c for c in inch if c[3] < -1e-9]
+    assert min(c[3] for c in cuts) == pytest.approx(-0.5)
+    for _, x, y, _ in cuts:  # the facing (centre X1 Y2, 1 x 3) or the pocket (centre X4 Y2, 2 x 1.5)
+        in_face = abs(x - 1) <= 0.375 + 1e-6 and abs(y - 2) <= 1.375 + 1e-6
+        in_pocket = abs(x - 4) <= 0.875 + 1e-6 and abs(y - 2) <= 0.625 + 1e-6
+        assert in_face or in_pocket
+    assert inch[-1][3] == pytest.approx(4.0)  # G32: the tool change Z (default 4")
+
+
+def test_g31_goes_to_the_last_r_else_the_setting_and_g32_to_the_tool_change_setting():
+    text = "G21 G90\nG0 X0 Y0 Z50.\nG31\nG0 Z20.\nG32\nM30\n"
+    settings = Settings(milltronics_tool_change_inch=2.0)
+    lines = translate_program(text, "milltronics", settings, target="linuxcnc").splitlines()
+    # metric program: 0.1" = 2.54 mm, 2" = 50.8 mm; the comment shows the Z used
+    assert lines[4:8] == ["(G31: Z2.54, setting milltronics_clearance_inch)", "Z2.54", "G0 Z20.",
+                          "(G32: Z50.8, setting milltronics_tool_change_inch)"]
+    after_r = SEED.replace("N9 M30", "G0 Z2.\nG31\nM30")
+    lines = translate_program(after_r, "milltronics", QUARTER, target="linuxcnc").splitlines()
+    assert lines[-3:] == ["(G31: Z0.1, the last R)", "Z0.1", "M2"]
+
+
+def test_the_p_parameters_stay_in_force_for_the_next_call_and_r_too():
+    text = SEED.replace("N9 M30", "G0 X1 Y2\nG33 Z-.1 V-.1\nM30")
+    lines = translate_program(text, "milltronics", QUARTER, target="linuxcnc").splitlines()
+    second = lines[lines.index("(G33 Z-.1 V-.1)") + 1:]
+    # the same rectangle (P151, P152, P155 in force), R.1 from the first call, no G99: the lift at the end
+    assert second[:3] == ["X1.375 Y3.375", "G1 Z-0.1", "Y0.625"]  # Z feed: the X-Y feed in force
+    assert second[-2:] == ["G0 Z0.", "M2"]
+
+
+def test_a_metric_pocket_program():
+    text = ("G21 G90\nG0 X0 Y0 Z5.\nF300\nP151=40\nP152=30\nP155=5\nP150=8\nG34 G99 G42 R2. Z-3. V-1.5 Q1.5 F100\n"
+            "M30\n")
+    lines = translate_program(text, "milltronics", Settings(mill_tool_diameter=10.0), target="linuxcnc").splitlines()
+    model = G34.parse("P151=40\nP152=30\nP155=5\nP150=8\nG34 G99 G42 R2. Z-3. V-1.5 Q1.5 F100")
+    moves = model.expand(MachineState(x=0.0, y=0.0, z=5.0, feed=300.0, diameter_mode=False),
+                         Settings(mill_tool_diameter=10.0))
+    assert "G1 Z-1.5 F100." in lines and "G1 Z-3. F100." in lines
+    assert lines[-2] == "G0 Z2." and moves[-1].z == 2.0
+
+
+@pytest.mark.parametrize("text, message", [
+    ("G0 X0 Y0 Z1.\nG99\n", r"2: G99: only a cycle's block \(G33/G34/G31/G32\) may hold it"),
+    ("G0 X0 Y0 Z1.\nG41 X1\n", "2: G41: only a cycle's block"),
+    ("G0 X0 Y0 Z1.\nP151=1 X2\n", "2: P151=1: a parameter assignment stands alone in its block"),
+    ("G0 X0 Y0 Z1.\nP149=1\n", r"2: P149=1: not a parameter of the Milltronics cycles \(P150, P151"),
+    ("G0 X0 Y0 Z1.\nG43 H1\n", "2: G43: tool length offset"),
+    ("T1\n", r"1: T1: tool changes and offsets \(T, D, H\) in a Milltronics program are not translated"),
+    ("S1000 M3 D1\n", r"1: D1: tool changes and offsets"),
+    ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\nP155=.1\nG33 R.1 Z-.1 V-.1\n",
+     "6: G33 tool diameter: is not known: give the end mill's diameter"),
+    ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\nP155=.3\nG34 R.1 Z-.1 V-.1\n",
+     r"6: G34 P155=0.3: the cut width is larger than the tool \(diameter 0.25\)"),
+    ("G0 X0 Y0 Z1.\nF20\nP152=1\nP155=.1\nG33 R.1 Z-.1 V-.1\n", r"5: G33 P151: must be given"),
+    ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\nP155=.1\nG33 G0 R.1 Z-.1 V-.1\n", "6: G0 shares the block with the cycle"),
+    ("G0 X0 Y0 Z1.\nG31 X1\n", "2: G31 X=1: is not a word of G31"),
+    ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\nP155=.1\nG91 G33 R.1 Z-.1 V-.1\n",
+     "6: G33 G91: R, Z and V are read as absolute Z: program the autoroutine in G90"),
+    ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\n/P155=.1\nG33 R.1 Z-.1 V-.1\n",
+     "6: the P parameters and the clearance plane R G33 runs with depends on a block-delete '/' line"),
+])
+def test_errors_name_the_line_and_the_rule(text, message):
+    settings = QUARTER if "tool diameter" not in message else Settings()
+    line, message = message.split(": ", 1)
+    with pytest.raises(ProgramError, match=message) as raised:
+        translate_program("G20 G90\n" + text + "M30\n", "milltronics", settings, target="linuxcnc")
+    assert raised.value.line == int(line) + 1
+
+
+def test_the_command_line_refuses_a_broken_program_in_one_line(tmp_path):
+    program = tmp_path / "bad.nc"
+    program.write_text("G20 G90\nG0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\nP155=.1\nG33 R.1 Z-.1 V-.2\nM30\n")
+    proc = subprocess.run([sys.executable, "-m", "freecad_groove", "expand", str(program), "--dialect", "milltronics",
+                           "--tool-diameter", "0.25", "--to", "fanuc"], cwd=ROOT, capture_output=True, timeout=120)
+    assert proc.returncode != 0 and proc.stdout == b""
+    assert proc.stderr.decode().strip().splitlines() == [
+        "%s:7: G33 V=-0.2: the first depth is below the final depth Z-0.1" % program]
