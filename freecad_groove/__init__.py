@@ -16,6 +16,14 @@ def make_groove(*args, **kwargs):
     return _make_groove(*args, **kwargs)
 
 
+def make_plunge_grind(*args, **kwargs):
+    """Create a Plunge grind operation (9/Series G83) in a CAM Job (needs
+    FreeCAD); see freecad_groove.freecad.plunge_grind_api.make_plunge_grind."""
+    from .freecad.plunge_grind_api import make_plunge_grind as _make_plunge_grind
+
+    return _make_plunge_grind(*args, **kwargs)
+
+
 def verify_job(*args, **kwargs):
     """The turning check of a CAM Job's Groove ops (needs FreeCAD and
     shapely); see freecad_groove.freecad.turning_check.verify_job."""

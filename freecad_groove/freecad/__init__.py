@@ -10,6 +10,9 @@ builds on it.
     groove_plan.py        one groove's plan: its start point, the engine's moves, the link to it
     links.py              the safe envelope around the model and the link rapids along it
     api.py                make_groove(): a groove op in a job from a script
+    plunge_grind_op.py    ObjectPlungeGrind (a saved class path): a 9/Series G83/G83.1 grind of a flat face
+    plunge_grind_properties.py  its properties and the G83 word -> property map for errors
+    plunge_grind_api.py   make_plunge_grind(): a plunge grind op from a script
 """
 
 __all__ = ["make_groove"]

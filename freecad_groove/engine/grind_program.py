@@ -1,0 +1,102 @@
+"""A grinder program from plunge grinds (the FreeCAD Plunge grind op's plans)
+and plain moves: for the Allen-Bradley 9/Series grinder with native
+G83/G83.1 calls, or with the cycles expanded for a mill-style target.
+
+Pure Python (no FreeCAD): the FreeCAD posts (freecad/posts/grind.py) gather
+the items, this writes them. Every position is in the grinder's axes: x the
+reciprocation (X words), y the plunge (Y words), z the crossover (Z words).
+
+Per grind: a comment (the op and face), G0 Y to the safe plunge position, G0
+X Z over the start point, G0 Y down to it; then the native G83/G83.1 block
+(the cycle starts where the wheel stands) or the engine's expansion (a dress
+is the target's subprogram call; the 9/Series' own call is not in the
+manuals this follows: an expanded dress for it is refused); then G0 Y back
+to the safe position. An item's coolant: its M code after the comment, M9
+(``M09`` for the 9/Series) after its last move. After a native cycle the output forgets the position
+(every axis of the next move is written).
+
+Targets: "ab9grind" (native or expanded; "%", O number, G90 G94 G21 ... M30,
+read back by the engine's ab9grind reader) and "linuxcnc" (expanded only:
+the linuxcnc-mill writer, dress calls ``o<dressN> call``).
+"""
+
+from typing import List, NamedTuple, Optional, Sequence, Union
+
+from .cycles.ab_g83 import G83
+from .errors import ProgramError
+from .moves import DRESS, RAPID, MachineState, Move
+from .targets import Writer, comment
+
+NATIVE_TARGET = "ab9grind"
+TARGETS = {"ab9grind": "fanuc-mill", "linuxcnc": "linuxcnc-mill"}  # -> the writer of their moves
+
+
+class GrindItem(NamedTuple):
+    """One plunge grind: its call, the start point, the safe plunge position, the expansion."""
+
+    label: str
+    call: G83
+    start: MachineState
+    safe: float
+    moves: List[Move]
+    coolant: Optional[int] = None  # the coolant M code (8 flood, 7 mist) on before the op, M9 after
+
+
+class PlainMoves(NamedTuple):
+    """Another op's moves (RAPID/FEED, grinder axes), written as they are."""
+
+    label: str
+    moves: List[Move]
+    coolant: Optional[int] = None
+
+
+Item = Union[GrindItem, PlainMoves]
+
+
+def _header(writer: Writer, target: str, title: str, number: int) -> List[str]:
+    if target == NATIVE_TARGET:
+        return ["%", "O%04d" % number, comment(title), "G90 G94 G21"]
+    return writer.header(title)
+
+
+def _retract(writer: Writer, safe: float) -> List[str]:
+    """G0 Y to the safe plunge position, the other axes where they are (known to the output or not)."""
+    line = "%s Y%s" % (writer.spec.codes[RAPID], writer.z_word(safe))
+    writer.sync(None, None, None, RAPID, safe)  # X and Z: the next move writes them
+    return [line]
+
+
+def _grind_lines(writer: Writer, item: GrindItem, native: bool, target: str) -> List[str]:
+    start = item.start
+    lines = [comment(item.label)] + _retract(writer, item.safe)
+    lines += writer.write([Move(RAPID, start.x, start.z, y=item.safe), Move(RAPID, start.x, start.z, y=start.y)])
+    if native:
+        return lines + [item.call.emit()] + _retract(writer, item.safe)  # the cycle moved the wheel
+    if target == NATIVE_TARGET and any(m.kind == DRESS for m in item.moves):
+        raise ProgramError("%s: a dress (P%d) cannot be written expanded for the 9/Series: its subprogram call "
+                           "is not in the manuals this post follows (write the cycle native, or DressCount 0 and "
+                           "no G83.1)" % (item.label, item.call.P))
+    lines.append(comment(item.call.emit()))
+    lines += writer.write(item.moves)
+    return lines + _retract(writer, item.safe)
+
+
+def grind_program(items: Sequence[Item], target: str, native: bool, title: str, number: int = 1) -> str:
+    """The whole program for ``items`` (see the module notes); ProgramError on what cannot be written."""
+    if target not in TARGETS:
+        raise ProgramError("unknown grinder target %r (known: %s)" % (target, ", ".join(TARGETS)))
+    if native and target != NATIVE_TARGET:
+        raise ProgramError("%s has no G83 cycle: the cycles are expanded for it" % target)
+    writer = Writer(TARGETS[target], True, False)
+    lines = _header(writer, target, title, number)
+    m_code = "M%02d" if target == NATIVE_TARGET else "M%d"
+    for item in items:
+        if isinstance(item, GrindItem):
+            body = _grind_lines(writer, item, native, target)
+        else:
+            body = [comment(item.label)] + writer.write(item.moves)
+        if item.coolant:
+            body = body[:1] + [m_code % item.coolant] + body[1:] + [m_code % 9]
+        lines += body
+    lines += ["M30"] if target == NATIVE_TARGET else writer.footer()
+    return "\n".join(lines) + "\n"

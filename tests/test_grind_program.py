@@ -1,0 +1,78 @@
+"""The grinder program of plunge grinds (engine/grind_program.py): the 9/Series
+native program read back by the engine's ab9grind reader, the LinuxCNC
+expanded program through rs274, both giving the engine's expansion."""
+
+import pytest
+from rs274 import require_rs274, run_rs274
+
+from freecad_groove.engine.cycles.ab_g83 import G83, G83_1
+from freecad_groove.engine.errors import ProgramError
+from freecad_groove.engine.grind_program import GrindItem, PlainMoves, grind_program
+from freecad_groove.engine.moves import DRESS, FEED, RAPID, MachineState, Move
+from freecad_groove.engine.translator import translate_program
+
+# the box of tests/freecad/test_plunge_grind.py: a 100 x 40 face at Z20 (grinder Y), a 10 mm wheel
+CALL = G83_1(X=105.0, I=-5.0, Y=20.0, J=0.02, Z=35.0, K=5.0, L=1, F=60.0, E=6000.0, P=12, D=2)
+START = MachineState(x=-5.0, z=5.0, y=20.15, feed=60.0, diameter_mode=False)
+SAFE = 26.0
+DRESS_SUB = "o<dress12> sub\nG4 P0.5\no<dress12> endsub\nM2\n"
+
+
+def item(call=CALL):
+    return GrindItem("PlungeGrind: Block.Face6", call, START, SAFE, call.expand(START))
+
+
+def canonical(text):
+    """rs274's moves (kind, x, y, z) rounded, a dress being rs274's G4 of the dress subprogram."""
+    return [(c[0], round(c[1], 4), round(c[2], 4), round(c[3], 4)) for c in
+            run_rs274(text, files={"dress12.ngc": DRESS_SUB}, xyz=True)]
+
+
+def test_the_native_program_writes_the_approach_then_the_g83_block():
+    lines = grind_program([item()], "ab9grind", True, "Job").splitlines()
+    assert lines == ["%", "O0001", "(Job)", "G90 G94 G21", "(PlungeGrind: Block.Face6)", "G00 Y26.", "X-5. Z5.",
+                     "Y20.15", "G83.1 X105. I-5. Y20. J0.02 Z35. K5. L1 F60. E6000. P12 D2", "G00 Y26.", "M30"]
+
+
+def test_rs274_moves_the_expanded_linuxcnc_program_as_the_engine_expands():
+    require_rs274()
+    canon = canonical(grind_program([item()], "linuxcnc", False, "Job"))
+    expected = [("G0", -5.0, 20.15, 5.0)]  # after G0 Y26 (X, Z unknown: rs274's 0) and G0 X-5 Z5
+    for move in CALL.expand(START):
+        step = ("G4" if move.kind == DRESS else "G1", round(move.x, 4), round(move.y, 4), round(move.z, 4))
+        if move.kind == DRESS or step[1:] != expected[-1][1:]:
+            expected.append(step)
+    expected.append(("G0", expected[-1][1], SAFE, expected[-1][3]))
+    assert canon[2:] == expected
+    assert canon[:2] == [("G0", 0.0, SAFE, 0.0), ("G0", -5.0, SAFE, 5.0)]
+
+
+def test_the_native_program_read_back_by_the_ab9grind_reader_moves_as_the_expanded_one():
+    require_rs274()
+    native = grind_program([item()], "ab9grind", True, "Job")
+    expanded = grind_program([item()], "linuxcnc", False, "Job")
+    assert canonical(translate_program(native, "ab9grind", target="linuxcnc")) == canonical(expanded)
+
+
+def test_an_expanded_dress_is_refused_for_the_9_series():
+    with pytest.raises(ProgramError, match=r"a dress \(P12\) cannot be written expanded for the 9/Series"):
+        grind_program([item()], "ab9grind", False, "Job")
+    call = G83(X=105.0, I=-5.0, Y=20.0, J=0.02, Z=35.0, K=5.0, L=1, F=60.0, E=6000.0)
+    lines = grind_program([item(call)], "ab9grind", False, "Job").splitlines()
+    assert lines[8] == "(G83 X105. I-5. Y20. J0.02 Z35. K5. L1 F60. E6000.)" and lines[9] == "G01 Y20.13 F60."
+
+
+def test_plain_moves_are_written_as_they_are_and_linuxcnc_has_no_native_cycle():
+    moves = PlainMoves("Profile", [Move(RAPID, 1.0, 2.0, y=30.0), Move(FEED, 4.0, 2.0, 50.0, y=30.0)])
+    assert grind_program([moves], "linuxcnc", False, "Job").splitlines() == [
+        "G17 G21 G90 G91.1 G40 G94", "(Job)", "(Profile)", "G0 X1. Y30. Z2.", "G1 X4. F50.", "M2"]
+    with pytest.raises(ProgramError, match="linuxcnc has no G83 cycle"):
+        grind_program([item()], "linuxcnc", True, "Job")
+
+
+def test_coolant_goes_on_after_the_comment_and_off_after_the_op():
+    lines = grind_program([item()._replace(coolant=8)], "ab9grind", True, "Job").splitlines()
+    assert lines[4:7] == ["(PlungeGrind: Block.Face6)", "M08", "G00 Y26."] and lines[-3:] == ["G00 Y26.", "M09", "M30"]
+    moves = PlainMoves("Profile", [Move(RAPID, 1.0, 2.0, y=30.0)], 7)
+    assert grind_program([moves], "linuxcnc", False, "Job").splitlines()[-5:] == [
+        "(Profile)", "M7", "G0 X1. Y30. Z2.", "M9", "M2"]
