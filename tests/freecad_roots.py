@@ -55,9 +55,15 @@ def tail(text, lines=40):
 
 
 def describe(proc):
-    """A finished run's exit status and the ends of its output, for a failure message."""
-    return "exit status %d\n--- stdout ---\n%s\n--- stderr ---\n%s" % (
+    """A finished run's exit status and the ends of its output, for a failure
+    message; after a crash also the start of Python's fault report (its
+    innermost frames come first, the tail would cut them off)."""
+    text = "exit status %d\n--- stdout ---\n%s\n--- stderr ---\n%s" % (
         proc.returncode, tail(proc.stdout), tail(proc.stderr))
+    at = proc.stderr.find("Fatal Python error") if proc.stderr else -1
+    if at >= 0:
+        text += "\n--- fault report ---\n%s" % "\n".join(proc.stderr[at:].splitlines()[:30])
+    return text
 
 
 def run(label, share, command, args=(), env_extra=None, timeout=1800, drop=()):
