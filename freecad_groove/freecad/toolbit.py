@@ -33,6 +33,8 @@ import os
 
 import FreeCAD
 
+from .addon_bits import length, make_bit, make_tool_controller, reload_shape
+
 SHAPE_FILE = os.path.join(
     os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
     "resources", "tools", "grooving.fcstd")
@@ -98,29 +100,12 @@ if NEW_TOOLBITS:
 
         def onDocumentRestored(self, obj):
             super().onDocumentRestored(obj)
-            # FreeCAD looks the shape up in its asset store, which does not
-            # hold the add-on's shape: take the file's contents (needed to
-            # redraw the body when a parameter changes) from the add-on.
-            shape = self._tool_bit_shape
-            if getattr(shape, "_data", None) is None and os.path.exists(SHAPE_FILE):
-                try:
-                    loaded = _load_shape()
-                except Exception as e:  # keep the restored bit usable as it is
-                    FreeCAD.Console.PrintWarning("freecad_groove: cannot load %s: %s\n" % (SHAPE_FILE, e))
-                    return
-                for name in loaded.schema():
-                    if name in obj.PropertiesList:
-                        loaded.set_parameter(name, obj.getPropertyByName(name))
-                self._tool_bit_shape = loaded
+            reload_shape(self, obj, SHAPE_FILE, _load_shape)
 
     def _load_shape():
         import pathlib
 
         return ToolBitShapeGrooving.from_file(pathlib.Path(SHAPE_FILE))
-
-
-def _length(value):
-    return FreeCAD.Units.Quantity("%r mm" % float(getattr(value, "Value", value)))
 
 
 def make_grooving_bit(doc, width, corner_radius, label="Grooving blade", **params):
@@ -134,29 +119,11 @@ def make_grooving_bit(doc, width, corner_radius, label="Grooving blade", **param
     unknown = sorted(set(values) - {"Width", "CornerRadius", "CuttingEdgeHeight", "Length"})
     if unknown:
         raise TypeError("unknown grooving blade parameters: " + ", ".join(unknown))
-    values = {k: _length(v) for k, v in values.items()}
+    values = {k: length(v) for k, v in values.items()}
     values["Diameter"] = values["Width"]
-    active = FreeCAD.ActiveDocument
-    FreeCAD.setActiveDocument(doc.Name)
-    try:
-        if NEW_TOOLBITS:
-            shape = _load_shape()
-            shape.set_parameters(**values)
-            toolbit = ToolBitGrooving(shape)
-            toolbit.label = label
-            bit = toolbit.attach_to_doc(doc, label=label)
-        else:
-            import Path.Tool.Bit as PathToolBit
-
-            bit = PathToolBit.Factory.Create("ToolBit", SHAPE_FILE)
-            for name, value in values.items():
-                setattr(bit, name, value)
-            bit.Proxy._updateBitShape(bit)  # push the values into the body
-            bit.Label = label
-        bit.setExpression("Diameter", "Width")
-    finally:
-        if active is not None and active.Name in FreeCAD.listDocuments():
-            FreeCAD.setActiveDocument(active.Name)
+    bit = make_bit(doc, SHAPE_FILE, _load_shape if NEW_TOOLBITS else None, ToolBitGrooving if NEW_TOOLBITS else None,
+                   values, label)
+    bit.setExpression("Diameter", "Width")
     return bit
 
 
@@ -164,20 +131,6 @@ def make_grooving_tool_controller(job, width, corner_radius, tool_number=None, n
     """A new tool controller in ``job`` whose tool bit is a grooving blade of
     ``width`` and ``corner_radius`` (mm; ``params``: see make_grooving_bit).
     ``tool_number`` defaults to the job's next free number."""
-    import Path.Tool.Controller as PathToolController
-
-    doc = job.Document
-    if tool_number is None:
-        tool_number = job.Proxy.nextToolNumber()
-    bit = make_grooving_bit(doc, width, corner_radius, label=name.replace("TC: ", "", 1) or "Grooving blade",
-                            **params)
-    active = FreeCAD.ActiveDocument
-    FreeCAD.setActiveDocument(doc.Name)
-    try:
-        tc = PathToolController.Create(name, tool=bit, toolNumber=tool_number)
-        job.Proxy.addToolController(tc)
-    finally:
-        if active is not None and active.Name in FreeCAD.listDocuments():
-            FreeCAD.setActiveDocument(active.Name)
-    doc.recompute()
-    return tc
+    bit = make_grooving_bit(job.Document, width, corner_radius,
+                            label=name.replace("TC: ", "", 1) or "Grooving blade", **params)
+    return make_tool_controller(job, bit, name, tool_number)

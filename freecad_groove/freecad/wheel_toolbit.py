@@ -21,6 +21,8 @@ import os
 
 import FreeCAD
 
+from .addon_bits import length, make_bit, make_tool_controller, reload_shape
+
 SHAPE_FILE = os.path.join(
     os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
     "resources", "tools", "grinding_wheel.fcstd")
@@ -75,26 +77,12 @@ if NEW_TOOLBITS:
 
         def onDocumentRestored(self, obj):
             super().onDocumentRestored(obj)
-            shape = self._tool_bit_shape  # FreeCAD's asset store does not hold the add-on's shape: reload it
-            if getattr(shape, "_data", None) is None and os.path.exists(SHAPE_FILE):
-                try:
-                    loaded = _load_shape()
-                except Exception as e:  # keep the restored bit usable as it is
-                    FreeCAD.Console.PrintWarning("freecad_groove: cannot load %s: %s\n" % (SHAPE_FILE, e))
-                    return
-                for name in loaded.schema():
-                    if name in obj.PropertiesList:
-                        loaded.set_parameter(name, obj.getPropertyByName(name))
-                self._tool_bit_shape = loaded
+            reload_shape(self, obj, SHAPE_FILE, _load_shape)
 
     def _load_shape():
         import pathlib
 
         return ToolBitShapeGrindingWheel.from_file(pathlib.Path(SHAPE_FILE))
-
-
-def _length(value):
-    return FreeCAD.Units.Quantity("%r mm" % float(getattr(value, "Value", value)))
 
 
 def make_wheel_bit(doc, width, diameter, label="Grinding wheel"):
@@ -104,45 +92,12 @@ def make_wheel_bit(doc, width, diameter, label="Grinding wheel"):
             raise ValueError("make_wheel_bit(): %s=%r: must be greater than 0" % (name, value))
     if not os.path.exists(SHAPE_FILE):
         raise FileNotFoundError("the grinding wheel shape is missing: " + SHAPE_FILE)
-    values = {"Width": _length(width), "Diameter": _length(diameter)}
-    active = FreeCAD.ActiveDocument
-    FreeCAD.setActiveDocument(doc.Name)
-    try:
-        if NEW_TOOLBITS:
-            shape = _load_shape()
-            shape.set_parameters(**values)
-            toolbit = ToolBitGrindingWheel(shape)
-            toolbit.label = label
-            bit = toolbit.attach_to_doc(doc, label=label)
-        else:
-            import Path.Tool.Bit as PathToolBit
-
-            bit = PathToolBit.Factory.Create("ToolBit", SHAPE_FILE)
-            for name, value in values.items():
-                setattr(bit, name, value)
-            bit.Proxy._updateBitShape(bit)  # push the values into the body
-            bit.Label = label
-    finally:
-        if active is not None and active.Name in FreeCAD.listDocuments():
-            FreeCAD.setActiveDocument(active.Name)
-    return bit
+    values = {"Width": length(width), "Diameter": length(diameter)}
+    return make_bit(doc, SHAPE_FILE, _load_shape if NEW_TOOLBITS else None,
+                    ToolBitGrindingWheel if NEW_TOOLBITS else None, values, label)
 
 
 def make_wheel_tool_controller(job, width, diameter, tool_number=None, name=DEFAULT_NAME):
     """A new tool controller in ``job`` whose tool bit is a grinding wheel of ``width`` and ``diameter`` (mm)."""
-    import Path.Tool.Controller as PathToolController
-
-    doc = job.Document
-    if tool_number is None:
-        tool_number = job.Proxy.nextToolNumber()
-    bit = make_wheel_bit(doc, width, diameter, label=name.replace("TC: ", "", 1) or "Grinding wheel")
-    active = FreeCAD.ActiveDocument
-    FreeCAD.setActiveDocument(doc.Name)
-    try:
-        tc = PathToolController.Create(name, tool=bit, toolNumber=tool_number)
-        job.Proxy.addToolController(tc)
-    finally:
-        if active is not None and active.Name in FreeCAD.listDocuments():
-            FreeCAD.setActiveDocument(active.Name)
-    doc.recompute()
-    return tc
+    bit = make_wheel_bit(job.Document, width, diameter, label=name.replace("TC: ", "", 1) or "Grinding wheel")
+    return make_tool_controller(job, bit, name, tool_number)
