@@ -36,12 +36,12 @@ from typing import List, NamedTuple, Optional, Tuple
 import FreeCAD
 import Part
 import Path
-import Path.Op.Base as PathOp
 import PathScripts.PathUtils as PathUtils
 
 from .. import hooks
 from ..engine.cycles.gsk_g71 import DECIMALS, GskG71, PathBlock
 from ..engine.moves import FEED, RAPID, MachineState, Move
+from .addon_op import AddonOp
 from .faces import element_name
 from .groove_properties import GrooveInputError
 from .op_path import comment_body
@@ -111,44 +111,13 @@ def region_blocks(points: List[Tuple[float, float]], feed: float) -> Tuple[PathB
     return tuple(blocks)
 
 
-class ObjectCylinderSlot(PathOp.ObjectOp):
+class ObjectCylinderSlot(AddonOp):
     """Proxy of a Cylinder slot operation (Path::FeaturePython)."""
 
-    def __init__(self, obj: object, name: str, parentJob: object = None, tool_controller: object = None):
-        if tool_controller is None and parentJob is not None and getattr(parentJob, "Tools", None):
-            group = parentJob.Tools.Group
-            tool_controller = group[0] if group else None
-        self._tc_hint = tool_controller  # headless, FreeCAD's picker cannot ask: see isToolSupported
-        try:
-            super().__init__(obj, OP_NAME, parentJob)
-        finally:
-            self._tc_hint = None
-        if tool_controller is not None and getattr(obj, "ToolController", None) is None:
-            obj.ToolController = tool_controller
+    OP_NAME = OP_NAME
+    FEATURES = ("FeatureTool", "FeatureBaseFaces", "FeatureBaseEdges", "FeatureCoolant")
 
     # -- FreeCAD op API ---------------------------------------------------------
-    def opFeatures(self, obj: object) -> int:
-        flags = 0
-        for name in ("FeatureTool", "FeatureBaseFaces", "FeatureBaseEdges", "FeatureCoolant"):
-            flags |= getattr(PathOp, name, 0)
-        return flags
-
-    def initOperation(self, obj: object) -> None:
-        self._add_missing_properties(obj)
-
-    def opOnDocumentRestored(self, obj: object) -> None:
-        self._add_missing_properties(obj)
-
-    def opSetDefaultValues(self, obj: object, job: object) -> None:
-        pass
-
-    def opUpdateDepths(self, obj: object) -> None:
-        pass  # no milling start/final depth: the depth is the slot's, along X
-
-    def isToolSupported(self, obj: object, tool: object) -> bool:
-        hint = getattr(self, "_tc_hint", None)
-        return tool == hint.Tool if hint is not None else True
-
     def _add_missing_properties(self, obj: object) -> None:
         for type_id, name, tooltip, default in PROPERTIES:
             if name not in obj.PropertiesList:

@@ -68,7 +68,6 @@ from typing import Optional
 
 import FreeCAD
 import Path
-import Path.Op.Base as PathOp
 import PathScripts.PathUtils as PathUtils
 
 from .. import hooks
@@ -76,6 +75,7 @@ from ..engine import GroovingTool, Settings
 from ..engine.cycles.cycle93 import DEFAULT_VRT_MM, Cycle93
 from ..engine.numbers import format_value
 from . import plan_cache
+from .addon_op import AddonOp
 from .cutting import CuttingData, cutting_data
 from .faces import GrooveFace, analyse_face, element_name
 from .groove_plan import GroovePlan, blade_origin, plan_groove
@@ -93,6 +93,8 @@ from .links import SafeEnvelope
 from .model_grooves import MODEL_VALUES, ModelGroove, not_overridden, read_picked_groove, with_model_hint
 from .op_path import comment_body, path_commands
 from .units import feed_mm_per_min, length_mm
+
+OP_NAME = "Groove"  # the op's kind in CAM's SetupSheet registry
 
 # TYP units digit for "right" grooves: (longitudinal, external) -> TYP
 TYP_RIGHT = {(True, True): 5, (True, False): 7, (False, True): 6, (False, False): 8}
@@ -161,58 +163,17 @@ def op_error(obj: object) -> Optional[str]:
     return None if obj.isValid() else obj.getStatusString()
 
 
-class ObjectGroove(PathOp.ObjectOp):
+class ObjectGroove(AddonOp):
     """Proxy of a Groove operation (Path::FeaturePython)."""
 
-    def __init__(self, obj: object, name: str, parentJob: object = None, tool_controller: object = None):
-        # The base class picks a tool controller while it is built; headless,
-        # with several in the job and no GUI to ask, FreeCAD's picker fails,
-        # so it is steered to this one (see isToolSupported).
-        if tool_controller is None and parentJob is not None and getattr(parentJob, "Tools", None):
-            group = parentJob.Tools.Group
-            tool_controller = group[0] if group else None
-        self._tc_hint = tool_controller
-        try:
-            # FreeCAD uses the name only to look the op up in CAM's SetupSheet
-            # registry (register_with_setup_sheet): the op's kind, not the object's name.
-            super().__init__(obj, OP_NAME, parentJob)
-        finally:
-            self._tc_hint = None
-        if tool_controller is not None and getattr(obj, "ToolController", None) is None:
-            obj.ToolController = tool_controller
+    OP_NAME = OP_NAME
 
     # -- FreeCAD op API ---------------------------------------------------------
-    def opFeatures(self, obj: object) -> int:
-        flags = 0
-        for name in ("FeatureTool", "FeatureBaseFaces", "FeatureCoolant"):
-            flags |= getattr(PathOp, name, 0)
-        return flags
-
-    def initOperation(self, obj: object) -> None:
-        self._add_missing_properties(obj)
-
-    def opOnDocumentRestored(self, obj: object) -> None:
-        self._add_missing_properties(obj)
-
-    def opSetDefaultValues(self, obj: object, job: object) -> None:
-        pass
-
     def opOnChanged(self, obj: object, prop: str) -> None:
         """A model value set by hand while ModelGroove is on overrides the model's (ModelOverrides)."""
         if (prop in MODEL_VALUES and getattr(obj, "ModelGroove", False) and not getattr(self, "_writing_model", False)
                 and "Restore" not in obj.State and prop not in obj.ModelOverrides):
             obj.ModelOverrides = list(obj.ModelOverrides) + [prop]
-
-    def opUpdateDepths(self, obj: object) -> None:
-        """The milling depth logic works on the Z bounding box; a lathe groove
-        has no start/final depth."""
-        pass
-
-    def isToolSupported(self, obj: object, tool: object) -> bool:
-        hint = getattr(self, "_tc_hint", None)
-        if hint is not None:
-            return tool == hint.Tool
-        return True
 
     def opExecute(self, obj: object) -> None:
         self._plans = None
@@ -550,7 +511,6 @@ class ObjectGroove(PathOp.ObjectOp):
         return path_commands(plans, cutting.feed_mm_per_s(radius))
 
 
-OP_NAME = "Groove"  # the op's kind in CAM's SetupSheet registry
 
 
 def SetupProperties() -> list:

@@ -45,12 +45,12 @@ from typing import List, Optional
 import FreeCAD
 import Part
 import Path
-import Path.Op.Base as PathOp
 import PathScripts.PathUtils as PathUtils
 
 from ..engine.cycles.ab_g83 import G83, G83_1
 from ..engine.errors import CycleError
 from ..engine.moves import DRESS, FEED, MachineState, Move
+from .addon_op import AddonOp
 from .op_path import comment_body
 from .plunge_grind_properties import DERIVED, PROPERTIES, WORD_PROPERTIES, GrindInputError
 from .units import SECONDS_PER_MINUTE, length_mm
@@ -124,44 +124,12 @@ def _named(error: CycleError) -> GrindInputError:
     return GrindInputError("%s: %s" % (prop, error), (prop,))
 
 
-class ObjectPlungeGrind(PathOp.ObjectOp):
+class ObjectPlungeGrind(AddonOp):
     """Proxy of a Plunge grind operation (Path::FeaturePython)."""
 
-    def __init__(self, obj: object, name: str, parentJob: object = None, tool_controller: object = None):
-        if tool_controller is None and parentJob is not None and getattr(parentJob, "Tools", None):
-            group = parentJob.Tools.Group
-            tool_controller = group[0] if group else None
-        self._tc_hint = tool_controller  # headless, CAM's picker fails with several: steer it (isToolSupported)
-        try:
-            super().__init__(obj, OP_NAME, parentJob)
-        finally:
-            self._tc_hint = None
-        if tool_controller is not None and getattr(obj, "ToolController", None) is None:
-            obj.ToolController = tool_controller
+    OP_NAME = OP_NAME
 
     # -- FreeCAD op API ---------------------------------------------------------
-    def opFeatures(self, obj: object) -> int:
-        flags = 0
-        for name in ("FeatureTool", "FeatureBaseFaces", "FeatureCoolant"):
-            flags |= getattr(PathOp, name, 0)
-        return flags
-
-    def initOperation(self, obj: object) -> None:
-        self._add_missing_properties(obj)
-
-    def opOnDocumentRestored(self, obj: object) -> None:
-        self._add_missing_properties(obj)
-
-    def opSetDefaultValues(self, obj: object, job: object) -> None:
-        pass
-
-    def opUpdateDepths(self, obj: object) -> None:
-        pass  # the milling depths do not apply: the face gives the depth
-
-    def isToolSupported(self, obj: object, tool: object) -> bool:
-        hint = getattr(self, "_tc_hint", None)
-        return tool == hint.Tool if hint is not None else True
-
     def opExecute(self, obj: object) -> None:
         self.error = None
         self._plan = None

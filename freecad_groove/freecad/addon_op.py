@@ -1,0 +1,63 @@
+"""What the add-on's operations (Groove, Cylinder slot, Plunge grind) share
+on CAM's op framework (Path.Op.Base.ObjectOp): the tool controller they are
+made with, their features, their properties added on creation and on
+restore (a document saved by an older version gets the new ones), and no
+milling depths.
+
+Not stored in documents (each op's own class is): free to move.
+
+FreeCAD layer: FreeCAD's CAM only.
+"""
+
+import Path.Op.Base as PathOp
+
+
+class AddonOp(PathOp.ObjectOp):
+    """Base of the add-on's op proxies. A subclass sets OP_NAME (the op's
+    kind, which CAM's SetupSheet registry looks it up by, not the object's
+    name), FEATURES (names of Path.Op.Base feature flags) and
+    _add_missing_properties."""
+
+    OP_NAME = ""
+    FEATURES = ("FeatureTool", "FeatureBaseFaces", "FeatureCoolant")
+
+    def __init__(self, obj: object, name: str, parentJob: object = None, tool_controller: object = None):
+        # The base class picks a tool controller while it is built; headless,
+        # with several in the job and no GUI to ask, FreeCAD's picker fails,
+        # so it is steered to this one (see isToolSupported).
+        if tool_controller is None and parentJob is not None and getattr(parentJob, "Tools", None):
+            group = parentJob.Tools.Group
+            tool_controller = group[0] if group else None
+        self._tc_hint = tool_controller
+        try:
+            super().__init__(obj, self.OP_NAME, parentJob)
+        finally:
+            self._tc_hint = None
+        if tool_controller is not None and getattr(obj, "ToolController", None) is None:
+            obj.ToolController = tool_controller
+
+    def opFeatures(self, obj: object) -> int:
+        flags = 0
+        for name in self.FEATURES:
+            flags |= getattr(PathOp, name, 0)
+        return flags
+
+    def initOperation(self, obj: object) -> None:
+        self._add_missing_properties(obj)
+
+    def opOnDocumentRestored(self, obj: object) -> None:
+        self._add_missing_properties(obj)
+
+    def opSetDefaultValues(self, obj: object, job: object) -> None:
+        pass
+
+    def opUpdateDepths(self, obj: object) -> None:
+        """CAM's milling depth logic works on the Z bounding box; these ops'
+        depths are their own (a groove's, a slot's along X, a ground face's)."""
+
+    def isToolSupported(self, obj: object, tool: object) -> bool:
+        hint = getattr(self, "_tc_hint", None)
+        return tool == hint.Tool if hint is not None else True
+
+    def _add_missing_properties(self, obj: object) -> None:
+        raise NotImplementedError
