@@ -2,14 +2,20 @@
 on CAM's op framework (Path.Op.Base.ObjectOp): the tool controller they are
 made with, their features, their properties added on creation and on
 restore (a document saved by an older version gets the new ones), and no
-milling depths.
+milling depths; the one-line report of an op that cannot cut.
 
 Not stored in documents (each op's own class is): free to move.
 
 FreeCAD layer: FreeCAD's CAM only.
 """
 
+import traceback
+
+import FreeCAD
+import Path
 import Path.Op.Base as PathOp
+
+from .op_path import comment_body
 
 
 class AddonOp(PathOp.ObjectOp):
@@ -58,6 +64,18 @@ class AddonOp(PathOp.ObjectOp):
     def isToolSupported(self, obj: object, tool: object) -> bool:
         hint = getattr(self, "_tc_hint", None)
         return tool == hint.Tool if hint is not None else True
+
+    def report_error(self, obj: object, error: Exception) -> None:
+        """An op that cannot cut: one error line "<Label>: <message>" in the
+        report view (an exception escaping execute would print a Python
+        traceback too), a Path of one comment repeating it (never a stale
+        toolpath), the message kept in ``self.error``."""
+        message = str(error) if isinstance(error, ValueError) else "%s: %s" % (type(error).__name__, error)
+        if not isinstance(error, ValueError):  # a bug, not an input: its traceback for the log level
+            FreeCAD.Console.PrintLog(traceback.format_exc())
+        self.error = message
+        self.commandlist.append(Path.Command(comment_body("%s: %s" % (obj.Label, message))))
+        FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, message))
 
     def _add_missing_properties(self, obj: object) -> None:
         raise NotImplementedError

@@ -1,6 +1,8 @@
 """Scripting entry point: make_groove()."""
 
+import contextlib
 import re
+from typing import Iterator
 
 import FreeCAD
 
@@ -65,12 +67,19 @@ def _faces(job: object, faces: object) -> list:
     return out
 
 
-def _remove_new_objects(doc: object, before: set) -> None:
-    """Remove the objects of ``doc`` not named in ``before`` (newest first)."""
-    new = [o.Name for o in doc.Objects if o.Name not in before]
-    for name in reversed(new):  # removing a tool controller removes its tool bit too
-        if doc.getObject(name) is not None:
-            doc.removeObject(name)
+@contextlib.contextmanager
+def nothing_left_behind(doc: object) -> Iterator[None]:
+    """The objects made in ``doc`` inside the block are removed again (newest
+    first) when it raises: a make_* call makes a complete op or nothing."""
+    before = {o.Name for o in doc.Objects}
+    try:
+        yield
+    except BaseException:
+        new = [o.Name for o in doc.Objects if o.Name not in before]
+        for name in reversed(new):  # removing a tool controller removes its tool bit too
+            if doc.getObject(name) is not None:
+                doc.removeObject(name)
+        raise
 
 
 def _set_values(obj: object, values: dict) -> None:
@@ -98,9 +107,7 @@ def _tool_controller(job):
 def _create(job: object, faces: list, name: str, tool_controller: object, values: dict) -> object:
     """The op in ``job`` on the checked ``faces`` with ``values``; on any
     failure every object made here is removed before the error goes on."""
-    doc = job.Document
-    before = {o.Name for o in doc.Objects}
-    try:
+    with nothing_left_behind(job.Document):
         tc = tool_controller or _tool_controller(job)
         obj = groove_op.Create(name, parentJob=job, tool_controller=tc)
         obj.ToolController = tc
@@ -110,9 +117,6 @@ def _create(job: object, faces: list, name: str, tool_controller: object, values
         if "model_groove" in values:  # first: dimensions set after it override the model's
             _set_values(obj, {"model_groove": values["model_groove"]})
         _set_values(obj, values)
-    except BaseException:  # nothing half-made stays in the Job
-        _remove_new_objects(doc, before)
-        raise
     return obj
 
 

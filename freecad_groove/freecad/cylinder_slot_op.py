@@ -30,7 +30,6 @@ posts (op_error).
 """
 
 import math
-import traceback
 from typing import List, NamedTuple, Optional, Tuple
 
 import FreeCAD
@@ -140,13 +139,8 @@ class ObjectCylinderSlot(AddonOp):
         self.commandlist.extend(path_commands(plan))
 
     def _report_error(self, obj: object, error: Exception) -> None:
-        message = str(error) if isinstance(error, ValueError) else "%s: %s" % (type(error).__name__, error)
-        if not isinstance(error, ValueError):
-            FreeCAD.Console.PrintLog(traceback.format_exc())
-        self.error = message
         self._write_derived(obj, "", 0.0)
-        self.commandlist.append(Path.Command(comment_body("%s: %s" % (obj.Label, message))))
-        FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, message))
+        self.report_error(obj, error)
 
     @staticmethod
     def _write_derived(obj: object, region: str, width: float) -> None:

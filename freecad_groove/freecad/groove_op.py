@@ -63,11 +63,9 @@ are typed ``object`` below.
 """
 
 import math
-import traceback
 from typing import Optional
 
 import FreeCAD
-import Path
 import PathScripts.PathUtils as PathUtils
 
 from .. import hooks
@@ -91,7 +89,7 @@ from .groove_properties import (  # noqa: F401 - this module's API too
 )
 from .links import SafeEnvelope
 from .model_grooves import MODEL_VALUES, ModelGroove, not_overridden, read_picked_groove, with_model_hint
-from .op_path import comment_body, path_commands
+from .op_path import path_commands
 from .units import feed_mm_per_min, length_mm
 
 OP_NAME = "Groove"  # the op's kind in CAM's SetupSheet registry
@@ -199,18 +197,10 @@ class ObjectGroove(AddonOp):
                 FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, text))
 
     def _report_error(self, obj: object, error: Exception, clear_derived: bool) -> None:
-        """An op that cannot cut: one error line "<Label>: <message>" in the
-        report view (an exception escaping execute would print a Python
-        traceback too), a Path of one comment repeating it (never a stale
-        toolpath), the message kept in ``self.error``."""
-        message = str(error) if isinstance(error, ValueError) else "%s: %s" % (type(error).__name__, error)
-        if not isinstance(error, ValueError):  # a bug, not an input: its traceback for the log level
-            FreeCAD.Console.PrintLog(traceback.format_exc())
+        """report_error, the derived properties cleared first (``clear_derived``)."""
         if clear_derived:
             self._write_derived(obj, [])
-        self.error = message
-        self.commandlist.append(Path.Command(comment_body("%s: %s" % (obj.Label, message))))
-        FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, message))
+        self.report_error(obj, error)
 
     def current_plan(self, obj: object) -> list[GroovePlan]:
         """plan(obj) as the last recompute made it, while nothing has touched

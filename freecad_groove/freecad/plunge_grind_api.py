@@ -3,7 +3,7 @@
 import FreeCAD
 
 from . import plunge_grind_op
-from .api import _faces, _remove_new_objects, snake_case
+from .api import _faces, nothing_left_behind, snake_case
 from .plunge_grind_properties import DERIVED, PROPERTY_NAMES
 
 SETTABLE = tuple(n for n in PROPERTY_NAMES if n not in DERIVED) + ("CoolantMode", "Comment")
@@ -72,8 +72,7 @@ def make_plunge_grind(job, face, name="PlungeGrind", tool_controller=None, recom
     doc = job.Document
     if FreeCAD.ActiveDocument is None or FreeCAD.ActiveDocument.Name != doc.Name:
         FreeCAD.setActiveDocument(doc.Name)
-    before = {o.Name for o in doc.Objects}
-    try:
+    with nothing_left_behind(doc):
         tc = tool_controller or _tool_controller(job)
         obj = plunge_grind_op.Create(name, parentJob=job, tool_controller=tc)
         obj.ToolController = tc
@@ -81,9 +80,6 @@ def make_plunge_grind(job, face, name="PlungeGrind", tool_controller=None, recom
             for sub in subs:
                 obj.Proxy.addBase(obj, model, sub)
         _set_values(obj, values)
-    except BaseException:  # nothing half-made stays in the Job
-        _remove_new_objects(doc, before)
-        raise
     if recompute:
         doc.recompute()
     return obj

@@ -38,7 +38,6 @@ naming the property, the Path a comment repeating it, op_error(obj) keeps it.
 """
 
 import math
-import traceback
 from dataclasses import dataclass
 from typing import List, Optional
 
@@ -144,14 +143,9 @@ class ObjectPlungeGrind(AddonOp):
         self.commandlist.extend(path_commands(plan))
 
     def _report_error(self, obj: object, error: Exception) -> None:
-        message = str(error) if isinstance(error, ValueError) else "%s: %s" % (type(error).__name__, error)
-        if not isinstance(error, ValueError):
-            FreeCAD.Console.PrintLog(traceback.format_exc())
-        self.error = message
         if obj.GrindCall:
             obj.GrindCall = ""
-        self.commandlist.append(Path.Command(comment_body("%s: %s" % (obj.Label, message))))
-        FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, message))
+        self.report_error(obj, error)
 
     def _add_missing_properties(self, obj: object) -> None:
         for type_id, name, group, tooltip, default in PROPERTIES:

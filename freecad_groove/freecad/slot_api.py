@@ -3,7 +3,7 @@
 import FreeCAD
 
 from . import cylinder_slot_op
-from .api import _model, _remove_new_objects
+from .api import _model, nothing_left_behind
 
 KEYWORDS = {"depth": "Depth", "passes": "Passes", "allowance": "Allowance", "retract": "Retract",
             "coolant_mode": "CoolantMode", "comment": "Comment"}
@@ -73,8 +73,7 @@ def make_cylinder_slot(job, face, path, name="CylinderSlot", tool_controller=Non
     doc = job.Document
     if FreeCAD.ActiveDocument is None or FreeCAD.ActiveDocument.Name != doc.Name:
         FreeCAD.setActiveDocument(doc.Name)
-    before = {o.Name for o in doc.Objects}
-    try:
+    with nothing_left_behind(doc):
         tc = tool_controller or (job.Tools.Group[0] if job.Tools and job.Tools.Group else None)
         obj = cylinder_slot_op.Create(name, parentJob=job, tool_controller=tc)
         if tc is not None:
@@ -89,9 +88,6 @@ def make_cylinder_slot(job, face, path, name="CylinderSlot", tool_controller=Non
             except Exception as e:
                 raise ValueError("make_cylinder_slot(): %s=%r: not a value for %s (%s: %s)"
                                  % (key, value, KEYWORDS[key], type(e).__name__, e)) from None
-    except BaseException:
-        _remove_new_objects(doc, before)
-        raise
     if recompute:
         doc.recompute()
     return obj
