@@ -62,7 +62,8 @@ def line_nodes(color: tuple, width: float, pattern: object = None) -> tuple:
     return sep, coords, lines
 
 
-def _fill(coords, lines, polys):
+def fill_lines(coords: object, lines: object, polys: list) -> None:
+    """The Coin nodes ``coords`` and ``lines`` (line_nodes) drawing the polylines ``polys``."""
     points = [p for poly in polys for p in poly]
     coords.point.setNum(0)
     lines.numVertices.setNum(0)
@@ -100,7 +101,7 @@ class Preview:
         self.sections, self.rapids, self.feeds = polylines(plans)
         drawn = ((self._section, self.sections), (self._rapid, self.rapids), (self._feed, self.feeds))
         for (_separator, coords, line_set), polys in drawn:
-            _fill(coords, line_set, polys)
+            fill_lines(coords, line_set, polys)
         self.updates += 1
 
     def clear(self):

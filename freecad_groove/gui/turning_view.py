@@ -16,7 +16,7 @@ from PySide import QtGui
 
 from . import ICON
 from .command import add_to_cam
-from .preview import line_nodes
+from .preview import fill_lines, line_nodes
 
 COMMAND_CHECK = "FreeCADGroove_CheckTurning"
 _open_panel = None  # the TurningPanel shown in the task view, if any
@@ -79,12 +79,7 @@ class SectionDrawing:
         }
         for name, polys in self.drawn.items():
             _separator, coords, lines = self._layers[name]
-            points = [p for poly in polys for p in poly]
-            coords.point.setNum(0)
-            lines.numVertices.setNum(0)
-            if points:
-                coords.point.setValues(0, len(points), points)
-                lines.numVertices.setValues(0, len(polys), [len(poly) for poly in polys])
+            fill_lines(coords, lines, polys)
 
     def in_scene(self):
         return self._graph is not None and self._graph.findChild(self.root) >= 0

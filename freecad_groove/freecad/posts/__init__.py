@@ -104,7 +104,8 @@ among FreeCAD objects), ``program`` (one program's text: frame, tools,
 spindle, coolant, objects), ``path_commands`` (other objects' Paths as plain
 moves), ``grooves`` (a Groove op's grooves: native or expanded), ``pecking``
 (the pecking-cycle calls for plain grooves), ``reference_corner`` (the output's
-blade corner), ``errors`` (:class:`PostError`). This module: :func:`build` and
+blade corner), ``errors`` (:class:`PostError`), ``program_file`` (the
+program written to its file, atomically). This module: :func:`build` and
 :func:`export`.
 """
 
@@ -112,7 +113,6 @@ from typing import Any, Iterable, Optional, Sequence, Union
 
 import FreeCAD
 
-from ...engine.output import write_atomically
 from .command_post import command_post_class, report_help
 from .controls import CONTROLS, Control, control_named
 from .errors import PostError
@@ -120,6 +120,7 @@ from .objects import groove_op_of, job_of, label_of
 from .options import Options, make_parser, parse_options, tooltip
 from .pecking import PECKING_PROPERTIES
 from .program import Program
+from .program_file import write_program_file
 from .writer import LatheWriter
 
 __all__ = ["CONTROLS", "PostError", "export", "build", "parse_options", "make_parser", "tooltip", "groove_op_of",
@@ -153,10 +154,7 @@ def export(name: str, objectslist: Optional[Iterable[Any]], filename: Optional[s
             return None
         text = build(name, objectslist, options)
         if filename and filename != "-":
-            try:
-                write_atomically(filename, text)
-            except OSError as e:
-                raise PostError("cannot write %s: %s" % (filename, e.strerror or e)) from None
+            write_program_file(filename, text)
         return text
     except PostError as e:
         FreeCAD.Console.PrintError("%s_post: %s\n" % (control_named(name).post, e))

@@ -26,11 +26,11 @@ from typing import Any, Iterable, List, Optional, Sequence, Union
 from ...engine.errors import ProgramError
 from ...engine.grind_program import GrindItem, PlainMoves, grind_program
 from ...engine.moves import FEED, RAPID, Move
-from ...engine.output import write_atomically
 from ..plunge_grind_op import ObjectPlungeGrind, op_error
 from ..units import SECONDS_PER_MINUTE
 from .errors import PostError
 from .objects import is_fixture_block, is_job, is_tool_controller, job_of, label_of
+from .program_file import write_program_file
 
 AXES = ("XZY", "YZX", "XYZ", "YXZ", "ZXY", "ZYX")
 DEFAULT_AXES = "XZY"
@@ -145,10 +145,7 @@ def grind_export(name: str, objectslist: Optional[Iterable[Any]], filename: Opti
     try:
         text = _program(name, objectslist or [], argstring)
         if text is not None and filename and filename != "-":
-            try:
-                write_atomically(filename, text)
-            except OSError as e:
-                raise PostError("cannot write %s: %s" % (filename, e.strerror or e)) from None
+            write_program_file(filename, text)
         return text
     except PostError as e:
         FreeCAD.Console.PrintError("%s_post: %s\n" % (name, e))
