@@ -260,7 +260,7 @@ class MilltronicsCycle:
         diameter = settings.mill_tool_diameter
         if diameter is None:
             raise CycleError("tool diameter", None, "is not known: give the end mill's diameter "
-                             "(--tool-diameter or the tool table)", cycle=self.NAME)
+                             "with --tool-diameter (tool tables by D/H number are not read yet)", cycle=self.NAME)
         for axis, value in (("X", state.x), ("Y", state.y), ("Z", state.z)):
             if value is None:
                 raise CycleError(axis, None, "the start position is not known: program it before the call",
