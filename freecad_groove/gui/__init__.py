@@ -11,6 +11,7 @@ the page class): keep them stable.
     task_panel.py  view provider, task panel pages, OK/Cancel handling
     tool_page.py   the panel's "Tool and coolant" page (grooving tool controller button)
     widgets.py     the Qt helpers the pages are built from (forms, fields, error labels)
+    qt_wrappers.py   forgetting PySide's wrappers of the widgets FreeCAD deletes with a closed panel
     preview.py     the groove cross-section and toolpath drawn while editing
     slot_view.py   the Cylinder slot command and the op's Path drawn wrapped on its cylinder
     turning_view.py  the Check turning command: verify_job's section in the 3D view, figures in a task panel

@@ -1,0 +1,48 @@
+"""Forgetting PySide's wrappers of Qt objects FreeCAD deletes.
+
+PySide (shiboken) keeps one Python wrapper per C++ address. A widget FreeCAD
+makes in C++ and hands to Python (the task dialog's OK/Cancel button box, in
+``modifyStandardButtons``) is deleted by FreeCAD when the dialog closes
+without shiboken hearing of it: while anything still holds its wrapper (CAM's
+panel keeps ``self.buttonBox``; the panel lives on until Python's garbage
+collector breaks its reference cycles), the address stays mapped to it. Qt
+then builds the next panel's widgets at freed addresses, and PySide hands out
+the old wrapper for them: a spin box comes back as a QDialogButtonBox (an
+AttributeError in FreeCAD 1.1) or a form layout's item as a widget, whose
+methods then run on the wrong object (the segfault FreeCAD 1.0 showed inside
+``QFormLayout.itemAt`` about one GUI-suite run in four).
+
+``forget`` invalidates such wrappers once their objects are gone: shiboken
+drops the address, and a wrapper still held raises "already deleted" instead
+of reaching another object. Wrappers of objects Python made are left alone
+(shiboken hears of their deletion itself).
+"""
+
+from PySide import QtCore
+
+try:  # FreeCAD 1.1: Qt 6
+    import shiboken6 as shiboken
+except ImportError:  # FreeCAD 1.0: Qt 5
+    import shiboken2 as shiboken
+
+
+def made_by_qt(objects: list) -> list:
+    """The wrappers of ``objects`` (None allowed) and of their children that C++ made: those whose deletion
+    shiboken does not hear of. Call it while the objects are surely alive (it reads their children), and
+    ``forget`` the wrappers once the objects are deleted (that reads nothing of them)."""
+    found = {}
+    for obj in objects:
+        if obj is None or not shiboken.isValid(obj):
+            continue
+        for item in [obj] + list(obj.findChildren(QtCore.QObject)):
+            if not shiboken.createdByPython(item):
+                found[id(item)] = item
+    return list(found.values())
+
+
+def forget(wrappers: list) -> None:
+    """Invalidate ``wrappers`` (from made_by_qt) once their objects are deleted; shiboken's flags only,
+    so a wrapper of an object already gone is safe here."""
+    for wrapper in wrappers:
+        if shiboken.isValid(wrapper):
+            shiboken.invalidate(wrapper)
