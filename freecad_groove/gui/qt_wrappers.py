@@ -15,7 +15,9 @@ methods then run on the wrong object (the segfault FreeCAD 1.0 showed inside
 ``forget`` invalidates such wrappers once their objects are gone: shiboken
 drops the address, and a wrapper still held raises "already deleted" instead
 of reaching another object. Wrappers of objects Python made are left alone
-(shiboken hears of their deletion itself).
+(shiboken hears of their deletion itself). ``ForgetsButtonBox`` does it for
+a CAM op task panel (Path.Op.Gui.Base.TaskPanel): every op panel of the
+add-on derives from it.
 """
 
 from PySide import QtCore
@@ -46,3 +48,18 @@ def forget(wrappers: list) -> None:
     for wrapper in wrappers:
         if shiboken.isValid(wrapper):
             shiboken.invalidate(wrapper)
+
+
+class ForgetsButtonBox:
+    """Mixin before Path.Op.Gui.Base.TaskPanel: the dialog's button box, which
+    FreeCAD made and deletes, leaves no wrapper behind when the panel closes."""
+
+    def modifyStandardButtons(self, buttonBox):
+        super().modifyStandardButtons(buttonBox)
+        # Taken now: when the panel is cleaned up FreeCAD may have deleted the box already (a closed document).
+        self.made_by_qt = made_by_qt([buttonBox])
+
+    def cleanup(self, resetEdit):
+        self.buttonBox = None  # from now on there are no buttons to enable
+        super().cleanup(resetEdit)
+        forget(getattr(self, "made_by_qt", []))

@@ -16,9 +16,9 @@ from .tool_page import ToolPage
 from .widgets import fit_narrow_docks
 
 
-class GrooveTaskPanel(PathOpGui.TaskPanel):
+class GrooveTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
     """FreeCAD's op task panel with the tool page added and OK/Apply refused
-    while the groove is invalid."""
+    while the groove is invalid; its button box's wrappers forgotten on closing (qt_wrappers.py)."""
 
     def __init__(self, obj, deleteOnReject, opPage, selectionFactory):
         # Before CAM's panel shows the op and hides the model and stock: that marks the document modified.
@@ -26,7 +26,6 @@ class GrooveTaskPanel(PathOpGui.TaskPanel):
         self.was_modified = self.gui_document.Modified
         self.looks_before = document_looks(obj.Document)
         self.applied = False  # Apply wrote the panel's values into the op
-        self.made_by_qt = []  # wrappers of the widgets FreeCAD made for the panel (qt_wrappers.py)
         super().__init__(obj, deleteOnReject, opPage, selectionFactory)
         self.groove_page = opPage
         tool_page = ToolPage(obj, obj.Proxy.opFeatures(obj))
@@ -76,16 +75,8 @@ class GrooveTaskPanel(PathOpGui.TaskPanel):
 
     def modifyStandardButtons(self, buttonBox):
         super().modifyStandardButtons(buttonBox)
-        # Closing the dialog deletes the box FreeCAD made: its wrappers must not outlive it (qt_wrappers.py).
-        # Taken now: when the panel is cleaned up, FreeCAD may have deleted the box already (a closed document).
-        self.made_by_qt = qt_wrappers.made_by_qt([buttonBox])
         fit_narrow_docks(buttonBox)  # OK, Cancel, Apply: three 80 px buttons are wider than 1.0's dock
         self.update_buttons()
-
-    def cleanup(self, resetEdit):
-        self.buttonBox = None  # update_buttons from now on: no buttons to enable
-        super().cleanup(resetEdit)
-        qt_wrappers.forget(self.made_by_qt)
 
     def _refuse(self):
         self.groove_page.update_preview()  # the values the user sees now, not those of 20 ms ago
