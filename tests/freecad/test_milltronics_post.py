@@ -64,11 +64,14 @@ def _floor_face(shape, z, x_range):
     raise AssertionError("no face at Z%g" % z)
 
 
-def make_shop(corner=0.0):
+def make_shop(corner=0.0, turned=0.0):
+    """The block, its Job and the two ops; ``corner``: the pocket's corner radius, ``turned``: degrees it is
+    turned about Z."""
     doc = FreeCAD.newDocument("Milltronics")
     pocket = Part.makeBox(40, 20, 5, FreeCAD.Vector(30, 20, 15))
     if corner:
         pocket = pocket.makeFillet(corner, [e for e in pocket.Edges if abs(e.BoundBox.ZLength - 5) < 1e-6])
+    pocket.rotate(FreeCAD.Vector(50, 30, 15), FreeCAD.Vector(0, 0, 1), turned)
     round_pocket = Part.makeCylinder(6, 5, FreeCAD.Vector(15, 30, 15))
     block = doc.addObject("Part::Feature", "Block")
     block.Shape = Part.makeBox(100, 60, 20).cut(pocket).cut(round_pocket)
@@ -82,7 +85,7 @@ def make_shop(corner=0.0):
     face.Base = [(model, [_floor_face(model.Shape, 20.0, (0, 100))])]
     face.ZigZagAngle = 0.0
     pocket_op = PocketShape.Create("Pocket")
-    pocket_op.Base = [(model, [_floor_face(model.Shape, 15.0, (30, 70))])]
+    pocket_op.Base = [(model, [_floor_face(model.Shape, 15.0, (25, 75))])]
     setattr(pocket_op, PATTERN, "Offset")  # 1.1's default; 1.0's is ZigZag
     pocket_op.StepOver = 50  # 1.1's default; 1.0's is 100
     for op, step in ((face, 0.5), (pocket_op, 2.0)):
@@ -292,3 +295,86 @@ def test_cam_post_process_writes_the_program_or_reports_a_failed_post_in_one_lin
     assert console["PrintError"] == ["milltronics_mill_post: unrecognized arguments: --bogus (no file written)\n"]
     job.PostProcessorArgs = "--help"
     assert found.export() is None and "--expand-cycles" in "".join(console["PrintMessage"])
+
+
+def _set(obj, **values):
+    for name, value in values.items():
+        if name in obj.PropertiesList and obj.getTypeIdOfProperty(name) == "App::PropertyEnumeration":
+            setattr(obj, name, str(value))
+        else:
+            setattr(obj, name, value)
+
+
+@pytest.mark.parametrize("op_name, values, controller, reason", [
+    ("Face", dict(UseStartPoint=True), {}, "UseStartPoint is set: the cycle starts at the upper right corner"),
+    ("Face", dict(ExtraOffset=1.0), {}, "ExtraOffset is not 0: the cycle cuts to the area's edges"),
+    ("Pocket", dict(StartAt="Edge"), {}, "the op clears Offset from the edge: G34 laps from the centre outward "
+                                         "[%s Offset, StartAt Center]" % PATTERN),
+    ("Pocket", {}, dict(SpindleDir="Reverse"), "the spindle turns Reverse: G41 climbs and G42 cuts conventional "
+                                               "with M3"),
+    ("Face", {}, dict(HorizFeed=0.0), "the tool controller's HorizFeed is 0: the cycle needs its feed"),
+    ("Pocket", {}, dict(VertFeed=0.0), "the tool controller's VertFeed is 0: the cycle needs its feed"),
+])
+def test_each_reason_to_write_an_op_as_moves(shop, op_name, values, controller, reason):
+    doc, job, face, pocket, model = shop
+    op = face if op_name == "Face" else pocket
+    _set(op, **values)
+    _set(op.ToolController, **controller)
+    doc.recompute()
+    lines = post_module().export([job], "-", "").splitlines()
+    assert "(%s written as moves: %s)" % (op_name, reason) in lines
+
+
+@pytest.mark.parametrize("corner, turned, reason", [
+    (2.0, 0.0, "G34 P150=2: the corner radius is smaller than the tool radius 2.5 [0 cuts the corners at the "
+               "tool radius]"),
+    (0.0, 10.0, "an edge of the area is not along X or Y"),
+])
+def test_a_pocket_the_cycle_cannot_cut_is_written_as_moves(corner, turned, reason):
+    doc, job, face, pocket, model = make_shop(corner, turned)
+    try:
+        lines = post_module().export([job], "-", "").splitlines()
+        assert "(Pocket written as moves: %s)" % reason in lines
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+
+
+def test_another_op_is_written_as_its_moves_and_a_new_tool_after_g32(shop):
+    import Path
+    import Path.Tool.Controller as Controller
+
+    doc, job, face, pocket, model = shop
+    second = Controller.Create("TC2", tool=job.Tools.Group[0].Tool, toolNumber=2, assignViewProvider=False)
+    second.SpindleSpeed, second.HorizFeed, second.VertFeed = 2000.0, 10.0, 5.0
+    job.Proxy.addToolController(second)
+    pocket.ToolController = second
+    pocket.CoolantMode = "Flood"
+    custom = doc.addObject("Path::Feature", "Custom")
+    custom.Path = Path.Path([Path.Command("G0", {"X": 1, "Y": 2, "Z": 30}), Path.Command("G1", {"Z": 25, "F": 2}),
+                             Path.Command("G2", {"X": 3, "Y": 2, "I": 1, "J": 0, "F": 2})])
+    doc.recompute()
+    lines = post_module().export([job, custom], "-", "").splitlines()
+    at = lines.index("(Pocket: G34)")
+    assert lines[at - 4:at] == ["G32", "T2 M6", "S2000 M3", "M8"]
+    assert lines[lines.index("G31", at) + 1] == "M9"
+    assert lines[-6:] == ["(Custom written as moves: only CAM's Face and Pocket Shape ops have autoroutines here)",
+                          "G0 X1. Y2. Z30.", "G1 Z25. F120.", "G2 X3. Y2. I1. J0.", "M5", "M30"]
+
+
+@pytest.mark.parametrize("mode, code", [("Climb", "G41"), ("Conventional", "G42")])
+def test_cut_mode_gives_the_laps_direction_of_the_ops_path(shop, mode, code):
+    doc, job, face, pocket, model = shop
+    pocket.CutMode = mode
+    doc.recompute()
+    lines = post_module().export([job], "-", "").splitlines()
+    call = G34.parse(_section(lines, "(Pocket: G34)")[1])
+    assert call.compensation == code
+
+    def turning(points):  # the sum of the cross products of the X-Y feed segments at the lowest depth
+        low = min(z for _x, _y, z in points)
+        flat = [(x, y) for x, y, z in points if abs(z - low) < 1e-6]
+        return sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(flat, flat[1:]))
+
+    engine = [(m.x, m.y, m.z) for m in call.expand(START, Settings(mill_tool_diameter=TOOL)) if m.kind == FEED]
+    own = [point for point in _path_points(pocket) if point[2] < RAPID_Z]
+    assert (turning(engine) > 0) == (turning(own) > 0) == (mode == "Climb")  # counter-clockwise climbs with M3
