@@ -197,7 +197,7 @@ def test_the_cycles_sweep_what_the_ops_own_paths_sweep(corner):
             assert sorted(cycle) == sorted(own), op.Label
             for depth in cycle:
                 # the same area within the scallop; both inside the outline; the outline cleared
-                assert cycle[depth].symmetric_difference(own[depth]).area < 0.01 * outline.area, (op.Label, depth)
+                assert cycle[depth].symmetric_difference(own[depth]).area < 0.001 * outline.area, (op.Label, depth)
                 assert cycle[depth].difference(outline.buffer(1e-3)).area < 1e-6
                 reachable = outline.buffer(-TOOL / 2, 64).buffer(TOOL / 2, 64)  # a sharp corner keeps its radius
                 assert reachable.difference(cycle[depth]).area < 0.002 * outline.area
@@ -243,7 +243,10 @@ def test_native_program_read_back_by_the_engine_is_the_cycles_expansion(shop):
     lines = post_module().export([job], "-", "").splitlines()
     body = [line for line in lines if line not in ("G32", "T1 M6")]
     out = translate_program("\n".join(body), "milltronics", Settings(mill_tool_diameter=TOOL), target="linuxcnc")
-    assert "(%s)" % FACING.emit().split("\n")[-1] in out.splitlines()
+    out_lines = out.splitlines()
+    for call in (FACING, POCKET):
+        assert "(%s)" % call.emit().split("\n")[-1] in out_lines
+    assert out_lines.count("(G31: Z24., the last R)") == 2
 
 
 def test_inch_output_and_option_errors(shop):
