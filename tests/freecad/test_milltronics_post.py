@@ -381,3 +381,19 @@ def test_cut_mode_gives_the_laps_direction_of_the_ops_path(shop, mode, code):
     engine = [(m.x, m.y, m.z) for m in call.expand(START, Settings(mill_tool_diameter=TOOL)) if m.kind == FEED]
     own = [point for point in _path_points(pocket) if point[2] < RAPID_Z]
     assert (turning(engine) > 0) == (turning(own) > 0) == (mode == "Climb")  # counter-clockwise climbs with M3
+
+
+def test_a_path_that_does_not_reach_the_walls_as_the_cycle_would_is_written_as_moves(shop):
+    import Path
+
+    doc, job, face, pocket, model = shop
+    assert isinstance(recognise(pocket, False), NativeOp)
+    commands = []
+    for command in pocket.Path.Commands:  # the outer lap's right side (X67.5) 1 mm short of it
+        params = dict(command.Parameters)
+        if abs(params.get("X", 0.0) - 67.5) < 1e-6:
+            params["X"] = 66.5
+        commands.append(Path.Command(command.Name, params))
+    pocket.Path = Path.Path(commands)
+    assert recognise(pocket, False) == ("the op's Path reaches X32.5..66.5 Y22.5..37.5, the cycle's tool centre "
+                                        "X32.5..67.5 Y22.5..37.5")

@@ -7,7 +7,8 @@ its Pocket Shape op (Path.Op.PocketShape.ObjectPocket) one ``G34``
 - the area: the op's removal shape (what CAM clears, BoundaryShape,
   ClearEdges and extensions included) cut across is one outline, a rectangle
   along X and Y (G34: its corners may be quarter arcs of one radius, P150);
-  the tool's edge touches the outline, as in the engine's expansion;
+  the tool's edge touches the outline, as in the engine's expansion, and
+  the bound box of the op's Path is the outline less the tool's radius;
 - the depths: V = the highest and Z = the lowest Z level at which the op's
   Path cuts across X-Y, Q = StepDown: V, V - Q, ... Z must be the levels of
   the Path (a FinishDepth or any other pattern of depths differs). Z is what
@@ -41,6 +42,8 @@ FACE_OP = ("Path.Op.MillFace", "ObjectFace")
 POCKET_OP = ("Path.Op.PocketShape", "ObjectPocket")
 LENGTH_TOL = 1e-3  # mm: CAM writes its depths with a few 1e-6 mm of noise
 ANGLE_TOL = 1e-6  # degrees / radians
+MOTION = {"G1": "G1", "G01": "G1", "G2": "G2", "G02": "G2", "G3": "G3", "G03": "G3"}
+REACH_TOL = 0.01  # mm: how far the op's Path may end from where the cycle's tool centre turns
 DECIMALS = {False: 3, True: 4}  # the P parameters and words: mm, inch
 
 
@@ -138,8 +141,11 @@ def rectangle_of(shape: Any) -> Rectangle:
         raise NotNative("the area's corners are not four arcs of one radius")
     wire_box = wire.BoundBox
     expected = wire_box.XLength * wire_box.YLength - (4 - math.pi) * corner ** 2
-    if abs(Part.Face(wire).Area - expected) > LENGTH_TOL * (wire_box.XLength + wire_box.YLength):
+    area = Part.Face(wire).Area
+    if abs(area - expected) > LENGTH_TOL * (wire_box.XLength + wire_box.YLength):
         raise NotNative("the area is not a rectangle along X and Y")
+    if abs(shape.Volume - area * box.ZLength) > LENGTH_TOL * (wire_box.XLength + wire_box.YLength) * box.ZLength:
+        raise NotNative("the area changes with depth: the cycle clears one rectangle at every depth")
     return Rectangle(wire_box.Center.x, wire_box.Center.y, wire_box.XLength, wire_box.YLength, corner)
 
 
@@ -151,13 +157,62 @@ def path_depths(op: Any) -> Tuple[float, ...]:
         params = command.Parameters
         before = dict(where)
         where.update({axis: params[axis] for axis in "XYZ" if axis in params})
-        if command.Name not in ("G1", "G01", "G2", "G02", "G3", "G03") or before["Z"] is None:
+        if command.Name not in MOTION or before["Z"] is None:
             continue
         flat = abs(where["Z"] - before["Z"]) <= LENGTH_TOL
         moved = any(before[a] is not None and abs(where[a] - before[a]) > LENGTH_TOL for a in "XY")
         if flat and moved and not any(abs(where["Z"] - level) <= LENGTH_TOL for level in levels):
             levels.append(where["Z"])
     return tuple(sorted(levels, reverse=True))
+
+
+def _arc_extremes(start: Tuple[float, float], end: Tuple[float, float], params: Any,
+                  clockwise: bool) -> List[Tuple[float, float]]:
+    """The points of an X-Y arc (I, J from its start) furthest along +X, +Y, -X, -Y that lie on it."""
+    cx, cy = start[0] + params.get("I", 0.0), start[1] + params.get("J", 0.0)
+    radius = math.hypot(start[0] - cx, start[1] - cy)
+    a0, a1 = math.atan2(start[1] - cy, start[0] - cx), math.atan2(end[1] - cy, end[0] - cx)
+    sweep = (a0 - a1 if clockwise else a1 - a0) % (2 * math.pi) or 2 * math.pi
+    points = []
+    for quarter in range(4):
+        angle = quarter * math.pi / 2
+        along = ((a0 - angle) if clockwise else (angle - a0)) % (2 * math.pi)
+        if along <= sweep:
+            points.append((cx + radius * math.cos(angle), cy + radius * math.sin(angle)))
+    return points
+
+
+def feed_box(op: Any) -> Optional[Tuple[float, float, float, float]]:
+    """X min, X max, Y min, Y max (mm) of the op's feed moves (G1-G3, arcs included), None without any."""
+    where = {"X": None, "Y": None, "Z": None}
+    points: List[Tuple[float, float]] = []
+    for command in op.Path.Commands:
+        params = command.Parameters
+        before = (where["X"], where["Y"])
+        where.update({axis: params[axis] for axis in "XYZ" if axis in params})
+        name = MOTION.get(command.Name)
+        if name in ("G1", "G2", "G3") and None not in before and None not in (where["X"], where["Y"]):
+            points += [before, (where["X"], where["Y"])]
+            if name != "G1":
+                points += _arc_extremes(before, (where["X"], where["Y"]), params, name == "G2")
+    if not points:
+        return None
+    xs, ys = [x for x, _y in points], [y for _x, y in points]
+    return min(xs), max(xs), min(ys), max(ys)
+
+
+def _check_reach(op: Any, rect: Rectangle, diameter: float) -> None:
+    """NotNative when the op's Path (its bound box in X-Y) does not reach the walls less the tool's radius, as
+    the cycle does, or goes beyond."""
+    box = feed_box(op)
+    if box is None:
+        raise NotNative("the op's Path cuts nothing")
+    inset_x, inset_y = rect.size_x / 2.0 - diameter / 2.0, rect.size_y / 2.0 - diameter / 2.0
+    cycle = (rect.cx - inset_x, rect.cx + inset_x, rect.cy - inset_y, rect.cy + inset_y)
+    own = box
+    if any(abs(a - b) > REACH_TOL for a, b in zip(own, cycle)):
+        raise NotNative("the op's Path reaches X%s..%s Y%s..%s, the cycle's tool centre X%s..%s Y%s..%s"
+                        % tuple("%g" % round(value, 3) for value in own + cycle))
 
 
 def _check_pattern(op: Any, kind: str, rect: Rectangle) -> None:
@@ -251,6 +306,7 @@ def recognise(op: Any, inches: bool) -> Union[NativeOp, str]:
         diameter = _tool_diameter(op)
         rect = rectangle_of(getattr(op, "removalshape", None))
         _check_pattern(op, kind, rect)
+        _check_reach(op, rect, diameter)
         call = make_call(op, kind, rect, diameter, inches)
         x, y = _scaled(rect.cx, inches), _scaled(rect.cy, inches)
         clearance = _scaled(_value(op.ClearanceHeight), inches)
