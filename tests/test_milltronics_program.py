@@ -133,3 +133,30 @@ def test_the_command_line_refuses_a_broken_program_in_one_line(tmp_path):
     assert proc.returncode != 0 and proc.stdout == b""
     assert proc.stderr.decode().strip().splitlines() == [
         "%s:7: G33 V=-0.2: the first depth is below the final depth Z-0.1" % program]
+
+
+def _emit(*args):
+    return subprocess.run([sys.executable, "-m", "freecad_groove", "emit", *args], cwd=ROOT, capture_output=True,
+                          timeout=120)
+
+
+def test_emit_takes_the_p_parameters_as_options_and_writes_their_blocks_before_the_call():
+    seed = ["--p151", "1", "--p152", "3", "--p155", ".1", "-R", ".1", "-Z", "-.5", "-V", "-.3", "-Q", ".1", "-F", "5"]
+    proc = _emit("g33", *seed)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.decode().splitlines() == ["P151=1.", "P152=3.", "P155=0.1", "G33 R0.1 Z-0.5 V-0.3 Q0.1 F5."]
+    proc = _emit("g34", "--p150", ".25", "--p151", "2", "--p152", "1.5", "--p155", ".15", "-R", ".1", "-Z", "-.4",
+                 "-Q", ".15")
+    assert proc.stdout.decode().splitlines()[0] == "P150=0.25" and proc.returncode == 0
+    # the rules see them: a cut width over the tool's diameter; --expand runs the seed's facing
+    seed[5] = ".3"
+    proc = _emit("g33", *seed, "--tool-diameter", ".25")
+    assert proc.returncode == 2 and proc.stdout == b""
+    assert proc.stderr.decode().strip() == ("emit milltronics-g33:1: G33 P155=0.3: the cut width is larger than the "
+                                            "tool (diameter 0.25): ridges would be left")
+    seed[5] = ".1"
+    proc = _emit("g33", *seed, "--tool-diameter", ".25", "--expand", "--start-x", "1", "--start-y", "2", "--start-z",
+                 "1", "--feed", "20", "--units", "inch", "--feed-mode", "min")
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.decode().splitlines()[3:5] == ["X1.375 Y3.375", "Z0.1"]  # the upper right corner first
+    assert _emit("g31", "--p151", "1").returncode == 2  # G31 reads no P parameter: no option
