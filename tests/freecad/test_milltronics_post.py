@@ -397,3 +397,18 @@ def test_a_path_that_does_not_reach_the_walls_as_the_cycle_would_is_written_as_m
     pocket.Path = Path.Path(commands)
     assert recognise(pocket, False) == ("the op's Path reaches X32.5..66.5 Y22.5..37.5, the cycle's tool centre "
                                         "X32.5..67.5 Y22.5..37.5")
+
+
+def test_a_facing_that_does_not_start_at_the_upper_right_corner_is_written_as_moves(shop):
+    import Path
+
+    doc, job, face, pocket, model = shop
+    assert isinstance(recognise(face, False), NativeOp)
+    commands = []
+    for command in face.Path.Commands:  # the same passes mirrored in Y: from the lower right corner
+        params = dict(command.Parameters)
+        if "Y" in params:
+            params["Y"] = 60.0 - params["Y"]
+        commands.append(Path.Command(command.Name, params))
+    face.Path = Path.Path(commands)
+    assert recognise(face, False) == "the op's Path starts at X97.5 Y2.5, G33 at the upper right corner X97.5 Y57.5"

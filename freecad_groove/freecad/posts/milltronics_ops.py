@@ -19,6 +19,8 @@ its Pocket Shape op (Path.Op.PocketShape.ObjectPocket) one ``G34``
   ZigZag, ZigZagAngle 0 for X, 90 for Y); G34 laps from the centre outward
   (Offset, StartAt Center), CutMode Climb = G41, Conventional = G42 with the
   spindle Forward (M3); no StartPoint, no ExtraOffset, no rest machining;
+  G33's Path starts its cut at the upper right corner (as CAM's ZigZag at
+  0 degrees does);
 - the tool: an end mill; P155 = StepOver % x its diameter (at most the
   diameter); F = the tool controller's VertFeed, the X-Y feed its HorizFeed;
 - the engine's own rules (engine/cycles/milltronics.py) hold.
@@ -215,6 +217,20 @@ def _check_reach(op: Any, rect: Rectangle, diameter: float) -> None:
                         % tuple("%g" % round(value, 3) for value in own + cycle))
 
 
+def _check_start(op: Any, rect: Rectangle, diameter: float) -> None:
+    """G33: NotNative when the op's Path does not start its cut at the upper right corner, as G33 does."""
+    where = {"X": None, "Y": None}
+    for command in op.Path.Commands:
+        if MOTION.get(command.Name) and None not in where.values():
+            break
+        where.update({axis: command.Parameters[axis] for axis in "XY" if axis in command.Parameters})
+    corner = (rect.cx + rect.size_x / 2.0 - diameter / 2.0, rect.cy + rect.size_y / 2.0 - diameter / 2.0)
+    if None in where.values() or any(abs(where[a] - c) > REACH_TOL for a, c in zip("XY", corner)):
+        raise NotNative("the op's Path starts at X%s Y%s, G33 at the upper right corner X%g Y%g"
+                        % (tuple("?" if where[a] is None else "%g" % round(where[a], 3) for a in "XY")
+                           + (round(corner[0], 3), round(corner[1], 3))))
+
+
 def _check_pattern(op: Any, kind: str, rect: Rectangle) -> None:
     name = "ClearingPattern" if hasattr(op, "ClearingPattern") else "OffsetPattern"  # 1.1 renamed it
     pattern = str(getattr(op, name, ""))
@@ -307,6 +323,8 @@ def recognise(op: Any, inches: bool) -> Union[NativeOp, str]:
         rect = rectangle_of(getattr(op, "removalshape", None))
         _check_pattern(op, kind, rect)
         _check_reach(op, rect, diameter)
+        if kind == "G33":
+            _check_start(op, rect, diameter)
         call = make_call(op, kind, rect, diameter, inches)
         x, y = _scaled(rect.cx, inches), _scaled(rect.cy, inches)
         clearance = _scaled(_value(op.ClearanceHeight), inches)
