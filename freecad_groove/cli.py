@@ -290,6 +290,7 @@ def _read_text(path, what):
 def _tool_table(args):
     """The --tool-table read (None without one); bad lines as TABLE:LINE: message."""
     from .engine.errors import ProgramError
+    from .engine.mill_tool_table import read_mill_tool_table
     from .engine.tool_table import read_tool_table
 
     path = args.tool_table
@@ -302,6 +303,8 @@ def _tool_table(args):
         raise _Failure("<stdin>", 0, "the program and the tool table cannot both be read from standard input")
     name, text = _read_text(path, "the tool table")
     try:
+        if getattr(args, "dialect", None) == "milltronics":  # end mill diameters by D number
+            return read_mill_tool_table(text, name)
         return read_tool_table(text, name)
     except ProgramError as exc:
         raise _Failure.of_program_error(name, exc) from None
