@@ -24,6 +24,7 @@ import pytest
 from pylib import require_shapely
 
 from freecad_groove.engine.cycles.milltronics import G33, G34
+from freecad_groove.engine.mill_tool_table import MillToolTable
 from freecad_groove.engine.moves import FEED, MachineState
 from freecad_groove.engine.settings import Settings
 from freecad_groove.engine.translator import translate_program
@@ -113,8 +114,8 @@ def test_the_face_and_pocket_ops_post_as_g33_and_g34_with_the_ops_values(shop):
     doc, job, face, pocket, model = shop
     text = post_module().export([job], "-", "")
     lines = text.splitlines()
-    assert lines[:6] == ["(Job: milltronics_mill_post of freecad-groove)", "G21 G90 G40", "G32", "T1 M6",
-                         "S3000 M3", FACE_TITLE]
+    assert lines[:7] == ["(Job: milltronics_mill_post of freecad-groove)", "G21 G90 G40", "G32", "T1 M6",
+                         "S3000 M3", "D1 G43 H1", FACE_TITLE]
     position, block = _section(lines, FACE_TITLE)
     assert position == ["G0 Z26.", "G0 X50. Y30.", "F600."]
     assert G33.parse(block) == FACING
@@ -225,15 +226,30 @@ def test_ops_the_cycles_cannot_reproduce_are_written_as_moves_with_the_reason(sh
     assert isinstance(recognise(face, False), NativeOp) and isinstance(recognise(pocket, False), NativeOp)
 
 
+TABLE = MillToolTable([(1, TOOL)], "the Job's tools")
+
+
+def _readable(lines):
+    """The program as the engine's reader takes it: it reads D (the diameter of G33/G34 from TABLE), not the tool
+    change (one end mill per program), the length offset (set on the machine) nor a G32 before any X Y (the first
+    is at the start)."""
+    out = []
+    for line in lines:
+        if line == "D1 G43 H1":
+            out.append("D1")
+        elif line not in ("G32", "T1 M6"):
+            out.append(line)
+    return out
+
+
 def test_expand_cycles_writes_the_ops_paths_which_the_engine_reads_back(shop):
     doc, job, face, pocket, model = shop
     text = post_module().export([job], "-", "--expand-cycles")
     lines = text.splitlines()
     assert "(Face written as moves: --expand-cycles)" in lines and "(Pocket written as moves: --expand-cycles)" in lines
     assert not any(line.startswith(("G33", "G34", "P15")) for line in lines)
-    # the engine's reader takes one end mill per program and needs X/Y before G32: the first tool change goes
-    body = [line for line in lines if line not in ("G32", "T1 M6")]
-    out = translate_program("\n".join(body), "milltronics", Settings(mill_tool_diameter=TOOL), target="linuxcnc")
+    body = _readable(lines)
+    out = translate_program("\n".join(body), "milltronics", Settings(), target="linuxcnc", tools=TABLE)
     feeds = [line for line in out.splitlines() if line.startswith("G1")]
     assert len(feeds) > 10
 
@@ -241,11 +257,11 @@ def test_expand_cycles_writes_the_ops_paths_which_the_engine_reads_back(shop):
 def test_native_program_read_back_by_the_engine_is_the_cycles_expansion(shop):
     doc, job, face, pocket, model = shop
     lines = post_module().export([job], "-", "").splitlines()
-    body = [line for line in lines if line not in ("G32", "T1 M6")]
-    out = translate_program("\n".join(body), "milltronics", Settings(mill_tool_diameter=TOOL), target="linuxcnc")
+    body = _readable(lines)
+    out = translate_program("\n".join(body), "milltronics", Settings(), target="linuxcnc", tools=TABLE)
     out_lines = out.splitlines()
     for call in (FACING, POCKET):
-        assert "(%s)" % call.emit().split("\n")[-1] in out_lines
+        assert "(%s: tool diameter 5.0, D1 of the Job's tools)" % call.emit().split("\n")[-1] in out_lines
     assert out_lines.count("(G31: Z24., the last R)") == 2
 
 
@@ -358,7 +374,7 @@ def test_another_op_is_written_as_its_moves_and_a_new_tool_after_g32(shop):
     doc.recompute()
     lines = post_module().export([job, custom], "-", "").splitlines()
     at = lines.index("(Pocket: G34)")
-    assert lines[at - 4:at] == ["G32", "T2 M6", "S2000 M3", "M8"]
+    assert lines[at - 5:at] == ["G32", "T2 M6", "S2000 M3", "D2 G43 H2", "M8"]
     assert lines[lines.index("G31", at) + 1] == "M9"
     assert lines[-6:] == ["(Custom written as moves: only CAM's Face and Pocket Shape ops have autoroutines here)",
                           "G0 X1. Y2. Z30.", "G1 Z25. F120.", "G2 X3. Y2. I1. J0.", "M5", "M30"]

@@ -7,8 +7,10 @@ The program: a comment naming the Job, ``G21 G90 G40`` (``G20`` with
 
 - a tool change when the op's tool controller is not the one in force:
   ``G32`` (Z to the tool change position), ``T<n> M6``, ``S<rpm> M3`` (M4
-  for SpindleDir Reverse); the op's CoolantMode: M8 flood, M7 mist before
-  the op, M9 after it;
+  for SpindleDir Reverse), ``D<n> G43 H<n>`` (as the seed's example: the
+  diameter register G41/G42 and the autoroutines read, and the length
+  offset, both numbered as the tool); the op's CoolantMode: M8 flood, M7
+  mist before the op, M9 after it;
 - an autoroutine (``--native-cycles``, the default): a comment (the op, the
   G code, a note when the op's Path stops above its FinalDepth), ``G0 Z`` to
   the op's ClearanceHeight, ``G0 X Y`` to the rectangle's centre, ``F`` the
@@ -95,8 +97,10 @@ class _Output:
             return
         self.tool = controller
         spin = "M4" if str(getattr(controller, "SpindleDir", "Forward")) == "Reverse" else "M3"
-        self.lines += ["G32", "T%d M6" % int(controller.ToolNumber),
-                       "S%s %s" % (format_decimal(float(controller.SpindleSpeed), 3, False), spin)]
+        number = int(controller.ToolNumber)
+        # the seed's D1 G43 H1: the autoroutines' G41/G42 read the diameter register, every Z the length offset
+        self.lines += ["G32", "T%d M6" % number, "S%s %s" % (format_decimal(float(controller.SpindleSpeed), 3, False),
+                                                             spin), "D%d G43 H%d" % (number, number)]
         self.feed = None
 
     def path(self, op: Any) -> None:
