@@ -68,6 +68,7 @@ from .cli_options import (
     siemens_value,
     start_state,
 )
+from .cli_parameters import add_parameter_options, parameter_lines
 from .cli_verify import add_verify_parsers
 from .cli_verify import run as run_verify
 from .engine import registry
@@ -133,6 +134,7 @@ def _add_cycle_words(parser: argparse.ArgumentParser, entry: CycleEntry) -> None
     for word in entry.words:
         flags = ("--" + word.name.lower(),) if entry.form == CALL else ("-" + word.name, "--" + word.name.lower())
         words.add_argument(*flags, dest="w_" + word.name, type=_word_type(entry, word), metavar="V", help=word.help)
+    add_parameter_options(words, entry)
     if entry.retract_block:
         words.add_argument(
             "-e", "--first-block-r", dest="retract_e", type=decimal_word, metavar="E",
@@ -202,7 +204,7 @@ def _native_text(args: argparse.Namespace, entry: CycleEntry) -> str:
     retract_e = getattr(args, "retract_e", None)
     if entry.retract_block and retract_e is not None:
         text = "%s %s%s\n%s" % (entry.name, entry.retract_block, retract_e, text)
-    return text
+    return "\n".join(parameter_lines(args, entry) + [text])
 
 
 def _emit(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]) -> str:
@@ -288,6 +290,7 @@ def _read_text(path, what):
 def _tool_table(args):
     """The --tool-table read (None without one); bad lines as TABLE:LINE: message."""
     from .engine.errors import ProgramError
+    from .engine.mill_tool_table import read_mill_tool_table
     from .engine.tool_table import read_tool_table
 
     path = args.tool_table
@@ -300,6 +303,8 @@ def _tool_table(args):
         raise _Failure("<stdin>", 0, "the program and the tool table cannot both be read from standard input")
     name, text = _read_text(path, "the tool table")
     try:
+        if getattr(args, "dialect", None) == "milltronics":  # end mill diameters by D number
+            return read_mill_tool_table(text, name)
         return read_tool_table(text, name)
     except ProgramError as exc:
         raise _Failure.of_program_error(name, exc) from None

@@ -168,7 +168,9 @@ def add_tool_table_option(parser: argparse.ArgumentParser) -> None:
         "e.g. '5 3.0 0.2 minus'; '#' starts a comment; lengths in the program's units when the cycle runs; "
         "- reads standard input. "
         "A CYCLE93 cuts with the blade of the tool in force (Siemens T5 D1, Fanuc-style T0512: tool 5); a tool "
-        "the table does not list, or a cycle before any T, is refused unless --tool-width gives a default blade.",
+        "the table does not list, or a cycle before any T, is refused unless --tool-width gives a default blade. "
+        "With --dialect milltronics: the end mill's diameter of each D register, one 'D diameter' a line, e.g. "
+        "'2 0.125'; G33/G34 cut with the D in force, else with --tool-diameter.",
     )
 
 

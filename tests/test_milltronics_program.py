@@ -1,6 +1,7 @@
 """Reading Milltronics programs (--dialect milltronics): P assignment blocks, the G33/G34
 autoroutines with G99 and G41/G42 in their block, G31/G32, inch and metric, LinuxCNC through rs274."""
 
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -10,8 +11,9 @@ from rs274 import require_rs274, run_rs274
 
 from freecad_groove.engine.cycles.milltronics import G33, G34
 from freecad_groove.engine.errors import ProgramError
+from freecad_groove.engine.mill_tool_table import read_mill_tool_table
 from freecad_groove.engine.moves import MachineState
-from freecad_groove.engine.settings import Settings
+from freecad_groove.engine.settings import DEFAULT_SETTINGS, Settings
 from freecad_groove.engine.translator import translate_program
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -103,8 +105,10 @@ def test_a_metric_pocket_program():
     ("G0 X0 Y0 Z1.\nP151=1 X2\n", "2: P151=1: a parameter assignment stands alone in its block"),
     ("G0 X0 Y0 Z1.\nP149=1\n", r"2: P149=1: not a parameter of the Milltronics cycles \(P150, P151"),
     ("G0 X0 Y0 Z1.\nG43 H1\n", "2: G43: tool length offset"),
-    ("T1\n", r"1: T1: tool changes and offsets \(T, D, H\) in a Milltronics program are not translated"),
-    ("S1000 M3 D1\n", r"1: D1: tool changes and offsets"),
+    ("T1\n", r"1: T1: tool changes and length offsets \(T, H\) in a Milltronics program are not translated: "
+              r"G33/G34 take the end mill's diameter from D<n> and the tool table, or --tool-diameter"),
+    ("S1000 M3 H1\n", r"1: H1: tool changes and length offsets"),
+    ("D1.5\n", "1: D1.5 must be a whole number"),
     ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\nP155=.1\nG33 R.1 Z-.1 V-.1\n",
      "6: G33 tool diameter: is not known: give the end mill's diameter"),
     ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\nP155=.3\nG34 R.1 Z-.1 V-.1\n",
@@ -133,3 +137,102 @@ def test_the_command_line_refuses_a_broken_program_in_one_line(tmp_path):
     assert proc.returncode != 0 and proc.stdout == b""
     assert proc.stderr.decode().strip().splitlines() == [
         "%s:7: G33 V=-0.2: the first depth is below the final depth Z-0.1" % program]
+
+
+def _emit(*args):
+    return subprocess.run([sys.executable, "-m", "freecad_groove", "emit", *args], cwd=ROOT, capture_output=True,
+                          timeout=120)
+
+
+def test_emit_takes_the_p_parameters_as_options_and_writes_their_blocks_before_the_call():
+    seed = ["--p151", "1", "--p152", "3", "--p155", ".1", "-R", ".1", "-Z", "-.5", "-V", "-.3", "-Q", ".1", "-F", "5"]
+    proc = _emit("g33", *seed)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.decode().splitlines() == ["P151=1.", "P152=3.", "P155=0.1", "G33 R0.1 Z-0.5 V-0.3 Q0.1 F5."]
+    proc = _emit("g34", "--p150", ".25", "--p151", "2", "--p152", "1.5", "--p155", ".15", "-R", ".1", "-Z", "-.4",
+                 "-Q", ".15")
+    assert proc.stdout.decode().splitlines()[0] == "P150=0.25" and proc.returncode == 0
+    # the rules see them: a cut width over the tool's diameter; --expand runs the seed's facing
+    seed[5] = ".3"
+    proc = _emit("g33", *seed, "--tool-diameter", ".25")
+    assert proc.returncode == 2 and proc.stdout == b""
+    assert proc.stderr.decode().strip() == ("emit milltronics-g33:1: G33 P155=0.3: the cut width is larger than the "
+                                            "tool (diameter 0.25): ridges would be left")
+    seed[5] = ".1"
+    proc = _emit("g33", *seed, "--tool-diameter", ".25", "--expand", "--start-x", "1", "--start-y", "2", "--start-z",
+                 "1", "--feed", "20", "--units", "inch", "--feed-mode", "min")
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.decode().splitlines()[3:5] == ["X1.375 Y3.375", "Z0.1"]  # the upper right corner first
+    assert _emit("g31", "--p151", "1").returncode == 2  # G31 reads no P parameter: no option
+
+
+# ---------------------------------------------------------------- the end mill's diameter by D number
+
+MILL_TABLE = "# D  diameter\n1  0.25\n2  0.125   # a 1/8\" end mill\n"
+BY_D = """G20 G90
+G0 X1 Y2 Z1.
+S1000 M3 %s
+F20
+P151=1
+P152=3
+P155=.1
+G33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5
+M30
+"""
+
+
+def _first_corner(text, settings=DEFAULT_SETTINGS, tools=None):
+    """The first X Y of the G33's moves (the upper right corner less the tool radius) and the G33's comment."""
+    lines = translate_program(text, "milltronics", settings, target="linuxcnc", tools=tools).splitlines()
+    at = next(i for i, line in enumerate(lines) if line.startswith("(G33"))
+    return lines[at + 1], lines[at]
+
+
+def test_a_tool_table_gives_the_diameter_of_the_d_in_force():
+    table = read_mill_tool_table(MILL_TABLE, "mill.tbl")
+    assert table == {1: 0.25, 2: 0.125} and table.source == "mill.tbl"
+    corner, title = _first_corner(BY_D % "D2", tools=table)
+    assert corner == "X1.4375 Y3.4375"  # 1 + 0.5 - 0.0625
+    assert title == "(G33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5: tool diameter 0.125, D2 of mill.tbl)"
+    assert _first_corner(BY_D % "D1", tools=table)[0] == "X1.375 Y3.375"
+    lines = translate_program(BY_D % "D2", "milltronics", Settings(), target="linuxcnc", tools=table).splitlines()
+    assert "S1000 M3 (D2: the diameter register of the G33/G34 that follow)" in lines
+    # a D the table does not list, or no D: --tool-diameter; else refused naming what to give
+    assert _first_corner(BY_D % "D7", QUARTER, table)[0] == "X1.375 Y3.375"
+    assert _first_corner(BY_D % "", Settings(mill_tool_diameter=0.125), table)[0] == "X1.4375 Y3.4375"
+    with pytest.raises(ProgramError, match=r"^G33: the tool diameter is unknown: D7 is not in the tool table mill.tbl"):
+        translate_program(BY_D % "D7", "milltronics", Settings(), target="linuxcnc", tools=table)
+    with pytest.raises(ProgramError, match="no D is programmed before it, so the tool table mill.tbl cannot give it"):
+        translate_program(BY_D % "", "milltronics", Settings(), target="linuxcnc", tools=table)
+    with pytest.raises(ProgramError, match="the tool diameter of G33 depends on a block-delete '/' line"):
+        translate_program(BY_D.replace("S1000 M3 %s", "D1\n/D2"), "milltronics", Settings(), target="linuxcnc",
+                          tools=table)
+
+
+@pytest.mark.parametrize("text, message", [
+    ("1 0.25 x\n", "1: 3 fields: a line holds D and diameter"),
+    ("1.5 0.25\n", "1: D=1.5: must be a whole number, 0 or more"),
+    ("1 0\n", "1: diameter=0: must be a number greater than 0"),
+    ("1 nan\n", "1: diameter=nan: must be a number greater than 0"),
+    ("1 .25\n\n1 .5\n", "3: D=1: is in the table twice"),
+])
+def test_the_mill_tool_table_rules(text, message):
+    line, message = message.split(": ", 1)
+    with pytest.raises(ProgramError, match=re.escape(message)) as raised:
+        read_mill_tool_table(text, "mill.tbl")
+    assert raised.value.line == int(line)
+
+
+def test_the_command_line_reads_a_mill_tool_table_for_a_milltronics_program(tmp_path):
+    program, table = tmp_path / "by_d.nc", tmp_path / "mill.tbl"
+    program.write_text(BY_D % "D2")
+    table.write_text(MILL_TABLE)
+    proc = subprocess.run([sys.executable, "-m", "freecad_groove", "expand", str(program), "--dialect", "milltronics",
+                           "--tool-table", str(table), "--to", "linuxcnc"], cwd=ROOT, capture_output=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert "X1.4375 Y3.4375" in proc.stdout.decode().splitlines()
+    table.write_text("2 0.125 minus\n")
+    proc = subprocess.run([sys.executable, "-m", "freecad_groove", "expand", str(program), "--dialect", "milltronics",
+                           "--tool-table", str(table)], cwd=ROOT, capture_output=True, timeout=120)
+    assert proc.returncode != 0 and proc.stdout == b""
+    assert proc.stderr.decode().strip() == "%s:1: 3 fields: a line holds D and diameter (e.g. '1 0.25')" % table

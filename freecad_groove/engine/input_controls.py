@@ -156,6 +156,7 @@ DWELL_POINT_SECONDS = "seconds with a decimal point, milliseconds without"
 # how the tool is selected (InputControl.tool_words)
 TOOL_AND_EDGE = "T<tool> D<cutting edge>"
 TOOL_AND_OFFSET = "T<tool><2-digit offset>"
+DIAMETER_REGISTER = "D<diameter register>"  # Milltronics: D selects the end mill's diameter (mill_tool_table)
 
 
 @dataclass(frozen=True)
@@ -239,8 +240,9 @@ _MILLTRONICS_CODES = {
     "42": GCode(CYCLE_COMPENSATION, "G42"),
 }
 
-_MILLTRONICS_TOOLS = ("tool changes and offsets (T, D, H) in a Milltronics program are not translated: one end mill "
-                      "per program, its diameter given by --tool-diameter; set its offsets on the target machine")
+_MILLTRONICS_TOOLS = ("tool changes and length offsets (T, H) in a Milltronics program are not translated: G33/G34 "
+                      "take the end mill's diameter from D<n> and the tool table, or --tool-diameter; set the "
+                      "offsets on the target machine")
 
 _FANUC = InputControl(
     name="fanuc",
@@ -298,8 +300,9 @@ INPUT_CONTROLS: Dict[str, InputControl] = {
             help="Milltronics mill (G33 facing and G34 rectangular pocket autoroutines with P151=.. assignment "
             "blocks, G31/G32 Z to clearance / tool change; X/Y/Z, feed per minute; G20/G21, G90/G91)",
             g_codes=_MILLTRONICS_CODES,
-            plain_letters=frozenset("XYZFSMG"),
-            letter_refusals={letter: _MILLTRONICS_TOOLS for letter in "TDH"},
+            plain_letters=frozenset("XYZFSMGD"),
+            letter_refusals={letter: _MILLTRONICS_TOOLS for letter in "TH"},
+            tool_words=DIAMETER_REGISTER,
             decimal_point=False,  # the seed writes X1 Y2 F20 for 1", 2", 20 in/min
             dwell_unsupported="G04: the Milltronics dwell word is not documented here; not translated",
             mill=True,

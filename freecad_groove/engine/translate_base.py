@@ -7,10 +7,11 @@ The handlers themselves are mixins on :class:`TranslatorBase`: motion
 (translate_cycle.py); translator.py puts them together.
 """
 
-from typing import Dict, List, NamedTuple, NoReturn, Optional, Set, Tuple
+from typing import Dict, List, NamedTuple, NoReturn, Optional, Set, Tuple, Union
 
 from .errors import ProgramError
 from .input_controls import CYCLE, DIAMETER, DISTANCE, FEED_MODE, UNITS, InputControl, Units
+from .mill_tool_table import MillToolTable
 from .modal import ModalState
 from .numbers import MAX_WORD, MM_PER_INCH
 from .reader import Block, Word
@@ -18,6 +19,8 @@ from .settings import Settings
 from .targets import MAX_LINE, Writer, comment
 from .tool_table import ToolTable
 from .warnings import CycleWarning
+
+Tools = Union[ToolTable, MillToolTable]  # the blades by T (lathes), the end mill diameters by D (Milltronics)
 
 __all__ = ["ActiveCode", "TranslatorBase"]
 
@@ -37,7 +40,7 @@ class TranslatorBase:
 
     control: InputControl
     settings: Settings
-    tools: Optional[ToolTable]  # the blade of each tool number, or None
+    tools: Optional[Tools]  # the blade of each tool number, or None
     state: ModalState
     writer: Writer
     body: List[str]  # the translated blocks

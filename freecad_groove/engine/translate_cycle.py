@@ -6,12 +6,13 @@ from typing import List, NamedTuple, Optional, Sequence
 
 from .errors import CycleError, ProgramError
 from .input_controls import CYCLE, CYCLE_OPTIONS, MODE_GROUPS
+from .mill_tool_table import MillToolTable, diameter_for
 from .moves import MachineState, Move
 from .numbers import MAX_WORD
 from .reader import Block, Word
 from .registry import CycleEntry
 from .settings import Settings
-from .tool_table import blade_for
+from .tool_table import ToolTable, blade_for
 from .translate_base import Groups, TranslatorBase
 from .warnings import cycle_warnings
 
@@ -81,6 +82,9 @@ class CycleTranslation(TranslatorBase):
             moves = model.expand(start, settings)
             if hasattr(model, "note"):  # what the call did that its words do not say (G32: the Z used)
                 label = "%s: %s" % (label, model.note(start, settings))
+            elif isinstance(self.tools, MillToolTable) and self.state.tool in self.tools:
+                label = "%s: tool diameter %s, D%d of %s" % (label, settings.mill_tool_diameter, self.state.tool,
+                                                             self.tools.source)
             self._collect_warnings(entry, model, start, settings)
         except CycleError as exc:
             self._fail(exc.message)
@@ -235,7 +239,15 @@ class CycleTranslation(TranslatorBase):
 
     def _cycle_settings(self, entry: CycleEntry) -> Settings:
         """The settings the cycle runs with: one that NEEDS_BLADE gets the blade of
-        the tool in force (tool_table.blade_for), or is refused."""
+        the tool in force (tool_table.blade_for), or is refused; a Milltronics G33/G34
+        with a mill tool table the diameter of the D in force (mill_tool_table.diameter_for)."""
+        if isinstance(self.tools, MillToolTable) and getattr(entry.cycle_class, "PARAMETERS", ()):
+            self._not_ambiguous("tool", why="the tool diameter of %s" % entry.name)
+            try:
+                diameter = diameter_for(self.state.tool, self.tools, self.settings.mill_tool_diameter)
+            except ProgramError as exc:
+                self._fail("%s: %s" % (entry.name, exc))
+            return replace(self.settings, mill_tool_diameter=diameter)
         if not entry.needs_blade:
             return self.settings
         if self.tools is not None:
@@ -250,7 +262,7 @@ class CycleTranslation(TranslatorBase):
         """The cycle's warnings, on this line. A cycle that needs no blade still
         gets the tool table's blade of the tool in force where there is one, for
         its warnings (a Fanuc relief is checked against the blade's width)."""
-        if not entry.needs_blade and self.tools is not None and "tool" not in self.state.ambiguous:
+        if not entry.needs_blade and isinstance(self.tools, ToolTable) and "tool" not in self.state.ambiguous:
             try:
                 settings = replace(settings, tool=blade_for(self.state.tool, self.tools, settings.tool))
             except ProgramError:

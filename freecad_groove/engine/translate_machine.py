@@ -5,6 +5,7 @@ from typing import Callable, Dict, List, NamedTuple, Optional
 
 from .input_controls import (
     CSS,
+    DIAMETER_REGISTER,
     DWELL_LENGTH_SECONDS,
     DWELL_MILLISECONDS,
     DWELL_POINT_SECONDS,
@@ -58,8 +59,20 @@ class MachineTranslation(TranslatorBase):
 
     # -- tools ----------------------------------------------------------------------
 
+    def _diameter_register(self, block: Block) -> Optional[str]:
+        """Milltronics ``D1``: the register of the end mill's diameter the G33/G34 that follow cut with (the
+        tool in force, for mill_tool_table.diameter_for); nothing is written for it but the note returned."""
+        word = block.get("D")
+        if word is None:
+            return None
+        self.state.tool = self._integer(word)
+        self._defined.add("tool")
+        return "D%d: the diameter register of the G33/G34 that follow" % self.state.tool
+
     def _tool(self, block: Block, output: List[str]) -> None:
         """T (and Siemens D): a tool change, written as T M6 G43 (Fanuc output: T0101)."""
+        if self.control.tool_words == DIAMETER_REGISTER:
+            return  # D is read by _diameter_register
         tool_word = block.get("T")
         edge_word = block.get("D")
         if tool_word is None and edge_word is None:

@@ -126,6 +126,7 @@ from .input_controls import (
     COMPENSATION,
     CYCLE,
     CYCLE_OPTIONS,
+    DIAMETER_REGISTER,
     DWELL,
     OFFSET,
     PLANE,
@@ -138,8 +139,7 @@ from .moves import MachineState
 from .reader import Block, parse_block
 from .settings import DEFAULT_SETTINGS, Settings
 from .targets import MAX_LINE, Writer, comment, mill_target, target_spec
-from .tool_table import ToolTable
-from .translate_base import ActiveCode, Groups
+from .translate_base import ActiveCode, Groups, Tools
 from .translate_cycle import CycleTranslation
 from .translate_machine import MachineTranslation
 from .translate_motion import MotionTranslation
@@ -161,7 +161,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
 
     def __init__(self, dialect: str, settings: Settings = DEFAULT_SETTINGS, target: str = "linuxcnc",
                  source_name: str = "PROGRAM", start: Optional[MachineState] = None,
-                 tools: Optional[ToolTable] = None) -> None:
+                 tools: Optional[Tools] = None) -> None:
         self.control = input_control(dialect)  # raises on an unknown dialect
         if self.control.mill:  # a grinder program: its mill-style twin (G17, X/Y/Z)
             target = mill_target(target)
@@ -316,9 +316,10 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         if feed_word is not None:
             output.append("F" + self.writer.f_word(state.feed))
         self._stops_and_ends(stops_and_ends, output)
-        self._emit_early(block, early, output or block.comments)
-        if output or block.comments:
-            self._emit(self._words_line(block, output))
+        note = self._diameter_register(block) if self.control.tool_words == DIAMETER_REGISTER else None
+        self._emit_early(block, early, output or block.comments or note)
+        if output or block.comments or note:
+            self._emit(self._words_line(block, output, note))
         self._sync_writer()
 
     def _check_plain_letters(self, block: Block) -> None:
@@ -407,7 +408,7 @@ def program_lines(program: Union[str, Iterable[str]]) -> Iterator[str]:
 
 def iter_translation(program: Union[str, Iterable[str]], dialect: str, settings: Settings = DEFAULT_SETTINGS,
                      target: str = "linuxcnc", source_name: str = "PROGRAM", start: Optional[MachineState] = None,
-                     tools: Optional[ToolTable] = None,
+                     tools: Optional[Tools] = None,
                      warnings: Optional[List[Tuple[int, CycleWarning]]] = None) -> Iterator[str]:
     """translate_program, block by block: yields the translated text in chunks
     of whole lines as ``program`` is read (a text, or lines read lazily, e.g. a
@@ -429,14 +430,16 @@ def translate_program(
     target: str = "linuxcnc",
     source_name: str = "PROGRAM",
     start: Optional[MachineState] = None,
-    tools: Optional[ToolTable] = None,
+    tools: Optional[Tools] = None,
     warnings: Optional[List[Tuple[int, CycleWarning]]] = None,
 ) -> str:
     """Translate a ``dialect`` program for ``target`` with every cycle call expanded.
 
     ``start`` (moves.MachineState, optional) gives the modes at the start
     (diameter_mode, incremental, metric, feed_per_rev); the position is never
-    taken from it. ``tools`` (tool_table.ToolTable, optional) gives the blade
+    taken from it. ``tools`` (tool_table.ToolTable, optional; for a Milltronics
+    program a mill_tool_table.MillToolTable: G33/G34 cut with the diameter of
+    the D in force, else settings.mill_tool_diameter) gives the blade
     of each tool number; a cycle that needs a blade (CYCLE93) cuts with the
     table's entry for the tool in force, else with ``settings.tool``, else it
     is refused. Raises ProgramError (``.line`` set) on the first line that

@@ -47,7 +47,7 @@ def test_package_xml_declares_what_the_add_on_contains():
     names = sorted(os.path.basename(p) for p in glob.glob(os.path.join(folder, "*_post.py")))
     assert names == ["ab9_grind_post.py", "ab9_lathe_post.py", "fanuc_lathe_post.py", "gsk_lathe_post.py",
                      "haas_lathe_post.py", "linuxcnc_grind_post.py", "linuxcnc_lathe_post.py",
-                     "sinumerik_lathe_post.py"]
+                     "milltronics_mill_post.py", "sinumerik_lathe_post.py"]
 
 
 def fake_preferences(with_add):

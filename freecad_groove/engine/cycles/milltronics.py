@@ -259,8 +259,9 @@ class MilltronicsCycle:
         self.validate(settings)
         diameter = settings.mill_tool_diameter
         if diameter is None:
-            raise CycleError("tool diameter", None, "is not known: give the end mill's diameter "
-                             "with --tool-diameter (tool tables by D/H number are not read yet)", cycle=self.NAME)
+            raise CycleError("tool diameter", None, "is not known: give the end mill's diameter with "
+                             "--tool-diameter, or program D<n> and give a tool table of diameters by D",
+                             cycle=self.NAME)
         for axis, value in (("X", state.x), ("Y", state.y), ("Z", state.z)):
             if value is None:
                 raise CycleError(axis, None, "the start position is not known: program it before the call",
