@@ -121,6 +121,7 @@ def build_form() -> object:
         label.setObjectName(name)
         label.setWordWrap(True)
         layout.addWidget(label, layout.rowCount(), 0, 1, 2)
+    layout.setRowStretch(layout.rowCount(), 1)  # the page's spare height below everything, not between rows
     fit_narrow_docks(form)
     return form
 

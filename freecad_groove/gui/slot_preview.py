@@ -22,6 +22,7 @@ MARGIN = 8  # px around the drawing
 FACE_COLOUR = (225, 225, 225)
 SLOT_COLOUR = (150, 190, 255)
 LINE_COLOUR = (20, 60, 200)
+AXIS_COLOUR = (90, 90, 90)  # the axis names: Z to the right, R*C up
 
 
 class DevelopedPath(NamedTuple):
@@ -87,6 +88,9 @@ def paint(path: DevelopedPath, width: int, height: int) -> object:
     painter.drawPolyline(line)
     painter.setBrush(QtGui.QColor(*LINE_COLOUR))
     painter.drawEllipse(line[0], 3.0, 3.0)  # the start
+    painter.setPen(QtGui.QColor(*AXIS_COLOUR))
+    painter.drawText(QtCore.QPointF(width - MARGIN - 10, height - 3), "Z")
+    painter.drawText(QtCore.QPointF(3, MARGIN + 6), "R\u00b7C")
     painter.end()
     return pixmap
 

@@ -212,3 +212,27 @@ def test_double_click_reopens_the_panel_and_cancel_keeps_the_op(shop):
     wait_for(lambda: buttons_shown(panel), what="the panel's buttons")
     close_with(panel, Cancel)
     assert slot_ops(job) == [op] and op.Passes == 3
+
+
+def test_the_reach_check_shows_in_the_panel(shop):
+    """The end mill's flutes (CuttingEdgeHeight 3) refuse Depth 4 on the Depth field; a 3 mm long end mill's
+    holder inside the stock's radius is an amber warning that leaves OK enabled."""
+    doc, job = shop
+    shaft, line = job.Model.Group
+    tool = job.Tools.Group[0].Tool
+    tool.CuttingEdgeHeight = 3.0
+    tool.Length = 3.0
+    panel, page = run_command(doc, [(shaft, "Face1"), (line, "Edge1")])
+    warning = widgets.child(page.form, "warningLabel")
+    assert page.error is None and len(page.warnings) == 1 and "check that the holder clears the part" in \
+        page.warnings[0]
+    shown = warning.isVisible() and warning.text() == "Warning: " + page.warnings[0]
+    assert shown and warning.styleSheet() == widgets.WARNING_STYLE
+    assert task_button(panel, Ok).isEnabled()
+    replan(page, page.field("Depth"), "4 mm")
+    assert page.error == ("Depth=4 mm: deeper than the cutting edge of %s (CuttingEdgeHeight=3 mm): the shank "
+                          "would rub the slot's walls" % tool.Label)
+    marked = page.field("Depth").property("grooveInvalid") is True
+    assert marked and not task_button(panel, Ok).isEnabled() and page.warnings == []
+    close_with(panel, Cancel)
+    assert slot_ops(job) == []
