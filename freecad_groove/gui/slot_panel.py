@@ -176,14 +176,12 @@ class SlotPage(PathOpGui.TaskPanelPage):
         combo.blockSignals(False)
 
     def getFields(self, obj):
-        self.updateToolController(obj, self.form.toolController)
         self.updateCoolant(obj, self.form.coolantController)
         self.fields.write_to(obj)
         values = self.values()
-        if int(obj.Passes) != values["Passes"]:
-            obj.Passes = values["Passes"]
-        if obj.DevelopedSketch != values["DevelopedSketch"]:
-            obj.DevelopedSketch = values["DevelopedSketch"]
+        for name in ("Passes", "DevelopedSketch", "ToolController"):
+            if name in values and getattr(obj, name) != values[name]:
+                setattr(obj, name, values[name])
 
     def values(self) -> dict:
         """{op property: value} as the page shows them."""
@@ -191,7 +189,10 @@ class SlotPage(PathOpGui.TaskPanelPage):
         values["Passes"] = self.form.passes.value()
         name = self.form.developedSketch.currentData()
         values["DevelopedSketch"] = self.obj.Document.getObject(name) if name else None
-        tc = PathUtils.findToolController(self.obj, self.obj.Proxy, self.form.toolController.currentText())
+        # By its label among the Job's (not PathUtils.findToolController: it may ask the user, or fail on 1.1's
+        # "Copy"/"New tool controller" entries); none of them picked: the op's own stays.
+        label = self.form.toolController.currentText()
+        tc = next((c for c in PathUtils.getToolControllers(self.obj) if c.Label == label), None)
         if tc is not None:
             values["ToolController"] = tc
         return values
@@ -222,8 +223,9 @@ class SlotPage(PathOpGui.TaskPanelPage):
         """Re-plan the op from the panel's values; redraw, or show the error."""
         self._timer.stop()
         error, invalid, plan = None, (), None
+        values = self.values()
         try:
-            plan = self.obj.Proxy.plan_with(self.obj, self.values())
+            plan = self.obj.Proxy.plan_with(self.obj, values)
         except ValueError as bad_input:  # CycleError and GrooveInputError are ValueErrors
             error, invalid = str(bad_input), error_properties(bad_input)
         except Exception as bug:  # a bug, not bad input: say so in the panel, details in the report view
@@ -233,7 +235,8 @@ class SlotPage(PathOpGui.TaskPanelPage):
             error = translate(CONTEXT, "Internal error while planning the slot: {0}").format(bug)
         self.replans += 1
         self.plan = plan
-        self.picture.show(developed_path(plan, end_mill_diameter(self.values())) if plan is not None else None)
+        width = end_mill_diameter(values.get("ToolController", self.obj.ToolController))
+        self.picture.show(developed_path(plan, width) if plan is not None else None)
         self.set_error(error, invalid)
         self.warnings = list(plan.warnings) if plan is not None else []
         for page in [self] + list(self.other_pages):
@@ -262,9 +265,9 @@ class SlotPage(PathOpGui.TaskPanelPage):
         self._timer.stop()
 
 
-def end_mill_diameter(values: dict) -> float:
-    """The diameter (mm) of the tool bit of the panel's tool controller (0: none)."""
-    tool = getattr(values.get("ToolController"), "Tool", None)
+def end_mill_diameter(tool_controller: object) -> float:
+    """The diameter (mm) of the tool controller's tool bit (0: none)."""
+    tool = getattr(tool_controller, "Tool", None)
     diameter = getattr(tool, "Diameter", 0.0)
     return float(getattr(diameter, "Value", diameter))
 

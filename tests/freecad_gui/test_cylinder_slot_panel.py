@@ -236,3 +236,26 @@ def test_the_reach_check_shows_in_the_panel(shop):
     assert marked and not task_button(panel, Ok).isEnabled() and page.warnings == []
     close_with(panel, Cancel)
     assert slot_ops(job) == []
+
+
+def test_a_tool_controller_picked_in_the_panel_sets_the_slot_width_and_is_written_on_ok(shop):
+    """A second tool controller (a 3 mm wide bit: its Diameter is 3) picked in the combo: the picture's slot is
+    3 mm wide at once, the op keeps its own until OK."""
+    from freecad_groove.freecad import toolbit
+
+    doc, job = shop
+    shaft, line = job.Model.Group
+    narrow = toolbit.make_grooving_tool_controller(job, 3.0, 0.0, CuttingEdgeHeight=10.0)
+    narrow.HorizFeed = "120 mm/min"
+    first = job.Tools.Group[0]
+    panel, page = run_command(doc, [(shaft, "Face1"), (line, "Edge1")])
+    (op,) = slot_ops(job)
+    assert op.ToolController == first and page.picture.path.width == pytest.approx(5.0)
+    before = page.replans
+    combo = page.form.toolController
+    combo.setCurrentIndex(combo.findText(narrow.Label))
+    wait_for(lambda: page.replans > before, what="the preview")
+    assert page.error is None and page.picture.path.width == pytest.approx(3.0)
+    assert op.ToolController == first
+    close_with(panel, Ok)
+    assert op.ToolController == narrow and op.SlotWidth.Value == pytest.approx(3.0)
