@@ -39,14 +39,6 @@ def _shop(edge_shape, cylinder=None):
     return doc, shaft, line, job
 
 
-@pytest.fixture
-def closing():
-    docs = []
-    yield docs
-    for doc in docs:
-        FreeCAD.closeDocument(doc.Name)
-
-
 def _helix():
     helix = Part.makeHelix(20.0, 20.0, 20.0)  # pitch, height, radius: one turn from (20, 0, 0)
     helix.translate(V(0, 0, 10))

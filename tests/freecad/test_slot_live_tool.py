@@ -2,20 +2,10 @@
 posted text; inside FreeCAD 1.1 and 1.0. The op: the helix of test_cylinder_slot.py (tool controller
 SpindleSpeed 1000). LinuxCNC programs with the switches go through rs274 in tests/test_slot_programs.py."""
 
-import FreeCAD
 import pytest
 from test_cylinder_slot import _helix_op, _post
 
 from freecad_groove.freecad.posts import PostError
-
-
-@pytest.fixture
-def closing():
-    docs = []
-    yield docs
-    for doc in docs:
-        FreeCAD.closeDocument(doc.Name)
-
 
 SWITCHES = "--c-axis-on M14 --c-axis-off M15 --live-tool-cw M13 --live-tool-ccw M23 --live-tool-stop M25"
 

@@ -18,14 +18,6 @@ from freecad_groove.freecad.cylinder_slot_op import op_error
 V = FreeCAD.Vector
 
 
-@pytest.fixture
-def closing():
-    docs = []
-    yield docs
-    for doc in docs:
-        FreeCAD.closeDocument(doc.Name)
-
-
 def _shop(closing, shaft_shape=None, line=None):
     doc = FreeCAD.newDocument("reach")
     closing.append(doc)

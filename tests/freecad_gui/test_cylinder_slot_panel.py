@@ -14,7 +14,18 @@ import FreeCAD
 import FreeCADGui
 import Part
 import pytest
-from gui_helpers import close_shop, process, roomy_task_panel, screenshot, task_button, type_into, version, wait_for
+from gui_helpers import (
+    buttons_shown,
+    close_shop,
+    make_slot_shop,
+    process,
+    roomy_task_panel,
+    screenshot,
+    task_button,
+    type_into,
+    version,
+    wait_for,
+)
 from PySide import QtGui
 
 from freecad_groove.gui import slot_panel, slot_view, widgets
@@ -26,22 +37,7 @@ HELIX_END = (30.0, 40.0 * math.pi)
 
 @pytest.fixture
 def shop():
-    import Path.Main.Gui.Job as PathJobGui
-
-    FreeCADGui.getMainWindow().showMaximized()
-    FreeCADGui.activateWorkbench("CAMWorkbench")
-    doc = FreeCAD.newDocument("slotpanel")
-    shaft = doc.addObject("Part::Feature", "Shaft")
-    shaft.Shape = Part.makeCylinder(20, 50)
-    helix = Part.makeHelix(20.0, 20.0, 20.0)
-    helix.translate(V(0, 0, 10))
-    line = doc.addObject("Part::Feature", "SlotLine")
-    line.Shape = helix
-    doc.recompute()
-    job = PathJobGui.Create([shaft, line], openTaskPanel=False)
-    for tc in job.Tools.Group:
-        tc.HorizFeed = "120 mm/min"
-    doc.recompute()
+    doc, job = make_slot_shop("slotpanel")
     yield doc, job
     FreeCADGui.Selection.clearSelection()
     close_shop(doc)
@@ -77,13 +73,6 @@ def run_command(doc, picks):
     wait_for(lambda: buttons_shown(panel), what="the panel's buttons")
     roomy_task_panel()
     return panel, panel.op_page
-
-
-def buttons_shown(panel):
-    """Whether the panel's OK button is there and visible (a boolean: never a wrapper to print)."""
-    box = getattr(panel, "buttonBox", None)
-    button = box.button(Ok) if box is not None else None
-    return button is not None and button.isVisible()
 
 
 def replan(page, field, text):

@@ -7,11 +7,9 @@ import math
 
 import FreeCAD
 import FreeCADGui
-import Part
 import pytest
-from gui_helpers import process, screenshot, task_button, version, wait_for
+from gui_helpers import buttons_shown, make_slot_shop, process, screenshot, task_button, version, wait_for
 from PySide import QtGui
-from test_cylinder_slot_panel import buttons_shown
 
 from freecad_groove.gui import slot_view
 
@@ -20,22 +18,7 @@ V = FreeCAD.Vector
 
 @pytest.fixture
 def shop():
-    import Path.Main.Gui.Job as PathJobGui
-
-    FreeCADGui.getMainWindow().showMaximized()
-    FreeCADGui.activateWorkbench("CAMWorkbench")
-    doc = FreeCAD.newDocument("slotgui")
-    shaft = doc.addObject("Part::Feature", "Shaft")
-    shaft.Shape = Part.makeCylinder(20, 50)
-    helix = Part.makeHelix(20.0, 20.0, 20.0)
-    helix.translate(V(0, 0, 10))
-    line = doc.addObject("Part::Feature", "SlotLine")
-    line.Shape = helix
-    doc.recompute()
-    job = PathJobGui.Create([shaft, line], openTaskPanel=False)
-    for tc in job.Tools.Group:
-        tc.HorizFeed = "120 mm/min"
-    doc.recompute()
+    doc, job = make_slot_shop("slotgui")
     yield doc, job
     FreeCADGui.Selection.clearSelection()
     FreeCAD.closeDocument(doc.Name)
