@@ -32,6 +32,7 @@ from ..freecad.groove_properties import error_properties
 from . import ICON
 from .qt_wrappers import ForgetsButtonBox
 from .slot_preview import DevelopedPicture, developed_path
+from .task_dialog import document_looks
 from .widgets import (
     CONTEXT,
     ERROR_LABEL,
@@ -317,9 +318,28 @@ class SlotTaskPanel(ForgetsButtonBox, RefusesOkWhileInvalid, PathOpGui.TaskPanel
 
     def __init__(self, obj, deleteOnReject, opPage, selectionFactory):
         self.op_page = opPage
+        # Before CAM's panel shows the op and hides the model and stock: that marks the document modified.
+        self.gui_document = FreeCADGui.getDocument(obj.Document.Name)
+        self.was_modified, self.looks_before = self.gui_document.Modified, document_looks(obj.Document)
+        self.applied = False  # Apply wrote the panel's values into the op
         super().__init__(obj, deleteOnReject, opPage, selectionFactory)
         opPage.other_pages = [p for p in self.featurePages if p is not opPage]
         opPage.on_validity_changed = self.update_buttons
+
+    def clicked(self, button):
+        was_dirty = self.isDirty()
+        super().clicked(button)
+        if button == QtGui.QDialogButtonBox.Apply and was_dirty and not self.isDirty():
+            self.applied = True
+
+    def reject(self, resetEdit=True):
+        """Cancel; a saved document stays unmodified when the panel of an existing op changed nothing in it
+        (CAM's panel only shows and hides objects while it is open), as the Groove panel does."""
+        unchanged = not self.deleteOnReject and not self.applied
+        result = super().reject(resetEdit)
+        if unchanged and not self.was_modified and document_looks(self.gui_document.Document) == self.looks_before:
+            self.gui_document.Modified = False
+        return result
 
 
 def open_panel(vobj: object, delete_on_reject: bool) -> SlotTaskPanel:

@@ -248,3 +248,30 @@ def test_a_tool_controller_picked_in_the_panel_sets_the_slot_width_and_is_writte
     assert op.ToolController == first
     close_with(panel, Ok)
     assert op.ToolController == narrow and op.SlotWidth.Value == pytest.approx(3.0)
+
+
+def test_a_look_at_a_saved_documents_op_leaves_it_unmodified(shop):
+    """Double-click, Cancel: the document is as it was, its modified flag too (CAM's panel hides the model and
+    shows the op while open); after an Apply the flag stays set (Cancel undid the value, the flag is not worth
+    reasoning about then)."""
+    from freecad_groove import make_cylinder_slot
+
+    doc, job = shop
+    shaft, line = job.Model.Group
+    op = make_cylinder_slot(job, (shaft, "Face1"), [(line, "Edge1")])
+    gui_doc = FreeCADGui.getDocument(doc.Name)
+    gui_doc.Modified = False  # as just saved
+    looks = {o.Name: o.ViewObject.Visibility for o in doc.Objects if o.ViewObject is not None}
+    for apply in (False, True):
+        gui_doc.setEdit(op.Name)
+        panel = wait_for(lambda: open_slot_panel(doc), what="the panel")
+        wait_for(lambda p=panel: p.op_page.replans > 0 and buttons_shown(p), what="the preview")
+        if apply:
+            replan(panel.op_page, panel.op_page.field("Depth"), "1.5 mm")
+            task_button(panel, Apply).click()
+            process(0.1)
+        close_with(panel, Cancel)
+        after = {o.Name: o.ViewObject.Visibility for o in doc.Objects if o.ViewObject is not None}
+        modified = bool(gui_doc.Modified)
+        assert after == looks and modified == apply
+    assert op.Depth.Value == pytest.approx(1.0)  # Cancel undoes what Apply wrote (CAM aborts the panel's transaction)
