@@ -38,7 +38,7 @@ def _full_positions(moves):
     return out
 
 
-@pytest.mark.parametrize("case", ["helix", "keyway"])
+@pytest.mark.parametrize("case", ["helix", "keyway", "keyway-switched"])
 def test_rs274_accepts_the_c_moves(programs, case):
     require_rs274()
     program, moves = programs[case]["program"], programs[case]["moves"]
@@ -53,3 +53,14 @@ def test_rs274_accepts_the_c_moves(programs, case):
             assert feed == pytest.approx(wf, rel=1e-6), (kind, feed, wf)
     assert got[-2][5] == pytest.approx(0.0 if case == "helix" else 90.0)  # back at the path's start
     assert any(abs(c - 360.0) < 1e-9 for *_r, c in got) if case == "helix" else all(c == 90.0 for *_r, c in got[2:])
+
+
+def test_the_switches_stand_around_the_slot(programs):
+    """--c-axis-on/--live-tool-cw before the slot's first move, --live-tool-stop/--c-axis-off after its last;
+    the main spindle never started (rs274 accepted the program in test_rs274_accepts_the_c_moves)."""
+    lines = [line.strip() for line in programs["keyway-switched"]["program"].splitlines()]
+    first_move = next(i for i, line in enumerate(lines) if line.startswith("G0"))
+    last_move = max(i for i, line in enumerate(lines) if line.startswith(("G0", "G1", "X", "Z", "C")))
+    assert lines.index("M64 P0") < lines.index("M64 P1 S1000") < first_move
+    assert last_move < lines.index("M65 P1") < lines.index("M65 P0")
+    assert not [line for line in lines if line.startswith(("M3", "M4")) or " M3" in line], lines

@@ -40,8 +40,10 @@ import PathScripts.PathUtils as PathUtils
 from .. import hooks
 from ..engine.cycles.gsk_g71 import DECIMALS, GskG71, PathBlock
 from ..engine.moves import FEED, RAPID, MachineState, Move
+from . import slot_reach
 from .addon_op import AddonOp
 from .faces import element_name
+from .groove_op import _WithValues  # an op seen with the panel's values (the same wrapper as the Groove panel's)
 from .groove_properties import GrooveInputError
 from .op_path import comment_body
 from .slot_path import SlotCylinder, developed_path, read_cylinder
@@ -64,6 +66,7 @@ PROPERTIES = (
     ("App::PropertyString", "Region", "The G7.1 start block the op cuts with (read only).", ""),
 )
 DERIVED = ("SlotWidth", "Region")
+LENGTHS = tuple(name for type_id, name, _tip, _default in PROPERTIES if type_id == "App::PropertyLength")
 
 
 class SlotPlan(NamedTuple):
@@ -74,6 +77,7 @@ class SlotPlan(NamedTuple):
     start: MachineState
     safe_radius: float
     moves: List[Move]
+    warnings: Tuple[str, ...] = ()  # what the end mill may not do as planned (slot_reach): shown, never blocking
 
 
 def op_error(obj: object) -> Optional[str]:
@@ -136,6 +140,8 @@ class ObjectCylinderSlot(AddonOp):
             return
         self._plan = plan
         self._write_derived(obj, plan.region.emit().split("\n")[0], self.tool_diameter(obj))
+        for warning in plan.warnings:
+            FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, warning))
         self.commandlist.extend(path_commands(plan))
 
     def _report_error(self, obj: object, error: Exception) -> None:
@@ -215,14 +221,29 @@ class ObjectCylinderSlot(AddonOp):
                 raise GrooveInputError("Base: edges picked and a DevelopedSketch given: the path is one or the "
                                        "other", ("Base", "DevelopedSketch"))
             edges = sketch_edges(sketch)
-        points = developed_path(cylinder, face, edges, sketch=sketch is not None)
+        tool_radius = self.tool_diameter(obj) / 2.0
+        points = developed_path(cylinder, face, edges, sketch=sketch is not None, margin=tool_radius)
         region = self.region(obj, cylinder, points)
+        tool = getattr(obj.ToolController, "Tool", None)  # region() refused an op without a tool controller
+        tool_name = getattr(tool, "Label", obj.ToolController.Label)
+        slot_reach.check_tool(tool, tool_name, -region.J / 2.0)
         first = region.path[0]
         start = MachineState(x=region.clearance_radius(), z=_rounded(points[0][0]), c=_rounded(points[0][1]),
                              feed=first.f)
         moves = region.expand(start)
-        safe = max(self.largest_radius(obj), cylinder.radius) + _number(obj, "Retract")
-        return SlotPlan(cylinder, region, start, max(safe, start.x), moves)
+        largest = max(self.largest_radius(obj), cylinder.radius)
+        warnings = slot_reach.reach_warnings(tool, tool_name, cylinder.radius, -region.J / 2.0, largest) + \
+            slot_reach.z_range_warnings([z for z, _c in points], tool_radius, (cylinder.z_min, cylinder.z_max),
+                                        cylinder.name)
+        safe = largest + _number(obj, "Retract")
+        return SlotPlan(cylinder, region, start, max(safe, start.x), moves, tuple(warnings))
+
+    def plan_with(self, obj: object, values: dict) -> SlotPlan:
+        """plan() as it would be with ``values`` {property: value (mm, a count, an object)} in place of the
+        op's own (the task panel's preview); the document is not touched."""
+        wrapped = {name: FreeCAD.Units.Quantity(float(value), FreeCAD.Units.Length) if name in LENGTHS else value
+                   for name, value in values.items()}
+        return self.plan(_WithValues(obj, wrapped))
 
     def largest_radius(self, obj: object) -> float:
         """The largest radius of the Job's model and stock (their bounding boxes)."""

@@ -15,7 +15,8 @@ Choices (README "Cylinder slot" table): the path starts where the first
 edge starts (its direction as modelled, or reversed when only its start
 meets the second edge); C of the start in (-180, 180]; a sketch of the
 developed surface (its own x = Z, y = the developed length R*C, C = 0 at
-y = 0) gives C as drawn, its edges chained by Part's edge sort; an edge "lies on the
+y = 0) gives C as drawn, its edges chained by Part's edge sort, and may leave
+the face's Z range by the end mill's radius (slot_reach); an edge "lies on the
 face" when every sample is within ON_FACE_TOLERANCE of the cylinder and of
 the face (its Z range and its angular span).
 """
@@ -142,11 +143,15 @@ class _SketchDeveloper(_Developer):
     """Develops an edge of a sketch of the developed surface, in the sketch's own
     coordinates: x is Z, y the developed length s (C = y / radius in radians)."""
 
+    margin = 0.0  # mm the path may leave the face's Z range by (the end mill's radius)
+
     def point(self, edge: object, name: str, t: float, last_c: float) -> Tuple[float, float]:
-        p, cyl = edge.valueAt(t), self.cylinder
-        if not cyl.z_min - ON_FACE_TOLERANCE <= p.x <= cyl.z_max + ON_FACE_TOLERANCE:
-            raise GrooveInputError("DevelopedSketch: %s leaves %s (a point at sketch x = Z %.4f; the face: Z %.4f "
-                                   "to %.4f)" % (name, cyl.name, p.x, cyl.z_min, cyl.z_max), ("DevelopedSketch",))
+        p, cyl, margin = edge.valueAt(t), self.cylinder, self.margin + ON_FACE_TOLERANCE
+        if not cyl.z_min - margin <= p.x <= cyl.z_max + margin:
+            raise GrooveInputError("DevelopedSketch: %s leaves %s by more than the end mill's radius %g (a point at "
+                                   "sketch x = Z %.4f; the face: Z %.4f to %.4f)" % (
+                                       name, cyl.name, round(self.margin, 4), p.x, cyl.z_min, cyl.z_max),
+                                   ("DevelopedSketch",))
         return p.x, p.y / self.to_s
 
     def _check_span(self, edge: object, name: str) -> None:
@@ -179,13 +184,15 @@ def _simplify(points: List[Tuple[float, float]], to_s: float) -> List[Tuple[floa
 
 
 def developed_path(cylinder: SlotCylinder, face: object, edges: List[Tuple[object, str]],
-                   sketch: bool = False) -> List[Tuple[float, float]]:
+                   sketch: bool = False, margin: float = 0.0) -> List[Tuple[float, float]]:
     """The slot's path as (z, C degrees) corners of straight pieces on the developed surface, start first.
-    ``sketch``: the edges are a sketch's, in its own coordinates (x = Z, y = the developed length)."""
+    ``sketch``: the edges are a sketch's, in its own coordinates (x = Z, y = the developed length), which may
+    leave the face's Z range by ``margin`` mm (the end mill's radius: it still touches the face)."""
     if not edges:
         raise GrooveInputError("Base: no edge of the slot's path: pick the edges it follows on %s"
                                % cylinder.name, ("Base",))
     developer = _SketchDeveloper(cylinder, face) if sketch else _Developer(cylinder, face)
+    developer.margin = margin
     points: List[Tuple[float, float]] = []
     last_c = 0.0
     for edge, name, reverse in _oriented(edges):

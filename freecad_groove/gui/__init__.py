@@ -14,6 +14,7 @@ the page class): keep them stable.
     qt_wrappers.py   forgetting PySide's wrappers of the widgets FreeCAD deletes with a closed panel
     preview.py     the groove cross-section and toolpath drawn while editing
     slot_view.py   the Cylinder slot command and the op's Path drawn wrapped on its cylinder
+    slot_panel.py, slot_preview.py  the Cylinder slot task panel and its picture of the developed path
     turning_view.py  the Check turning command: verify_job's section in the 3D view, figures in a task panel
 """
 

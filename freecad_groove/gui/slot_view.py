@@ -4,8 +4,8 @@ moves wrapped on the cylinder (FreeCAD's own Path view knows no C: it draws
 them flat in the XZ plane).
 
 The class path ``freecad_groove.gui.slot_view.ViewProviderCylinderSlot`` is
-stored in documents: keep it. No task panel yet: the op's properties are
-edited in the property editor.
+stored in documents: keep it. Editing the op (the command, a double-click)
+opens its task panel (slot_panel.py).
 """
 
 import math
@@ -56,7 +56,8 @@ class ViewProviderCylinderSlot:
     def attach(self, vobj):
         from pivy import coin
 
-        self.Object = vobj.Object
+        self.Object, self.vobj, self.panel = vobj.Object, vobj, None
+        self.deleteOnReject = False  # True while a new op's first panel is open: Cancel deletes the op
         self.wrapped = coin.SoSeparator()
         self.wrapped.setName("CylinderSlotWrapped")
         vobj.RootNode.addChild(self.wrapped)
@@ -65,6 +66,33 @@ class ViewProviderCylinderSlot:
     def updateData(self, obj, prop):
         if prop == "Path":
             self._draw()
+        if getattr(self, "panel", None) is not None:
+            self.panel.updateData(obj, prop)
+
+    # -- the task panel (CAM's op panel framework calls these names) -----------------
+    def setEdit(self, vobj=None, mode=0):
+        if mode != 0:
+            return False
+        from . import slot_panel
+
+        self.panel = slot_panel.open_panel(vobj or self.vobj, self.deleteOnReject)
+        self.deleteOnReject = False
+        return True
+
+    def unsetEdit(self, vobj=None, mode=0):
+        if getattr(self, "panel", None) is not None:
+            self.panel.reject(False)
+        return True
+
+    def doubleClicked(self, vobj):
+        vobj.Document.setEdit(vobj, 0)
+        return True
+
+    def clearTaskPanel(self):
+        self.panel = None
+        job = self.Object.Proxy.getJob(self.Object)
+        if job is not None and hasattr(getattr(job.ViewObject, "Proxy", None), "resetEditVisibility"):
+            job.ViewObject.Proxy.resetEditVisibility(job)
 
     def _draw(self):
         from pivy import coin
@@ -106,24 +134,27 @@ def attach_view_provider(obj) -> None:
 
 
 def _selection():
-    """(job, (model, "FaceN"), [(model, "EdgeN"), ...]) from the selection, or None."""
+    """(job, (model, "FaceN"), [(model, "EdgeN"), ...] or a sketch) from the selection, or None."""
     from .command import _jobs
 
     doc = FreeCAD.ActiveDocument
     jobs = _jobs(doc) if doc is not None else []
-    face, edges, job = None, [], None
+    face, edges, sketch, job = None, [], None, None
     for sel in FreeCADGui.Selection.getSelectionEx():
         for owner in jobs:
             if sel.Object in owner.Model.Group:
                 job = owner
+        if sel.Object.isDerivedFrom("Sketcher::SketchObject"):  # the developed path, whatever of it is picked
+            sketch = sel.Object
+            continue
         for sub in sel.SubElementNames:
             if sub.startswith("Face") and face is None:
                 face = (sel.Object, sub)
             elif sub.startswith("Edge"):
                 edges.append((sel.Object, sub))
-    if job is None or face is None or not edges:
+    if job is None or face is None or (not edges) == (sketch is None):
         return None
-    return job, face, edges
+    return job, face, sketch if sketch is not None else edges
 
 
 class CommandCylinderSlot:
@@ -133,7 +164,8 @@ class CommandCylinderSlot:
         return {"Pixmap": ICON, "MenuText": QT_TRANSLATE_NOOP(COMMAND, "Cylinder slot"),
                 "ToolTip": QT_TRANSLATE_NOOP(COMMAND, "Mill a slot on a cylinder with a live tool and the C axis "
                                              "(GSK G7.1): select the cylindrical face of the Job's part, then "
-                                             "Ctrl+click the edges of the slot's centre line on it, in order")}
+                                             "Ctrl+click the edges of the slot's centre line on it, in order, "
+                                             "or a sketch of the developed surface")}
 
     def IsActive(self):
         return _selection() is not None
@@ -144,16 +176,18 @@ class CommandCylinderSlot:
             return None
         from ..freecad.slot_api import make_cylinder_slot
 
-        job, face, edges = picked
+        job, face, path = picked
         doc = job.Document
         doc.openTransaction("Cylinder slot")
         try:
-            obj = make_cylinder_slot(job, face, edges, recompute=True)
+            obj = make_cylinder_slot(job, face, path, recompute=True)
         except ValueError as e:  # a pair make_cylinder_slot refuses: one line, nothing made
             doc.abortTransaction()
             FreeCAD.Console.PrintError("Cylinder slot: %s\n" % e)
             return None
         doc.commitTransaction()
+        obj.ViewObject.Proxy.deleteOnReject = True  # Cancel in the panel deletes the new op
+        obj.ViewObject.Document.setEdit(obj.ViewObject, 0)
         return obj
 
 

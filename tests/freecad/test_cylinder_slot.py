@@ -21,6 +21,7 @@ from freecad_groove.freecad.cylinder_slot_op import op_error
 
 V = FreeCAD.Vector
 FEED = 120.0  # mm/min, the tool controller's HorizFeed
+LIVE_RPM = 1000  # the tool controller's SpindleSpeed: the live tool's
 
 
 def _shop(edge_shape, cylinder=None):
@@ -33,16 +34,9 @@ def _shop(edge_shape, cylinder=None):
     job = PathJob.Create("Job", [shaft, line])
     tc = job.Tools.Group[0]
     tc.HorizFeed = "%g mm/min" % FEED
+    tc.SpindleSpeed = LIVE_RPM
     doc.recompute()
     return doc, shaft, line, job
-
-
-@pytest.fixture
-def closing():
-    docs = []
-    yield docs
-    for doc in docs:
-        FreeCAD.closeDocument(doc.Name)
 
 
 def _helix():

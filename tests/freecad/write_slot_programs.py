@@ -24,10 +24,14 @@ def _freecad_groove_write_slot_programs():
 
         from freecad_groove import make_cylinder_slot
 
-        cases = {"helix": (t._helix(), dict(depth=2, passes=2, allowance=0.2, retract=1)),
-                 "keyway": (Part.makeLine(FreeCAD.Vector(0, 20, 5), FreeCAD.Vector(0, 20, 45)),
-                            dict(depth=1.5, passes=1, allowance=0.1, retract=2))}
-        for name, (edge, values) in cases.items():
+        keyway = Part.makeLine(FreeCAD.Vector(0, 20, 5), FreeCAD.Vector(0, 20, 45))
+        cases = {"helix": (t._helix(), dict(depth=2, passes=2, allowance=0.2, retract=1), ""),
+                 "keyway": (keyway, dict(depth=1.5, passes=1, allowance=0.1, retract=2), ""),
+                 # the live tool and C axis switches as LinuxCNC digital outputs (posts/live_tool.py)
+                 "keyway-switched": (keyway, dict(depth=1.5, passes=1, allowance=0.1, retract=2),
+                                     "--c-axis-on 'M64 P0' --c-axis-off 'M65 P0' --live-tool-cw 'M64 P1' "
+                                     "--live-tool-stop 'M65 P1'")}
+        for name, (edge, values, args) in cases.items():
             doc, shaft, line, job = t._shop(edge)
             op = make_cylinder_slot(job, (shaft, "Face1"), [(line, "Edge1")], **values)
             moves = []
@@ -35,7 +39,7 @@ def _freecad_groove_write_slot_programs():
                 p = dict(c.Parameters)
                 if c.Name in ("G0", "G1"):
                     moves.append([c.Name, p.get("X"), p.get("Z"), p.get("C"), p["F"] * 60 if "F" in p else None])
-            result["cases"][name] = {"program": t._post("linuxcnc_lathe", [job], ""), "moves": moves}
+            result["cases"][name] = {"program": t._post("linuxcnc_lathe", [job], args), "moves": moves}
             FreeCAD.closeDocument(doc.Name)
     except Exception:
         result["error"] = traceback.format_exc()

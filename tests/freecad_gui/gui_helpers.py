@@ -87,6 +87,13 @@ def task_button(panel, which):
     return button
 
 
+def buttons_shown(panel):
+    """Whether the panel's OK button is there and visible (a boolean, for wait_for: never a wrapper to print)."""
+    box = getattr(panel, "buttonBox", None)
+    button = box.button(QtGui.QDialogButtonBox.Ok) if box is not None else None
+    return button is not None and button.isVisible()
+
+
 def screenshot_folder():
     """Where screenshots go (made if missing), or None: not saved."""
     share = os.environ.get("FREECAD_GROOVE_SHARE", "")
@@ -220,3 +227,27 @@ def start_groove_command(doc, model, face_key):
 
 def version():
     return ".".join(FreeCAD.Version()[:2])
+
+
+def make_slot_shop(name):
+    """(doc, job): an R20 shaft (Z 0..50) and a helix of one turn on it (pitch 20, from Z10: the "SlotLine"
+    object), both in a Job made as CAM's GUI makes it, its tool controllers feeding at 120 mm/min; the main
+    window shown and CAM active (the Cylinder slot GUI tests)."""
+    import Part
+    import Path.Main.Gui.Job as PathJobGui
+
+    FreeCADGui.getMainWindow().showMaximized()
+    FreeCADGui.activateWorkbench("CAMWorkbench")
+    doc = FreeCAD.newDocument(name)
+    shaft = doc.addObject("Part::Feature", "Shaft")
+    shaft.Shape = Part.makeCylinder(20, 50)
+    helix = Part.makeHelix(20.0, 20.0, 20.0)
+    helix.translate(FreeCAD.Vector(0, 0, 10))
+    line = doc.addObject("Part::Feature", "SlotLine")
+    line.Shape = helix
+    doc.recompute()
+    job = PathJobGui.Create([shaft, line], openTaskPanel=False)
+    for tc in job.Tools.Group:
+        tc.HorizFeed = "120 mm/min"
+    doc.recompute()
+    return doc, job

@@ -7,9 +7,9 @@ import math
 
 import FreeCAD
 import FreeCADGui
-import Part
 import pytest
-from gui_helpers import process, screenshot, version
+from gui_helpers import buttons_shown, make_slot_shop, process, screenshot, task_button, version, wait_for
+from PySide import QtGui
 
 from freecad_groove.gui import slot_view
 
@@ -18,22 +18,7 @@ V = FreeCAD.Vector
 
 @pytest.fixture
 def shop():
-    import Path.Main.Gui.Job as PathJobGui
-
-    FreeCADGui.getMainWindow().showMaximized()
-    FreeCADGui.activateWorkbench("CAMWorkbench")
-    doc = FreeCAD.newDocument("slotgui")
-    shaft = doc.addObject("Part::Feature", "Shaft")
-    shaft.Shape = Part.makeCylinder(20, 50)
-    helix = Part.makeHelix(20.0, 20.0, 20.0)
-    helix.translate(V(0, 0, 10))
-    line = doc.addObject("Part::Feature", "SlotLine")
-    line.Shape = helix
-    doc.recompute()
-    job = PathJobGui.Create([shaft, line], openTaskPanel=False)
-    for tc in job.Tools.Group:
-        tc.HorizFeed = "120 mm/min"
-    doc.recompute()
+    doc, job = make_slot_shop("slotgui")
     yield doc, job
     FreeCADGui.Selection.clearSelection()
     FreeCAD.closeDocument(doc.Name)
@@ -53,6 +38,11 @@ def test_command_makes_the_op_and_draws_it_wrapped(shop):
     assert len(ops) == 1 and ops[0].Region == "G7.1 C20. J-2. R2. K0.2 L2"  # the op's defaults
     op = ops[0]
     assert isinstance(op.ViewObject.Proxy, slot_view.ViewProviderCylinderSlot)
+    panel = wait_for(lambda: op.ViewObject.Proxy.panel, what="the op's task panel")  # the command opens it
+    wait_for(lambda: buttons_shown(panel), what="the panel's buttons")
+    task_button(panel, QtGui.QDialogButtonBox.Ok).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    process(0.1)
     node = op.ViewObject.Proxy.wrapped
     coords = [node.getChild(i) for i in range(node.getNumChildren()) if node.getChild(i).isOfType(
         __import__("pivy").coin.SoCoordinate3.getClassTypeId())]

@@ -136,6 +136,9 @@ def build(name: str, objectslist: Optional[Iterable[Any]], options: Options) -> 
     for obj in objects:
         program.item(obj)
     program.finish()
+    if program.missing_switches:  # machine codes the post could not write (posts/live_tool.py)
+        FreeCAD.Console.PrintWarning("%s_post: no %s given: the program has a comment in place of each such switch"
+                                     "\n" % (program.control.post, ", ".join(dict.fromkeys(program.missing_switches))))
     return "\n".join(program.lines) + "\n"
 
 

@@ -13,6 +13,8 @@ from ...engine.cycles.pecking import DECIMALS as CYCLE_WORD_DECIMALS
 from ...engine.moves import REFERENCE_MINUS, REFERENCE_PLUS
 from .controls import NATIVE_CYCLE93, NATIVE_PECKING, Control, control_named
 from .errors import PostError
+from .live_tool import add_options as add_live_tool_options
+from .live_tool import read_options as read_live_tool_options
 
 MAX_PRECISION = 6
 MAX_PROGRAM_NUMBER = 9999
@@ -86,6 +88,8 @@ def make_parser(name: str) -> PostParser:
     control = control_named(name)
     parser = PostParser(prog=control.post + "_post", add_help=False, description=tooltip(name))
     _add_groove_options(parser, control)
+    if control.c_feed is not None:  # Cylinder slots: the live tool and C axis mode switches
+        add_live_tool_options(parser)
     _add_program_options(parser, control)
     return parser
 
@@ -121,6 +125,7 @@ class Options:
         self.precision: int = precision
         self.native_decimals: int = min(self.precision, CYCLE_WORD_DECIMALS)
         self.help: bool = namespace.help
+        self.live_tool = read_live_tool_options(namespace)
 
 
 def split_arguments(post: str, argstring: Union[None, str, Sequence[str]]) -> List[str]:

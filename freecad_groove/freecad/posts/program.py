@@ -51,6 +51,7 @@ class Program:
         self.per_rev = False
         self.x: Optional[float] = None
         self.z: Optional[float] = None
+        self.missing_switches: List[str] = []  # options of live_tool.py the program needed and did not get
 
     # -- output helpers
     def add(self, lines: Iterable[str]) -> None:
@@ -135,8 +136,8 @@ class Program:
         self.add(self.control.end(self.options))
 
     # -- tools, spindle
-    def tool_controller(self, tc: Any) -> None:
-        """A tool controller: the tool change and spindle it asks for, if not in force."""
+    def tool_controller(self, tc: Any, spindle: bool = True) -> None:
+        """A tool controller: the tool change and (``spindle``) spindle it asks for, if not in force."""
         if tc is None:
             return
         state = ToolState(int(tc.ToolNumber), float(tc.SpindleSpeed), str(getattr(tc, "SpindleDir", "Forward")))
@@ -148,7 +149,8 @@ class Program:
         if self.tool is None or self.tool.number != state.number:
             self.change_tool(state.number, "tool %d: %s" % (state.number, label_of(tc)))
         self.tool = state
-        self.tool_spindle(tc)
+        if spindle:
+            self.tool_spindle(tc)
 
     def tool_spindle(self, tc: Any) -> None:
         """The spindle the tool controller asks for, if not in force (a stop when it gives none)."""
@@ -188,7 +190,8 @@ class Program:
         label = label_of(obj)
         if not hasattr(obj, "Path"):
             raise PostError("is not a Path object (pick operations, tool controllers or a Job)", op=label)
-        self.tool_controller(op_property(obj, "ToolController"))
+        # a Cylinder slot's speed is the live tool's (live_tool.py), not the main spindle's
+        self.tool_controller(op_property(obj, "ToolController"), spindle=not is_slot_op(obj))
         if not is_fixture_block(obj):
             self.note(label)
             extra = op_property(obj, "Comment", "")
@@ -208,7 +211,7 @@ class Program:
         try:
             if groove is not None:
                 self.groove_spindle(groove_cutting(groove), label)
-            elif self.tool is not None and op_property(obj, "ToolController") is not None:
+            elif self.tool is not None and op_property(obj, "ToolController") is not None and not is_slot_op(obj):
                 self.tool_spindle(op_property(obj, "ToolController"))  # after a groove's own spindle
             if groove is not None and (obj is groove or self.options.native):
                 if obj is not groove:

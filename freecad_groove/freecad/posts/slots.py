@@ -13,7 +13,9 @@ start, G0 X to the cycle start (the cylinder + Retract), feed per minute
 ends where it started (at the cycle start); both end with G0 X back to the
 safe radius. A control without a C axis (``Control.c_feed`` None) refuses the
 op with a PostError naming the posts that write C. The native region's words
-are mm: with --inches the op is written expanded.
+are mm: with --inches the op is written expanded. Around it, the main spindle
+stop, C axis mode and the live tool (live_tool.py: machine codes given as
+post options, else a comment marking each missing switch).
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 from ...engine.cycles.gsk_g71 import GskG71
 from ...engine.moves import FEED, RAPID, Move
+from . import live_tool
 from .controls import CONTROLS
 from .errors import PostError
 from .objects import label_of
@@ -54,6 +57,7 @@ class SlotOutput:
         if error:
             raise PostError(error, op=self.label)
         plan = self.op.Proxy.current_plan(self.op)
+        live_tool.switch_on(program, getattr(self.op, "ToolController", None))
         program.set_feed_mode(False)
         start = plan.start
         self._moves([Move(RAPID, plan.safe_radius, None),  # X first: Z and C move only at the safe radius
@@ -68,6 +72,7 @@ class SlotOutput:
         else:
             self._moves(plan.moves)
         self._moves([Move(RAPID, plan.safe_radius, start.z)])
+        live_tool.switch_off(program)
 
     def _region(self, region: GskG71, end: tuple) -> None:
         """The region's blocks; the output then knows it stands at ``end`` (x, z, c) with no motion in force."""

@@ -1,0 +1,77 @@
+"""The live tool and C axis mode switches around a Cylinder slot in the posts (posts/live_tool.py), on the
+posted text; inside FreeCAD 1.1 and 1.0. The op: the helix of test_cylinder_slot.py (tool controller
+SpindleSpeed 1000). LinuxCNC programs with the switches go through rs274 in tests/test_slot_programs.py."""
+
+import pytest
+from test_cylinder_slot import _helix_op, _post
+
+from freecad_groove.freecad.posts import PostError
+
+SWITCHES = "--c-axis-on M14 --c-axis-off M15 --live-tool-cw M13 --live-tool-ccw M23 --live-tool-stop M25"
+
+
+def _lines(text):
+    return [line.strip() for line in text.splitlines() if line.strip()]
+
+
+def _index(lines, start):
+    return next(i for i, line in enumerate(lines) if line.startswith(start))
+
+
+def test_given_codes_are_written_around_the_slot_and_the_main_spindle_stays_off(closing):
+    job, op = _helix_op(closing)
+    lines = _lines(_post("gsk_lathe", [job], "--native-cycles " + SWITCHES))
+    region, cancel = _index(lines, "G7.1 C20. J"), _index(lines, "G7.1 C0")
+    on = [line for line in lines[:region] if line in ("M14", "M13 S1000")]
+    off = [line for line in lines[cancel:] if line in ("M25", "M15")]
+    assert on == ["M14", "M13 S1000"] and off == ["M25", "M15"], lines
+    assert lines.index("M14") < lines.index("M13 S1000") < _index(lines, "G0")  # before the first move
+    assert not [line for line in lines if line.startswith(("M03", "M04", "M3 ", "M4 ")) or " M03" in line], lines
+    assert not [line for line in lines if "given, the post cannot write it" in line]
+
+
+def test_without_the_options_each_missing_switch_is_a_comment(closing):
+    job, op = _helix_op(closing)
+    text = _post("gsk_lathe", [job], "--native-cycles")
+    lines = _lines(text)
+    region, cancel = _index(lines, "G7.1 C20. J"), _index(lines, "G7.1 C0")
+    before = [line for line in lines[:region] if "cannot write it" in line]
+    after = [line for line in lines[cancel:] if "cannot write it" in line]
+    assert before == ["(C AXIS MODE ON: NO --C-AXIS-ON GIVEN, THE POST CANNOT WRITE IT)",
+                      "(LIVE TOOL ON AT S1000: NO --LIVE-TOOL-CW GIVEN, THE POST CANNOT WRITE IT)"] or before == [
+        "(C axis mode on: no --c-axis-on given, the post cannot write it)",
+        "(live tool on at S1000: no --live-tool-cw given, the post cannot write it)"], before
+    assert len(after) == 2 and "--live-tool-stop" in after[0].lower() and "--c-axis-off" in after[1].lower()
+    assert "G97 S1000 M03" not in text  # the main spindle is not started for a slot
+    bare = _post("gsk_lathe", [job], "--native-cycles --no-comments")
+    assert "cannot write it" not in bare and "M03" not in bare
+
+
+def test_a_reversed_tool_uses_the_ccw_code(closing):
+    job, op = _helix_op(closing)
+    op.ToolController.SpindleDir = "Reverse"
+    lines = _lines(_post("linuxcnc_lathe", [job], SWITCHES))
+    assert "M23 S1000" in lines and "M13 S1000" not in lines
+
+
+@pytest.mark.parametrize("args, message", [
+    ("--c-axis-on 'M1 4x'", "--c-axis-on 'M1 4x': must be program words"),
+    ("--live-tool-cw ''", "--live-tool-cw '': must be program words"),
+])
+def test_words_that_are_not_program_words_are_refused(closing, args, message):
+    job, op = _helix_op(closing)
+    with pytest.raises(PostError, match="^" + message):
+        _post("gsk_lathe", [job], args)
+
+
+def test_a_live_tool_without_speed_is_refused(closing):
+    job, op = _helix_op(closing)
+    op.ToolController.SpindleSpeed = 0
+    with pytest.raises(PostError, match="SpindleSpeed=0: the live tool of a Cylinder slot needs a speed"):
+        _post("gsk_lathe", [job], SWITCHES)
+
+
+def test_posts_without_c_have_no_switch_options(closing):
+    job, op = _helix_op(closing)
+    with pytest.raises(PostError, match="unrecognized arguments: --c-axis-on M14"):
+        _post("fanuc_lathe", [job], "--c-axis-on M14")
