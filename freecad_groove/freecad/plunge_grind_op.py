@@ -46,6 +46,7 @@ import Part
 import Path
 import PathScripts.PathUtils as PathUtils
 
+from .. import hooks
 from ..engine.cycles.ab_g83 import G83, G83_1
 from ..engine.errors import CycleError
 from ..engine.moves import DRESS, FEED, MachineState, Move
@@ -334,6 +335,8 @@ def Create(name: str, obj: object = None, parentJob: object = None, tool_control
         doc = parentJob.Document if parentJob is not None else FreeCAD.ActiveDocument
         obj = doc.addObject("Path::FeaturePython", name)
     obj.Proxy = ObjectPlungeGrind(obj, name, parentJob, tool_controller)
+    if hooks.grind_view_provider_factory is not None and getattr(obj, "ViewObject", None) is not None:
+        hooks.grind_view_provider_factory(obj)  # the GUI's (gui/grind_view.py), set when the GUI is up
     return obj
 
 

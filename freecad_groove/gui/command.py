@@ -37,6 +37,23 @@ def job_of_selection(jobs):
     return None
 
 
+def chosen_job():
+    """The Job a new op goes into: the one whose model holds the selection, else the active document's only
+    Job, else the one the user picks (None: none)."""
+    doc = FreeCAD.ActiveDocument
+    jobs = _jobs(doc) if doc is not None else []
+    if not jobs:
+        return None
+    job = job_of_selection(jobs)
+    if job is None:
+        if len(jobs) == 1:
+            return jobs[0]
+        import PathScripts.PathUtils as PathUtils
+
+        job = PathUtils.UserInput.chooseJob(jobs)
+    return job
+
+
 class CommandGroove:
     def GetResources(self):
         return {
@@ -54,18 +71,7 @@ class CommandGroove:
         return doc is not None and bool(_jobs(doc))
 
     def Activated(self):
-        doc = FreeCAD.ActiveDocument
-        jobs = _jobs(doc) if doc is not None else []
-        if not jobs:
-            return None
-        job = job_of_selection(jobs)
-        if job is None:
-            if len(jobs) == 1:
-                job = jobs[0]
-            else:
-                import PathScripts.PathUtils as PathUtils
-
-                job = PathUtils.UserInput.chooseJob(jobs)
+        job = chosen_job()
         if job is None:
             return None
         from . import task_panel

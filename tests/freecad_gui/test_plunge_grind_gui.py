@@ -1,0 +1,151 @@
+"""The Plunge grind command and task panel (FreeCAD 1.1 and 1.0, under Xvfb):
+a flat face picked -> the command opens the panel on a new op; a changed
+value -> OK -> the op recomputed with it; an invalid value refuses OK with
+the op's message; Cancel of a new op leaves no op. A screenshot.
+"""
+
+import FreeCAD
+import FreeCADGui
+import Part
+import pytest
+from gui_helpers import close_shop, make_gui_shop, process, screenshot, task_button, type_into, version, wait_for
+from PySide import QtGui
+
+from freecad_groove.freecad.plunge_grind_op import ObjectPlungeGrind, op_error
+from freecad_groove.gui import grind_command, grind_panel, grind_view, qt_wrappers
+from freecad_groove.gui.widgets import ERROR_LABEL, INVALID_PROPERTY
+
+TOP = "Face6"  # Part.makeBox: the top face (Z20)
+
+
+@pytest.fixture
+def shop():
+    FreeCADGui.getMainWindow().showMaximized()
+    FreeCADGui.activateWorkbench("CAMWorkbench")
+    doc, job, block = make_gui_shop("GrindGui", feed="300 mm/min", shape=Part.makeBox(100, 40, 20))
+    yield doc, job, block
+    FreeCADGui.Selection.clearSelection()
+    close_shop(doc)
+
+
+def grind_ops(job):
+    return [o for o in job.Operations.Group if isinstance(getattr(o, "Proxy", None), ObjectPlungeGrind)]
+
+
+def open_grind_panel(doc):
+    if not FreeCADGui.Control.activeDialog():
+        return None
+    for obj in doc.Objects:
+        vp = getattr(getattr(obj, "ViewObject", None), "Proxy", None)
+        if isinstance(vp, grind_view.ViewProviderPlungeGrind) and vp.panel is not None:
+            return vp.panel
+    return None
+
+
+def start_command(doc, block):
+    """Select the block's top face, press Plunge grind; the panel once it checked its values."""
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(doc.Name, block.Name, TOP)
+    process()
+    assert grind_command.CommandPlungeGrind().IsActive()
+    FreeCADGui.runCommand(grind_command.COMMAND)
+    panel = wait_for(lambda: open_grind_panel(doc), what="the Plunge grind task panel")
+    wait_for(lambda: panel.groove_page.replans > 0, what="the first check of the values")
+    wait_for(lambda: panel.buttonBox.button(QtGui.QDialogButtonBox.Cancel).isVisible(), what="the buttons")
+    return panel
+
+
+def settle(page):
+    """Let the page re-check the values typed (its timer fired: it may have done so while they were typed)."""
+    process(0.05)
+    wait_for(lambda: not page._timer.isActive(), what="the values checked")
+
+
+def test_the_command_opens_the_panel_and_ok_recomputes_the_op_with_the_changed_value(shop):
+    doc, job, block = shop
+    panel = start_command(doc, block)
+    page = panel.groove_page
+    assert isinstance(panel, qt_wrappers.ForgetsButtonBox)
+    assert isinstance(page, grind_panel.PlungeGrindPage)
+    (op,) = grind_ops(job)
+    assert [(b.Name, list(s)) for b, s in op.Base] == [(job.Model.Group[0].Name, [TOP])]  # the picked face
+    # The Job's default tool bit is no wheel: its width is unknown until WheelWidth is set.
+    assert page.error is not None and page.error.startswith("WheelWidth:")
+    assert not task_button(panel, QtGui.QDialogButtonBox.Ok).isEnabled()
+    type_into(page.field("WheelWidth"), "10")
+    type_into(page.field("Overtravel"), "3")
+    settle(page)
+    assert page.error is None, page.error
+    assert page.plan.call.X == pytest.approx(103.0) and page.plan.call.I == pytest.approx(-3.0)
+    assert child_text(page, "grindCall").startswith("G83 X103. I-3. Y20.")
+    assert op.Overtravel.Value == pytest.approx(5.0)  # the document is not touched before OK
+    screenshot("%s-plunge-grind-panel" % version())
+    task_button(panel, QtGui.QDialogButtonBox.Ok).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    process(0.1)
+    assert (op.Overtravel.Value, op.WheelWidth.Value) == (pytest.approx(3.0), pytest.approx(10.0))
+    assert op_error(op) is None, op_error(op)
+    assert op.GrindCall.startswith("G83 X103. I-3. Y20.")
+    xs = [c.Parameters["X"] for c in op.Path.Commands if c.Name == "G1" and "X" in c.Parameters]
+    assert min(xs) == pytest.approx(-3.0) and max(xs) == pytest.approx(103.0)  # recomputed with Overtravel 3
+
+
+def child_text(page, name):
+    return page.form.findChild(QtGui.QLabel, name).text()
+
+
+def test_an_invalid_value_refuses_ok_with_the_ops_message(shop):
+    doc, job, block = shop
+    panel = start_command(doc, block)
+    page = panel.groove_page
+    type_into(page.field("WheelWidth"), "10")
+    type_into(page.field("CrossPick"), "12")
+    settle(page)
+    message = "CrossPick=12: must be at most the wheel's width 10 (the strokes would leave ridges)"
+    assert page.error == message
+    label = page.form.findChild(QtGui.QLabel, ERROR_LABEL)
+    shown, marked = label.isVisible() and label.text() == message, \
+        page.field("CrossPick").property(INVALID_PROPERTY) is True
+    ok_enabled = task_button(panel, QtGui.QDialogButtonBox.Ok).isEnabled()
+    assert shown and marked and not ok_enabled
+    refused = panel.accept() is False  # Enter in a field presses OK: refused too
+    still_open = open_grind_panel(doc) is panel
+    assert refused and still_open
+    (op,) = grind_ops(job)
+    assert op.CrossPick.Value == 0.0  # nothing written
+    type_into(page.field("CrossPick"), "4")
+    settle(page)
+    assert page.error is None and task_button(panel, QtGui.QDialogButtonBox.Ok).isEnabled()
+    task_button(panel, QtGui.QDialogButtonBox.Ok).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    assert op.CrossPick.Value == pytest.approx(4.0) and " K4. " in op.GrindCall
+
+
+def test_cancel_of_a_new_op_leaves_no_op(shop):
+    doc, job, block = shop
+    names = sorted(o.Name for o in doc.Objects)
+    panel = start_command(doc, block)
+    type_into(panel.groove_page.field("WheelWidth"), "10")
+    assert len(grind_ops(job)) == 1
+    task_button(panel, QtGui.QDialogButtonBox.Cancel).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    process(0.1)
+    assert grind_ops(job) == [] and sorted(o.Name for o in doc.Objects) == names
+
+
+def test_a_scripted_op_gets_the_view_provider_and_opens_its_panel(shop):
+    from freecad_groove import make_plunge_grind
+
+    doc, job, block = shop
+    op = make_plunge_grind(job, (block, TOP), wheel_width=8)
+    assert isinstance(op.ViewObject.Proxy, grind_view.ViewProviderPlungeGrind)
+    assert op.ViewObject.Proxy.dumps()["OpPageClass"] == "PlungeGrindPage"
+    assert op.ViewObject.Proxy.dumps()["OpPageModule"] == "freecad_groove.gui.grind_panel"
+    FreeCADGui.getDocument(doc.Name).setEdit(op.Name)
+    panel = wait_for(lambda: open_grind_panel(doc), what="the panel")
+    wait_for(lambda: panel.groove_page.replans > 0, what="the check")
+    wait_for(lambda: panel.buttonBox.button(QtGui.QDialogButtonBox.Cancel).isVisible(), what="the buttons")
+    assert panel.groove_page.error is None and panel.groove_page.field("WheelWidth").property("value").Value == 8
+    task_button(panel, QtGui.QDialogButtonBox.Cancel).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    assert grind_ops(job) == [op] and FreeCAD.ActiveDocument is not None
