@@ -17,7 +17,7 @@ QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
 COMMAND = "FreeCADGroove_PlungeGrind"
 TOOLBAR = "New Operations"  # CAM's toolbar of operations, as the Groove command's
-MENU_AFTER = "CAM_Vcarve"  # among the 2.5D operations of CAM's menu, as the Groove command
+MENU_AFTER = "FreeCADGroove_Groove"  # right after the Turning Groove (after V-Carve, before the 3D operations)
 MENU_TEXT = QT_TRANSLATE_NOOP(COMMAND, "Plunge grind")
 TOOL_TIP = QT_TRANSLATE_NOOP(COMMAND, "Plunge grind a flat face (Allen-Bradley 9/Series G83/G83.1) with a grinding "
                              "wheel: select a flat face of the Job's part looking up (+Z), then set the picks, "

@@ -29,6 +29,7 @@ VALUES = dict(depth=0.1, start_clearance=0.05, plunge_pick=0.02, cross_pick=5, s
 # the start 0.1 + 0.05 above it (Z20.15).
 CALL = G83(X=105.0, I=-5.0, Y=20.0, J=0.02, Z=35.0, K=5.0, L=1, F=60.0, E=6000.0)
 START = MachineState(x=-5.0, z=5.0, y=20.15, feed=60.0, diameter_mode=False)
+WHEEL_RPM = 3000.0  # the Job's tool controller's SpindleSpeed
 
 
 def make_box_job(size=(100, 40, 20)):
@@ -37,6 +38,7 @@ def make_box_job(size=(100, 40, 20)):
     block.Shape = Part.makeBox(*size)
     doc.recompute()
     job = PathJob.Create("Job", [block])
+    job.Tools.Group[0].SpindleSpeed = WHEEL_RPM  # the posts refuse a wheel that does not turn
     doc.recompute()
     return doc, block, job
 
@@ -162,7 +164,7 @@ def test_bad_inputs_give_one_line_naming_the_property(shop, face, values, messag
 import importlib.util  # noqa: E402
 import os  # noqa: E402
 
-from freecad_groove.engine.grind_program import GrindItem, PlainMoves, grind_program  # noqa: E402
+from freecad_groove.engine.grind_program import GrindItem, PlainMoves, WheelChange, grind_program  # noqa: E402
 from freecad_groove.engine.moves import RAPID, Move  # noqa: E402
 from freecad_groove.freecad.posts.errors import PostError  # noqa: E402
 
@@ -178,10 +180,16 @@ def post_module(name):
     return module
 
 
+def _wheel(job):
+    """The wheel of the Job's tool controller (tool 1 at WHEEL_RPM, clockwise)."""
+    tc = job.Tools.Group[0]
+    return WheelChange(tc.Label, 1, WHEEL_RPM, True)
+
+
 def _expected(call, job, target, native, extra=()):
     item = GrindItem("PlungeGrind: Block.Face6", call, START, max(job.Stock.Shape.BoundBox.ZMax, 20.0) + 5.0,
                      call.expand(START))
-    return grind_program([item, *extra], target, native, "Job")
+    return grind_program([_wheel(job), item, *extra], target, native, "Job")
 
 
 def test_the_ab9_grind_post_writes_the_op_as_its_g83_block_or_expanded(shop):
@@ -192,7 +200,7 @@ def test_the_ab9_grind_post_writes_the_op_as_its_g83_block_or_expanded(shop):
     assert native == _expected(CALL, job, "ab9grind", True)
     op.CoolantMode = "Flood"
     lines = post.export([job], "-", "").splitlines()
-    assert lines[5] == "M08" and lines[-2:] == ["M09", "M30"]
+    assert lines[8] == "M08" and lines[-3:] == ["M09", "M05", "M30"]  # after the tool change, spindle, comment
     op.CoolantMode = "None"
     assert "G83 X105. I-5. Y20. J0.02 Z35. K5. L1 F60. E6000." in native.splitlines()
     assert post.export([job], "-", "--expand-cycles") == _expected(CALL, job, "ab9grind", False)
@@ -224,6 +232,25 @@ def test_the_grind_posts_refuse_an_op_that_cannot_grind_and_commands_they_cannot
     doc.recompute()
     with pytest.raises(PostError, match=r"^Arc: G2 \(command 1\) cannot be written by a grinder post"):
         post_module("ab9_grind").export([job, arc], "-", "")
+
+
+def test_the_posts_start_the_wheel_from_the_tool_controller_and_refuse_a_still_wheel(shop):
+    doc, block, job = shop
+    op = make_plunge_grind(job, (block, TOP), **VALUES)
+    tc = op.ToolController
+    lines = post_module("ab9_grind").export([job], "-", "").splitlines()
+    assert lines[4:7] == ["(tool 1: %s)" % tc.Label, "T01 M06", "S3000 M03"] and lines[-2:] == ["M05", "M30"]
+    tc.SpindleDir = "Reverse"
+    tc.ToolNumber = 7
+    lines = post_module("linuxcnc_grind").export([job], "-", "").splitlines()
+    assert lines[2:5] == ["(tool 7: %s)" % tc.Label, "T7 M6 G43", "S3000 M4"] and lines[-2:] == ["M5", "M2"]
+    tc.SpindleSpeed = 0
+    with pytest.raises(PostError, match=r"^PlungeGrind: the wheel does not turn: %s has SpindleSpeed 0, SpindleDir "
+                                        r"Reverse \(set a speed above 0, Forward or Reverse\)$" % tc.Label):
+        post_module("ab9_grind").export([job], "-", "")
+    tc.SpindleSpeed, tc.SpindleDir = 3000, "None"
+    with pytest.raises(PostError, match="^PlungeGrind: the wheel does not turn: .* SpindleDir None"):
+        post_module("linuxcnc_grind").export([job], "-", "")
 
 
 def test_a_wall_within_the_overtravel_is_refused_and_none_without_overtravel():
@@ -344,6 +371,7 @@ def test_reciprocation_along_y_and_the_posts_axes():
         custom.Path = Path.Path([Path.Command("G0", {"X": 1, "Y": 2, "Z": 30})])
         doc.recompute()
         plain = PlainMoves("Custom", [Move(RAPID, 2.0, 1.0, y=30.0)])  # grinder X = FreeCAD Y, Z = FreeCAD X
-        assert post.export([op, custom], "-", "--axes YZX") == grind_program([item, plain], "ab9grind", True, "Job")
+        assert post.export([op, custom], "-", "--axes YZX") == grind_program([_wheel(job), item, plain], "ab9grind",
+                                                                              True, "Job")
     finally:
         FreeCAD.closeDocument(doc.Name)

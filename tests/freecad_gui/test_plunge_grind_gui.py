@@ -149,3 +149,15 @@ def test_a_scripted_op_gets_the_view_provider_and_opens_its_panel(shop):
     task_button(panel, QtGui.QDialogButtonBox.Cancel).click()
     wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
     assert grind_ops(job) == [op] and FreeCAD.ActiveDocument is not None
+
+
+def test_the_command_sits_in_cams_toolbar_and_menu_after_turning_groove(shop):
+    mw = FreeCADGui.getMainWindow()
+    operations = next(tb for tb in mw.findChildren(QtGui.QToolBar) if tb.objectName() == "New Operations")
+    assert "Plunge grind" in [a.text() for a in operations.actions()]
+    menus = [m for m in mw.findChildren(QtGui.QMenu) if "Turning Groove" in [a.text() for a in m.actions()]]
+    texts = [a.text() for a in menus[0].actions()]
+    at = texts.index("Turning Groove")
+    assert texts[at + 1] == "Plunge grind" and menus[0].actions()[at + 2].isSeparator(), texts
+    FreeCADGui.Selection.clearSelection()
+    assert grind_command.CommandPlungeGrind().IsActive()  # a Job in the document
