@@ -279,6 +279,59 @@ def test_a_wall_within_the_overtravel_is_refused_and_none_without_overtravel():
 from freecad_groove.freecad import wheel_toolbit  # noqa: E402
 
 
+def _stepped_job(name):
+    """The 100 x 40 face at Z20 in a step: beyond its +X end a 12 mm gap down to Z10, then a wall X112..122 up
+    to Z30; along its +Y edge a wall Y40..50 up to Z30, flush with the wheel's side at the end of the crossover."""
+    doc = FreeCAD.newDocument(name)
+    block = doc.addObject("Part::Feature", "Stepped")
+    block.Shape = Part.makeBox(100, 40, 20).fuse([
+        Part.makeBox(22, 40, 10, FreeCAD.Vector(100, 0, 0)), Part.makeBox(10, 40, 30, FreeCAD.Vector(112, 0, 0)),
+        Part.makeBox(100, 10, 30, FreeCAD.Vector(0, 40, 0))])
+    doc.recompute()
+    job = PathJob.Create("Job", [block])
+    doc.recompute()
+    top = next("Face%d" % (i + 1) for i, f in enumerate(block.Shape.Faces)
+               if abs(f.BoundBox.ZMin - 20) < 1e-9 and abs(f.BoundBox.ZMax - 20) < 1e-9)
+    return doc, block, job, top
+
+
+@pytest.mark.parametrize("diameter, overtravel, refused", [
+    (200, 5, True),  # at the reversal X105 the 100 mm radius reaches X112 0.25 mm above the face
+    (16, 5, True),  # reaches X113 at 8 mm above the face, below the wall's top (10 mm above)
+    (16, 0, False),  # from X100: X108
+    (10, 5, False),  # from X105: X110, 2 mm short of the wall
+])
+def test_the_wheel_body_is_checked_against_a_wall_beside_the_face(diameter, overtravel, refused):
+    doc, block, job, top = _stepped_job("PlungeBody")
+    try:
+        op = make_plunge_grind(job, (block, top), **dict(VALUES, wheel_diameter=diameter, overtravel=overtravel))
+        if refused:
+            assert op_error(op) == (
+                "Base: the wheel's body (diameter %g) meets Stepped beside Stepped.%s: a wall within the wheel's "
+                "radius of a reversal point (reduce Overtravel, grind with a smaller wheel, or grind another face)"
+                % (diameter, top))
+            assert op.GrindCall == "" and not [c for c in op.Path.Commands if c.Name in ("G0", "G1")]
+        else:  # the lowest point alone passes in every case; the +Y wall touches the wheel's side only
+            assert op_error(op) is None and op.Proxy.current_plan(op).warnings == []
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+
+
+def test_a_wheel_of_unknown_diameter_grinds_with_a_warning_and_the_wheel_bit_gives_its_diameter():
+    doc, block, job, top = _stepped_job("PlungeBodyUnknown")
+    try:
+        op = make_plunge_grind(job, (block, top), **VALUES)  # the Job's end mill: no Width, WheelDiameter 0
+        assert op_error(op) is None
+        assert op.Proxy.current_plan(op).warnings == [
+            "WheelDiameter: the wheel's diameter is unknown (the tool bit has no Width: not a grinding wheel bit; "
+            "WheelDiameter is 0): its body above the lowest point is not checked against the part"]
+        op.ToolController = wheel_toolbit.make_wheel_tool_controller(job, width=10, diameter=200)
+        doc.recompute()
+        assert op_error(op).startswith("Base: the wheel's body (diameter 200) meets Stepped")
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+
+
 def test_the_wheel_tool_bit_gives_the_op_its_width_and_survives_save_and_reopen(tmp_path):
     doc, block, job = make_box_job()
     tc = wheel_toolbit.make_wheel_tool_controller(job, width=10, diameter=200)
