@@ -32,13 +32,16 @@ from .task_dialog import GrooveTaskPanel
 from .widgets import (
     CONTEXT,
     ERROR_LABEL,
+    WARNING_LABEL,
     add_error_label,
     child,
     connect_changed,
     fit_narrow_docks,
     mark_invalid,
+    mark_warned,
     select_data,
     show_error,
+    show_warnings,
 )
 
 translate = FreeCAD.Qt.translate
@@ -134,6 +137,7 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
         self.invalid = ()  # properties marked
         self.replans = 0
         self.plan = None
+        self.warnings = []  # the plan's warnings shown
         self.on_validity_changed = None
         self._timer = QtCore.QTimer()  # no parent: it must outlive the form, which Cancel may delete first
         self._timer.setSingleShot(True)
@@ -248,6 +252,16 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
         self.plan = plan
         child(self.form, GRIND_CALL_LABEL).setText(plan.call.emit() if plan is not None else "")
         self.set_error(error, invalid)
+        self.set_warnings(plan.warnings if plan is not None else [])
+
+    def set_warnings(self, lines: list) -> None:
+        """Show the plan's warnings (what the op does but could not check) in amber on every page; the field
+        each names ("WheelDiameter: ...") framed amber."""
+        self.warnings = list(lines)
+        for _type, name, _group, _tip, _default in FIELDS:
+            mark_warned(self.field(name), any(line.startswith(name + ":") for line in lines))
+        for page in [self] + list(self.other_pages):
+            show_warnings(child(page.form, WARNING_LABEL), lines)
 
     def set_error(self, message: object, properties: tuple = ()) -> None:
         """Show ``message`` (None: the values make a grind) on every page and frame the fields of

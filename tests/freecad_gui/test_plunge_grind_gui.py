@@ -8,12 +8,22 @@ import FreeCAD
 import FreeCADGui
 import Part
 import pytest
-from gui_helpers import close_shop, make_gui_shop, process, screenshot, task_button, type_into, version, wait_for
+from gui_helpers import (
+    close_shop,
+    make_gui_shop,
+    process,
+    roomy_task_panel,
+    screenshot,
+    task_button,
+    type_into,
+    version,
+    wait_for,
+)
 from PySide import QtGui
 
 from freecad_groove.freecad.plunge_grind_op import ObjectPlungeGrind, op_error
 from freecad_groove.gui import grind_command, grind_panel, grind_view, qt_wrappers
-from freecad_groove.gui.widgets import ERROR_LABEL, INVALID_PROPERTY
+from freecad_groove.gui.widgets import ERROR_LABEL, INVALID_PROPERTY, WARNED_PROPERTY, WARNING_LABEL
 
 TOP = "Face6"  # Part.makeBox: the top face (Z20)
 
@@ -76,9 +86,15 @@ def test_the_command_opens_the_panel_and_ok_recomputes_the_op_with_the_changed_v
     type_into(page.field("Overtravel"), "3")
     settle(page)
     assert page.error is None, page.error
+    # The end mill has no wheel diameter: the wheel's body goes unchecked, said in amber.
+    warning = page.form.findChild(QtGui.QLabel, WARNING_LABEL)
+    warned = warning.isVisible() and warning.text().startswith("Warning: WheelDiameter: the wheel's diameter is "
+                                                               "unknown")
+    assert warned and page.field("WheelDiameter").property(WARNED_PROPERTY) is True
     assert page.plan.call.X == pytest.approx(103.0) and page.plan.call.I == pytest.approx(-3.0)
     assert child_text(page, "grindCall").startswith("G83 X103. I-3. Y20.")
     assert op.Overtravel.Value == pytest.approx(5.0)  # the document is not touched before OK
+    show_top_of(page)
     screenshot("%s-plunge-grind-panel" % version())
     task_button(panel, QtGui.QDialogButtonBox.Ok).click()
     wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
@@ -88,6 +104,17 @@ def test_the_command_opens_the_panel_and_ok_recomputes_the_op_with_the_changed_v
     assert op.GrindCall.startswith("G83 X103. I-3. Y20.")
     xs = [c.Parameters["X"] for c in op.Path.Commands if c.Name == "G1" and "X" in c.Parameters]
     assert min(xs) == pytest.approx(-3.0) and max(xs) == pytest.approx(103.0)  # recomputed with Overtravel 3
+
+
+def show_top_of(page):
+    """Scroll the task view to the page's first lines (the message, the G83 block) for the screenshot."""
+    roomy_task_panel()
+    widget = page.form
+    while widget is not None and not isinstance(widget, QtGui.QScrollArea):
+        widget = widget.parentWidget()
+    if widget is not None:
+        widget.ensureWidgetVisible(page.form.findChild(QtGui.QLabel, WARNING_LABEL))
+    process(0.1)
 
 
 def child_text(page, name):
@@ -155,9 +182,11 @@ def test_the_command_sits_in_cams_toolbar_and_menu_after_turning_groove(shop):
     mw = FreeCADGui.getMainWindow()
     operations = next(tb for tb in mw.findChildren(QtGui.QToolBar) if tb.objectName() == "New Operations")
     assert "Plunge grind" in [a.text() for a in operations.actions()]
-    menus = [m for m in mw.findChildren(QtGui.QMenu) if "Turning Groove" in [a.text() for a in m.actions()]]
-    texts = [a.text() for a in menus[0].actions()]
+    menus = [m for m in mw.menuBar().findChildren(QtGui.QMenu)  # CAM's menu: the one with the Turning Groove
+             if "Turning Groove" in [a.text().replace("&", "") for a in m.actions()]]
+    actions = menus[0].actions()
+    texts = [a.text().replace("&", "") for a in actions]
     at = texts.index("Turning Groove")
-    assert texts[at + 1] == "Plunge grind" and menus[0].actions()[at + 2].isSeparator(), texts
+    assert texts[at + 1] == "Plunge grind" and actions[at + 2].isSeparator(), " | ".join(texts)
     FreeCADGui.Selection.clearSelection()
     assert grind_command.CommandPlungeGrind().IsActive()  # a Job in the document
