@@ -428,3 +428,41 @@ def test_reciprocation_along_y_and_the_posts_axes():
                                                                               True, "Job")
     finally:
         FreeCAD.closeDocument(doc.Name)
+
+
+# ---------------------------------------------------------------- the wheel in FreeCAD 1.1's shape chooser
+
+from freecad_groove.freecad import shape_assets  # noqa: E402
+
+
+@pytest.mark.skipif(not shape_assets.AVAILABLE, reason="FreeCAD 1.0 has no tool bit shape chooser: wheels come "
+                    "from make_wheel_tool_controller")
+def test_the_shape_chooser_lists_the_grinding_wheel_and_a_bit_from_it_grinds(shop):
+    import Path.Tool.Controller as PathToolController
+    from Path.Tool.shape import ToolBitShapeSvgIcon
+    from test_toolbit import _bit_from_the_chooser, _chooser_shapes
+
+    doc, block, job = shop
+    assert shape_assets.installed(), "Init.py registered the shapes when CAM imported Path.Tool"
+    shapes = _chooser_shapes()
+    shape = shapes[shape_assets.WHEEL_SHAPE_ID]
+    assert "endmill" in shapes and shape_assets.SHAPE_ID in shapes  # FreeCAD's and the grooving blade too
+    assert isinstance(shape, wheel_toolbit.ToolBitShapeGrindingWheel) and shape.label == "Grinding wheel"
+    assert shape.is_builtin
+    params = shape.get_parameters()
+    assert (params["Diameter"].Value, params["Width"].Value) == (pytest.approx(200), pytest.approx(20))
+    icon = shape.get_icon()  # what the chooser's button draws
+    assert isinstance(icon, ToolBitShapeSvgIcon) and icon.abbreviations == {"Diameter": "D", "Width": "W"}
+    asset = _bit_from_the_chooser(shape)
+    assert isinstance(asset, wheel_toolbit.ToolBitGrindingWheel)
+    bit = asset.attach_to_doc(doc)  # the tool library's "Add to Job", then the user's values
+    bit.Width, bit.Diameter = 10, 150
+    tc = PathToolController.Create("TC: " + asset.label, bit, 5)
+    tc.SpindleSpeed = WHEEL_RPM
+    job.Proxy.addToolController(tc)
+    op = make_plunge_grind(job, (block, TOP), tool_controller=tc, **{k: v for k, v in VALUES.items()
+                                                                     if k != "wheel_width"})
+    assert op_error(op) is None, op_error(op)
+    assert op.GrindCall == CALL.emit()  # the wheel's width 10 from the bit
+    assert op.Proxy.current_plan(op).warnings == []  # its diameter known: the body checked
+    assert "T05 M06" in post_module("ab9_grind").export([job], "-", "").splitlines()
