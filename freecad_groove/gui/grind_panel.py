@@ -52,6 +52,7 @@ INTEGER_RANGE = (0, 99999)  # the op checks the ranges of L, P, D and names the 
 FIELDS = tuple(p for p in PROPERTIES if p[1] not in DERIVED)  # (type, name, group, tooltip, default)
 TOOL_CONTROLLER, COOLANT = "ToolController", "CoolantMode"
 GRIND_CALL_LABEL = "grindCall"
+NEW_WHEEL_BUTTON = "newWheelTool"
 
 
 def widget_name(prop: str) -> str:
@@ -119,6 +120,11 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
             combo = QtGui.QComboBox(form)
             combo.setObjectName(widget_name(name))
             grid.addRow(translate(CONTEXT, text), combo)
+        button = QtGui.QPushButton(translate(CONTEXT, "Create grinding wheel tool controller"), form)
+        button.setObjectName(NEW_WHEEL_BUTTON)
+        button.setToolTip(translate(CONTEXT, "A new tool controller in the Job whose bit is a grinding wheel of the "
+                                    "Wheel width and Wheel diameter below (asked for while 0), selected for the op"))
+        grid.addRow(button)
         for type_id, name, _group, tooltip, default in FIELDS:
             field = _new_field(type_id, default, form)
             field.setObjectName(widget_name(name))
@@ -154,15 +160,18 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
         return child(self.form, widget_name(prop))
 
     # -- fields <-> op ----------------------------------------------------------
-    def setFields(self, obj):
+    def _fill_tool_controllers(self, selected: object) -> None:
         combo = self.field(TOOL_CONTROLLER)
         combo.blockSignals(True)
         combo.clear()
-        for tc in PathUtils.getToolControllers(obj):
+        for tc in PathUtils.getToolControllers(self.obj):
             combo.addItem(tc.Label, tc.Name)
         combo.blockSignals(False)
-        if obj.ToolController is not None:
-            select_data(combo, obj.ToolController.Name)
+        if selected is not None:
+            select_data(combo, selected.Name)
+
+    def setFields(self, obj):
+        self._fill_tool_controllers(obj.ToolController)
         combo = self.field(COOLANT)
         combo.blockSignals(True)
         combo.clear()
@@ -221,10 +230,39 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
                 field.toggled.connect(lambda *_a: self.changed())
             else:
                 connect_changed(field, self.changed)
+        child(self.form, NEW_WHEEL_BUTTON).clicked.connect(lambda *_a: self.new_wheel_tool_controller())
 
     def changed(self) -> None:
         self.setDirty()
         self.schedule_preview()
+
+    def new_wheel_tool_controller(self) -> object:
+        """A new tool controller in the op's Job whose bit is a grinding wheel of the Wheel width and Wheel
+        diameter fields (each asked for while 0), selected for the op (written on OK). Its feeds and spindle
+        speed are the tool controller's defaults (0): set them, or the op's feeds. Returns it, or None."""
+        from ..freecad.wheel_toolbit import make_wheel_tool_controller
+
+        sizes = {}
+        for prop, text in (("WheelWidth", "Width of the grinding wheel (mm):"),
+                           ("WheelDiameter", "Diameter of the grinding wheel (mm):")):
+            value = self.values()[prop].Value
+            if not value > 0:
+                value, ok = QtGui.QInputDialog.getDouble(self.form, translate(CONTEXT, "Grinding wheel tool "
+                                                                              "controller"),
+                                                         translate(CONTEXT, text), 0.0, 0.0, 10000.0, 3)
+                if not (ok and value > 0):
+                    return None
+            sizes[prop] = value
+        try:
+            tc = make_wheel_tool_controller(PathUtils.findParentJob(self.obj), sizes["WheelWidth"],
+                                            sizes["WheelDiameter"])
+        except Exception as error:  # a message, not a traceback
+            FreeCAD.Console.PrintError(translate(CONTEXT, "Cannot create the grinding wheel tool controller: {0}")
+                                       .format(error) + "\n")
+            return None
+        self._fill_tool_controllers(tc)
+        self.changed()
+        return tc
 
     def updateData(self, obj, prop):
         if prop in ("Base", TOOL_CONTROLLER):

@@ -190,3 +190,66 @@ def test_the_command_sits_in_cams_toolbar_and_menu_after_turning_groove(shop):
     assert texts[at + 1] == "Plunge grind" and actions[at + 2].isSeparator(), " | ".join(texts)
     FreeCADGui.Selection.clearSelection()
     assert grind_command.CommandPlungeGrind().IsActive()  # a Job in the document
+
+
+def test_cancel_of_an_existing_op_keeps_its_values_and_a_saved_op_reopens_with_its_panel(tmp_path):
+    from freecad_groove import make_plunge_grind
+
+    FreeCADGui.getMainWindow().showMaximized()
+    FreeCADGui.activateWorkbench("CAMWorkbench")
+    doc, job, block = make_gui_shop("GrindSaved", feed="300 mm/min", shape=Part.makeBox(100, 40, 20))
+    op = make_plunge_grind(job, (block, TOP), wheel_width=8, overtravel=4)
+    doc.recompute()
+    call, op_name, path = op.GrindCall, op.Name, str(tmp_path / "grind.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    process(0.1)
+    doc = FreeCAD.openDocument(path)
+    try:
+        op = doc.getObject(op_name)
+        kept = isinstance(op.ViewObject.Proxy, grind_view.ViewProviderPlungeGrind)
+        assert kept and op.ViewObject.Proxy.getIcon().endswith("plunge_grind.svg")
+        doc.recompute()
+        assert op_error(op) is None and op.GrindCall == call
+        FreeCADGui.getDocument(doc.Name).setEdit(op.Name)
+        panel = wait_for(lambda: open_grind_panel(doc), what="the panel of the reopened op")
+        wait_for(lambda: panel.buttonBox.button(QtGui.QDialogButtonBox.Cancel).isVisible(), what="the buttons")
+        settle(panel.groove_page)
+        type_into(panel.groove_page.field("Overtravel"), "2")
+        settle(panel.groove_page)
+        assert panel.groove_page.plan.call.I == pytest.approx(-2.0)
+        task_button(panel, QtGui.QDialogButtonBox.Cancel).click()
+        wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+        process(0.1)
+        doc.recompute()
+        assert op.Overtravel.Value == pytest.approx(4.0) and op.GrindCall == call  # as it was
+    finally:
+        close_shop(doc)
+
+
+def test_the_panel_makes_a_grinding_wheel_tool_controller_in_one_click(shop):
+    doc, job, block = shop
+    panel = start_command(doc, block)
+    page = panel.groove_page
+    tool_controllers = len(job.Tools.Group)
+    type_into(page.field("WheelWidth"), "12")
+    type_into(page.field("WheelDiameter"), "150")
+    settle(page)
+    page.form.findChild(QtGui.QPushButton, grind_panel.NEW_WHEEL_BUTTON).click()
+    settle(page)
+    assert len(job.Tools.Group) == tool_controllers + 1
+    tc = job.Tools.Group[-1]
+    assert page.field("ToolController").currentData() == tc.Name
+    assert (tc.Tool.Width.Value, tc.Tool.Diameter.Value) == (pytest.approx(12), pytest.approx(150))
+    # Its feeds are 0: the op says so until its own feeds are set.
+    assert page.error == "PlungeFeed=0: no feed (the tool controller's VertFeed is 0.0): set PlungeFeed", page.error
+    type_into(page.field("PlungeFeed"), "1")  # mm/s (FreeCAD's default unit schema): 60 mm/min
+    type_into(page.field("ReciprocationFeed"), "100")
+    settle(page)
+    assert page.error is None and page.warnings == []  # the wheel bit gives its diameter: the body is checked
+    assert page.plan.call.Z == pytest.approx(34.0)  # flush with Y40: the 12 mm wheel's middle
+    task_button(panel, QtGui.QDialogButtonBox.Ok).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    (op,) = grind_ops(job)
+    assert op.ToolController == tc and op_error(op) is None, op_error(op)
+    assert " Z34. K6. L1 F60. E6000." in op.GrindCall  # K: half the 12 mm wheel
