@@ -41,6 +41,7 @@ from .widgets import (
     mark_warned,
     select_data,
     show_error,
+    show_quantity,
     show_warnings,
 )
 
@@ -144,6 +145,7 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
         self.replans = 0
         self.plan = None
         self.warnings = []  # the plan's warnings shown
+        self.shown = {}
         self.on_validity_changed = None
         self._timer = QtCore.QTimer()  # no parent: it must outlive the form, which Cancel may delete first
         self._timer.setSingleShot(True)
@@ -179,15 +181,18 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
             combo.addItem(mode, mode)
         combo.blockSignals(False)
         select_data(combo, str(obj.CoolantMode))
+        self.shown = {}  # {property: the quantity field's value as shown for the op's own value}
         for type_id, name, _group, _tip, _default in FIELDS:
             self._show(self.field(name), type_id, getattr(obj, name))
+            if type_id in UNITS:
+                self.shown[name] = FreeCAD.Units.Quantity(self.field(name).property("value")).Value
         self.schedule_preview()
 
     @staticmethod
     def _show(field: object, type_id: str, value: object) -> None:
         field.blockSignals(True)
         if type_id in UNITS:
-            field.setProperty("value", FreeCAD.Units.Quantity(value.Value, value.Unit))
+            show_quantity(field, value.Value)  # as many decimals as it has (up to 6)
         elif type_id == "App::PropertyInteger":
             field.setValue(int(value))
         elif type_id == "App::PropertyBool":
@@ -204,6 +209,8 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
             field = self.field(name)
             if type_id in UNITS:
                 values[name] = FreeCAD.Units.Quantity(field.property("value"))
+                if values[name].Value == self.shown.get(name):  # untouched: the op's own value, not its rounding
+                    values[name] = getattr(self.obj, name)
             elif type_id == "App::PropertyInteger":
                 values[name] = field.value()
             elif type_id == "App::PropertyBool":

@@ -253,3 +253,23 @@ def test_the_panel_makes_a_grinding_wheel_tool_controller_in_one_click(shop):
     (op,) = grind_ops(job)
     assert op.ToolController == tc and op_error(op) is None, op_error(op)
     assert " Z34. K6. L1 F60. E6000." in op.GrindCall  # K: half the 12 mm wheel
+
+
+def test_ok_keeps_the_exact_values_of_fields_left_alone(shop):
+    """A quantity field rounds to the decimals it shows: a value the user did not touch goes back as it was."""
+    from freecad_groove import make_plunge_grind
+
+    doc, job, block = shop
+    op = make_plunge_grind(job, (block, TOP), wheel_width=8, plunge_feed="50 mm/min",
+                           reciprocation_feed="3337 mm/min", start_clearance="1.23456 mm")
+    FreeCADGui.getDocument(doc.Name).setEdit(op.Name)
+    panel = wait_for(lambda: open_grind_panel(doc), what="the panel")
+    wait_for(lambda: panel.buttonBox.button(QtGui.QDialogButtonBox.Cancel).isVisible(), what="the buttons")
+    settle(panel.groove_page)
+    type_into(panel.groove_page.field("Overtravel"), "3")
+    settle(panel.groove_page)
+    task_button(panel, QtGui.QDialogButtonBox.Ok).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    assert op.Overtravel.Value == pytest.approx(3.0)
+    assert (op.PlungeFeed.Value, op.ReciprocationFeed.Value) == (50 / 60, 3337 / 60)  # mm/s, exactly
+    assert op.StartClearance.Value == 1.23456 and op_error(op) is None
