@@ -29,12 +29,14 @@ from ..freecad.plunge_grind_op import read_face
 from ..freecad.plunge_grind_properties import DERIVED, PROPERTIES
 from . import GRIND_ICON
 from .task_dialog import GrooveTaskPanel
+from .task_panel import FacesPage
 from .widgets import (
     CONTEXT,
     ERROR_LABEL,
     WARNING_LABEL,
     add_error_label,
     child,
+    coalescing_timer,
     connect_changed,
     fit_narrow_docks,
     mark_invalid,
@@ -86,20 +88,8 @@ def _new_field(type_id: str, default: object, parent: object) -> object:
     return field
 
 
-class GrindBaseGeometryPage(PathOpGui.TaskPanelBaseGeometryPage):
+class GrindBaseGeometryPage(FacesPage):
     """FreeCAD's base geometry page, faces only, with the op's message."""
-
-    def getForm(self):
-        form = super().getForm()
-        add_error_label(form)
-        fit_narrow_docks(form)
-        return form
-
-    def supportsEdges(self):
-        return False
-
-    def supportsVertexes(self):
-        return False
 
 
 class PlungeGrindPage(PathOpGui.TaskPanelPage):
@@ -147,10 +137,7 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
         self.warnings = []  # the plan's warnings shown
         self.shown = {}
         self.on_validity_changed = None
-        self._timer = QtCore.QTimer()  # no parent: it must outlive the form, which Cancel may delete first
-        self._timer.setSingleShot(True)
-        self._timer.setInterval(CHECK_DELAY_MS)
-        self._timer.timeout.connect(self.update_preview)
+        self._timer = coalescing_timer(CHECK_DELAY_MS, self.update_preview)
 
     def getTitle(self, obj):
         return translate(CONTEXT, "Plunge grind")
