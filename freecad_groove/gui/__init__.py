@@ -15,7 +15,8 @@ the page class): keep them stable.
     preview.py     the groove cross-section and toolpath drawn while editing
     slot_view.py   the Cylinder slot command and the op's Path drawn wrapped on its cylinder
     turning_view.py  the Check turning command: verify_job's section in the 3D view, figures in a task panel
-    grind_command.py  the Plunge grind command; grind_view.py its view provider, grind_panel.py its task panel
+    grind_command.py  the Plunge grind command; grind_view.py its view provider, grind_panel.py its task panel,
+                      grind_preview.py the strokes drawn while it is open
 """
 
 import os

@@ -7,8 +7,9 @@ values program.
 
 While the panel is open every changed value re-plans the op from the panel's
 values (the op seen through groove_op._WithValues: the document is not
-touched); an invalid value shows the op's message in one line on both pages,
-frames the fields it names red, and OK and Apply are refused until it is
+touched) and draws its strokes in the 3D view (grind_preview.py); an
+invalid value shows the op's message in one line on both pages, frames the
+fields it names red, and OK and Apply are refused until it is
 fixed (task_dialog.GrooveTaskPanel). OK writes the values into the op and
 recomputes; Cancel aborts the panel's transaction (and, for a new op,
 deletes it).
@@ -28,6 +29,7 @@ from ..freecad.groove_op import _WithValues
 from ..freecad.plunge_grind_op import read_face
 from ..freecad.plunge_grind_properties import DERIVED, PROPERTIES
 from . import GRIND_ICON
+from .grind_preview import GrindPreview
 from .task_dialog import GrooveTaskPanel
 from .task_panel import FacesPage
 from .widgets import (
@@ -134,6 +136,7 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
         self.invalid = ()  # properties marked
         self.replans = 0
         self.plan = None
+        self.preview = None  # the strokes drawn in the 3D view (grind_preview.py)
         self.warnings = []  # the plan's warnings shown
         self.shown = {}
         self.on_validity_changed = None
@@ -283,6 +286,10 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
         self.replans += 1
         self.plan = plan
         child(self.form, GRIND_CALL_LABEL).setText(plan.call.emit() if plan is not None else "")
+        if self.preview is None:
+            gui_document = FreeCADGui.ActiveDocument
+            self.preview = GrindPreview(gui_document.ActiveView if gui_document is not None else None)
+        self.preview.show(plan)
         self.set_error(error, invalid)
         self.set_warnings(plan.warnings if plan is not None else [])
 
@@ -320,6 +327,9 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
 
     def cleanupPage(self, obj):
         self._timer.stop()
+        if self.preview is not None:
+            self.preview.remove()
+            self.preview = None
 
 
 class PlungeGrindTaskPanel(GrooveTaskPanel):

@@ -94,12 +94,21 @@ def test_the_command_opens_the_panel_and_ok_recomputes_the_op_with_the_changed_v
     assert page.plan.call.X == pytest.approx(103.0) and page.plan.call.I == pytest.approx(-3.0)
     assert child_text(page, "grindCall").startswith("G83 X103. I-3. Y20.")
     assert op.Overtravel.Value == pytest.approx(5.0)  # the document is not touched before OK
+    # The strokes of the panel's values in the 3D view: between the reversal points, never below the face.
+    preview = page.preview
+    xs, zs = [p[0] for p in preview.feeds], [p[2] for p in preview.feeds]
+    assert (min(xs), max(xs)) == (pytest.approx(-3.0), pytest.approx(103.0)) and min(zs) == pytest.approx(20.0)
+    graph = FreeCADGui.ActiveDocument.ActiveView.getSceneGraph()
+    assert graph.findChild(preview.root) >= 0
+    FreeCADGui.ActiveDocument.ActiveView.viewIsometric()
+    FreeCADGui.SendMsgToActiveView("ViewFit")
     show_top_of(page)
     screenshot("%s-plunge-grind-panel" % version())
     task_button(panel, QtGui.QDialogButtonBox.Ok).click()
     wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
     process(0.1)
     assert (op.Overtravel.Value, op.WheelWidth.Value) == (pytest.approx(3.0), pytest.approx(10.0))
+    assert graph.findChild(preview.root) < 0 and page.preview is None  # the preview goes with the panel
     assert op_error(op) is None, op_error(op)
     assert op.GrindCall.startswith("G83 X103. I-3. Y20.")
     xs = [c.Parameters["X"] for c in op.Path.Commands if c.Name == "G1" and "X" in c.Parameters]
@@ -135,6 +144,7 @@ def test_an_invalid_value_refuses_ok_with_the_ops_message(shop):
         page.field("CrossPick").property(INVALID_PROPERTY) is True
     ok_enabled = task_button(panel, QtGui.QDialogButtonBox.Ok).isEnabled()
     assert shown and marked and not ok_enabled
+    assert page.preview.feeds == []  # no strokes while the values make no grind
     refused = panel.accept() is False  # Enter in a field presses OK: refused too
     still_open = open_grind_panel(doc) is panel
     assert refused and still_open
