@@ -9,3 +9,4 @@ view_provider_factory  set by the GUI layer when FreeCAD's GUI starts
 
 view_provider_factory = None
 slot_view_provider_factory = None  # the same for Cylinder slot ops (cylinder_slot_op.Create)
+grind_view_provider_factory = None  # the same for Plunge grind ops (plunge_grind_op.Create)

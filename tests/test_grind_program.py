@@ -7,7 +7,7 @@ from rs274 import require_rs274, run_rs274
 
 from freecad_groove.engine.cycles.ab_g83 import G83, G83_1
 from freecad_groove.engine.errors import ProgramError
-from freecad_groove.engine.grind_program import GrindItem, PlainMoves, grind_program
+from freecad_groove.engine.grind_program import GrindItem, PlainMoves, WheelChange, grind_program
 from freecad_groove.engine.moves import DRESS, FEED, RAPID, MachineState, Move
 from freecad_groove.engine.translator import translate_program
 
@@ -76,3 +76,51 @@ def test_coolant_goes_on_after_the_comment_and_off_after_the_op():
     moves = PlainMoves("Profile", [Move(RAPID, 1.0, 2.0, y=30.0)], 7)
     assert grind_program([moves], "linuxcnc", False, "Job").splitlines()[-5:] == [
         "(Profile)", "M7", "G0 X1. Y30. Z2.", "M9", "M2"]
+
+
+# ---------------------------------------------------------------- the wheel: tool change and spindle
+
+def grind_call():
+    return G83(X=105.0, I=-5.0, Y=20.0, J=0.02, Z=35.0, K=5.0, L=1, F=60.0, E=6000.0)
+
+
+def test_the_wheel_change_writes_the_tool_change_then_the_spindle_and_stops_it_at_the_end():
+    wheel = WheelChange("TC: Wheel", 3, 1500.0)
+    items = [wheel, item(grind_call()), wheel, item(grind_call()), wheel._replace(clockwise=False),
+             WheelChange("TC: Other", 4, 2000.0)]
+    lines = grind_program(items, "ab9grind", True, "Job").splitlines()
+    assert lines[4:7] == ["(tool 3: TC: Wheel)", "T03 M06", "S1500 M03"]
+    assert lines.count("T03 M06") == 1 and lines.count("S1500 M03") == 1  # the same wheel again: nothing
+    assert lines[-6:] == ["S1500 M04", "(tool 4: TC: Other)", "T04 M06", "S2000 M03", "M05", "M30"]
+    linuxcnc = grind_program([wheel, item(grind_call())], "linuxcnc", False, "Job").splitlines()
+    assert linuxcnc[2:5] == ["(tool 3: TC: Wheel)", "T3 M6 G43", "S1500 M3"] and linuxcnc[-2:] == ["M5", "M2"]
+
+
+def test_a_still_wheel_stops_the_spindle_and_the_next_tool_starts_it_again():
+    lines = grind_program([WheelChange("TC: Wheel", 3, 1500.0), item(grind_call()), WheelChange("TC: Wheel", 3, 0.0),
+                           WheelChange("TC: Other", 4, 900.0), item(grind_call())], "ab9grind", True,
+                          "Job").splitlines()
+    second = lines.index("T04 M06")
+    assert lines[second - 2:second + 5] == ["M05", "(tool 4: TC: Other)", "T04 M06", "S900 M03",
+                                            "(PlungeGrind: Block.Face6)", "G00 Y26.", "X-5. Z5."]
+    assert lines[-3:] == ["G00 Y26.", "M05", "M30"]
+
+
+def test_rs274_runs_the_linuxcnc_program_with_its_tool_change_and_spindle():
+    require_rs274()
+    text = grind_program([WheelChange("TC: Wheel", 3, 1500.0), item(grind_call())], "linuxcnc", False, "Job")
+    canon = run_rs274(text, tool_table=[3], xyz=True)
+    moves = [(c[0], round(c[1], 4), round(c[2], 4), round(c[3], 4)) for c in canon]
+    assert moves[1:3] == [("G0", -5.0, SAFE, 5.0), ("G0", -5.0, 20.15, 5.0)]
+
+
+@pytest.mark.parametrize("wheel, target, message", [
+    (WheelChange("TC: Wheel", 3, 1500.5), "ab9grind", r"^TC: Wheel: spindle speed 1500.5: a 9/Series S word is a "
+                                                     r"whole number of rpm$"),
+    (WheelChange("TC: Wheel", 100, 1500.0), "ab9grind", r"^TC: Wheel: tool number 100 cannot be written \(1..99\)$"),
+    (WheelChange("TC: Wheel", 0, 1500.0), "linuxcnc", r"^TC: Wheel: tool number 0 cannot be written \(1..99999\)$"),
+    (WheelChange("TC: Wheel", 3, 1e6), "linuxcnc", r"^TC: Wheel: spindle speed 1000000.0 cannot be written$"),
+])
+def test_wheels_the_control_cannot_take_are_refused_naming_the_tool_controller(wheel, target, message):
+    with pytest.raises(ProgramError, match=message):
+        grind_program([wheel], target, False, "Job")

@@ -15,6 +15,16 @@ to the safe position. An item's coolant: its M code after the comment, M9
 (``M09`` for the 9/Series) after its last move. After a native cycle the output forgets the position
 (every axis of the next move is written).
 
+The wheel (WheelChange items, one before the ops of each tool controller):
+a tool change when the tool number differs from the one in force (9/Series
+``T<nn> M06``, LinuxCNC ``T<n> M6 G43``), the output then forgetting the
+position; its spindle (``S<rpm> M03``/``M04``; LinuxCNC ``M3``/``M4``)
+written after every tool change (LinuxCNC's M6 stops the spindle) and
+whenever the speed or the direction changes; rpm 0 stops it (M05/M5). A
+spindle left on is stopped before the program's end. The 9/Series' S is a
+whole number of rpm (refused otherwise); tool numbers 1..99 (9/Series) or
+1..99999 (LinuxCNC).
+
 Targets: "ab9grind" (native or expanded; "%", O number, G90 G94 G21 ... M30,
 read back by the engine's ab9grind reader) and "linuxcnc" (expanded only:
 the linuxcnc-mill writer, dress calls ``o<dressN> call``).
@@ -25,7 +35,7 @@ from typing import List, NamedTuple, Optional, Sequence, Union
 from .cycles.ab_g83 import G83
 from .errors import ProgramError
 from .moves import DRESS, RAPID, MachineState, Move
-from .targets import Writer, comment
+from .targets import Writer, comment, format_number
 
 NATIVE_TARGET = "ab9grind"
 TARGETS = {"ab9grind": "fanuc-mill", "linuxcnc": "linuxcnc-mill"}  # -> the writer of their moves
@@ -50,7 +60,18 @@ class PlainMoves(NamedTuple):
     coolant: Optional[int] = None
 
 
-Item = Union[GrindItem, PlainMoves]
+class WheelChange(NamedTuple):
+    """The wheel of the items that follow: tool ``tool`` turning at ``rpm`` (0: stopped), clockwise (M3) or not."""
+
+    label: str
+    tool: int
+    rpm: float
+    clockwise: bool = True
+
+
+MAX_TOOL = {"ab9grind": 99, "linuxcnc": 99999}
+MAX_RPM = 99999
+Item = Union[GrindItem, PlainMoves, WheelChange]
 
 
 def _header(writer: Writer, target: str, title: str, number: int) -> List[str]:
@@ -81,6 +102,51 @@ def _grind_lines(writer: Writer, item: GrindItem, native: bool, target: str) -> 
     return lines + _retract(writer, item.safe)
 
 
+class _Wheel:
+    """The tool and spindle in force in the program being written."""
+
+    def __init__(self, writer: Writer, target: str):
+        self.writer, self.target = writer, target
+        self.m_code = "M%02d" if target == NATIVE_TARGET else "M%d"
+        self.tool: Optional[int] = None
+        self.spindle: Optional[tuple] = None  # (rpm text, M code) in force; None: stopped or unknown
+
+    def change(self, item: WheelChange) -> List[str]:
+        """The lines of ``item``: the tool change if needed, then the spindle if not in force."""
+        if not (isinstance(item.tool, int) and 1 <= item.tool <= MAX_TOOL[self.target]):
+            raise ProgramError("%s: tool number %r cannot be written (1..%d)" % (item.label, item.tool,
+                                                                                  MAX_TOOL[self.target]))
+        lines = []
+        if item.tool != self.tool:
+            lines += [comment("tool %d: %s" % (item.tool, item.label)),
+                      "T%02d M06" % item.tool if self.target == NATIVE_TARGET else "T%d M6 G43" % item.tool]
+            self.tool, self.spindle = item.tool, None
+            self.writer.sync(None, None, None, None, None)  # the change may move the axes: write them all
+        return lines + self.turn(item)
+
+    def turn(self, item: WheelChange) -> List[str]:
+        if not item.rpm > 0:
+            return self.stop()
+        if not item.rpm <= MAX_RPM:
+            raise ProgramError("%s: spindle speed %r cannot be written" % (item.label, item.rpm))
+        if self.target == NATIVE_TARGET and item.rpm != int(item.rpm):
+            raise ProgramError("%s: spindle speed %r: a 9/Series S word is a whole number of rpm"
+                               % (item.label, item.rpm))
+        text = "%d" % item.rpm if item.rpm == int(item.rpm) else format_number(item.rpm, 4)
+        spindle = (text, self.m_code % (3 if item.clockwise else 4))
+        if spindle == self.spindle:
+            return []
+        self.spindle = spindle
+        return ["S%s %s" % spindle]
+
+    def stop(self) -> List[str]:
+        """M05 when the spindle may be on (after a tool change its state is unknown); nothing otherwise."""
+        if self.spindle is None and self.tool is None:
+            return []
+        self.spindle = None
+        return [self.m_code % 5]
+
+
 def grind_program(items: Sequence[Item], target: str, native: bool, title: str, number: int = 1) -> str:
     """The whole program for ``items`` (see the module notes); ProgramError on what cannot be written."""
     if target not in TARGETS:
@@ -90,7 +156,11 @@ def grind_program(items: Sequence[Item], target: str, native: bool, title: str, 
     writer = Writer(TARGETS[target], True, False)
     lines = _header(writer, target, title, number)
     m_code = "M%02d" if target == NATIVE_TARGET else "M%d"
+    wheel = _Wheel(writer, target)
     for item in items:
+        if isinstance(item, WheelChange):
+            lines += wheel.change(item)
+            continue
         if isinstance(item, GrindItem):
             body = _grind_lines(writer, item, native, target)
         else:
@@ -98,5 +168,7 @@ def grind_program(items: Sequence[Item], target: str, native: bool, title: str, 
         if item.coolant:
             body = body[:1] + [m_code % item.coolant] + body[1:] + [m_code % 9]
         lines += body
+    if wheel.spindle is not None:
+        lines += wheel.stop()
     lines += ["M30"] if target == NATIVE_TARGET else writer.footer()
     return "\n".join(lines) + "\n"

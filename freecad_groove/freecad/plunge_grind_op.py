@@ -24,9 +24,12 @@ J, Q, K, R, L, F, E, P, D and G83.1 come from the properties
 
 The model must not rise above the face where the wheel's lowest point passes
 (between the reversal points, over the crossover and its half width, up to
-the safe height): the op refuses such a face (naming Base and Overtravel).
-The wheel's body above its lowest point is not checked (its diameter is not
-used).
+the safe height), nor enter what the wheel's body sweeps above that point
+(grind_clearance.py: a wall beside the face within the wheel's radius of a
+reversal point): the op refuses such a face (naming Base and Overtravel).
+The body is checked with the tool bit's Diameter (a grinding wheel bit: one
+with a Width), else WheelDiameter; with neither it is not checked, and the
+plan says so in a warning (the report view, the task panel).
 
 The Path: G17, a comment with the call, G0 to the safe height (the top of
 the stock and model + Retract), G0 over the start, G0 down to it, the
@@ -38,7 +41,7 @@ naming the property, the Path a comment repeating it, op_error(obj) keeps it.
 """
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import List, Optional
 
 import FreeCAD
@@ -46,16 +49,17 @@ import Part
 import Path
 import PathScripts.PathUtils as PathUtils
 
+from .. import hooks
 from ..engine.cycles.ab_g83 import G83, G83_1
 from ..engine.errors import CycleError
 from ..engine.moves import DRESS, FEED, MachineState, Move
 from .addon_op import AddonOp
+from .grind_clearance import CLEAR_ABOVE_MM, check_wheel_body, wheel_sweep
 from .op_path import comment_body
 from .plunge_grind_properties import DERIVED, PROPERTIES, WORD_PROPERTIES, GrindInputError
 from .units import SECONDS_PER_MINUTE, length_mm
 
 TOLERANCE = 1e-6
-CLEAR_ABOVE_MM = 1e-3  # model material this far above the face's plane and more is in the wheel's way
 OP_NAME = "PlungeGrind"  # the op's kind in CAM's SetupSheet registry
 
 
@@ -69,6 +73,7 @@ class GrindPlan:
     safe_z: float
     face_name: str
     axes: str = "XZY"  # the FreeCAD axes of the grinder's X, Y, Z words (reciprocation, plunge, crossover)
+    warnings: List[str] = field(default_factory=list)  # what the op does but could not check
 
 
 @dataclass
@@ -138,6 +143,8 @@ class ObjectPlungeGrind(AddonOp):
             self._report_error(obj, e)
             return
         self._plan = plan
+        for warning in plan.warnings:
+            FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, warning))
         if obj.GrindCall != plan.call.emit():
             obj.GrindCall = plan.call.emit()
         self.commandlist.extend(path_commands(plan))
@@ -259,7 +266,30 @@ class ObjectPlungeGrind(AddonOp):
         safe = self.safe_z(obj) + obj.Retract.Value
         axes = "YZX" if str(obj.ReciprocationAxis) == "Y" else "XZY"
         self.check_clear(obj, face, call, start, width, safe, axes)
-        return GrindPlan(call, start, moves, safe, face.name, axes)
+        diameter = self.wheel_diameter(obj)
+        if diameter is None:
+            warnings = ["WheelDiameter: the wheel's diameter is unknown (the tool bit has no Width: not a grinding "
+                        "wheel bit; WheelDiameter is 0): its body above the lowest point is not checked against "
+                        "the part"]
+        else:
+            warnings = []
+            low, high = sorted((start.z, call.Z))
+            sweep = wheel_sweep(axes, (call.I, call.X), (low - width / 2, high + width / 2), face.z, start.y, safe,
+                                diameter / 2)
+            check_wheel_body(PathUtils.findParentJob(obj), face.name, sweep, diameter)
+        return GrindPlan(call, start, moves, safe, face.name, axes, warnings)
+
+    def wheel_diameter(self, obj: object) -> Optional[float]:
+        """The grinding wheel bit's Diameter (a bit with a Width), else WheelDiameter; None when unknown."""
+        bit = getattr(getattr(obj, "ToolController", None), "Tool", None)
+        if getattr(bit, "Width", None) is not None and getattr(bit, "Diameter", None) is not None:
+            diameter = length_mm(bit.Diameter)
+        else:
+            diameter = obj.WheelDiameter.Value
+        if not (diameter >= 0 and math.isfinite(diameter)):
+            raise GrindInputError("WheelDiameter=%s: must be a finite length, 0 or more" % diameter,
+                                  ("WheelDiameter",))
+        return diameter if diameter > 0 else None
 
     def check_clear(self, obj: object, face: FlatFace, call: G83, start: MachineState, width: float,
                     safe: float, axes: str) -> None:
@@ -334,6 +364,8 @@ def Create(name: str, obj: object = None, parentJob: object = None, tool_control
         doc = parentJob.Document if parentJob is not None else FreeCAD.ActiveDocument
         obj = doc.addObject("Path::FeaturePython", name)
     obj.Proxy = ObjectPlungeGrind(obj, name, parentJob, tool_controller)
+    if hooks.grind_view_provider_factory is not None and getattr(obj, "ViewObject", None) is not None:
+        hooks.grind_view_provider_factory(obj)  # the GUI's (gui/grind_view.py), set when the GUI is up
     return obj
 
 

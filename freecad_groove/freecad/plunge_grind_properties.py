@@ -48,6 +48,9 @@ PROPERTIES = (
     ("App::PropertyBool", "DressFirst", GROUP, _tip("G83.1: run the dress program before the cycle."), False),
     ("App::PropertyLength", "WheelWidth", GROUP,
      _tip("The wheel's width when the tool bit has no Width (a grinding wheel tool bit gives it)."), 0.0),
+    ("App::PropertyLength", "WheelDiameter", GROUP,
+     _tip("The wheel's diameter when the tool bit has no Width (a grinding wheel tool bit gives it): the wheel's "
+          "body is checked against the part with it; 0 = unknown: not checked (a warning)."), 0.0),
     ("App::PropertyLength", "Retract", GROUP,
      _tip("Rapids above the stock and model by this much (the wheel's lowest point)."), 5.0),
     ("App::PropertyString", "GrindCall", GROUP, _tip("The G83/G83.1 block the op programs (read-only)."), ""),

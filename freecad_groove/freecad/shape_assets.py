@@ -1,4 +1,4 @@
-"""The grooving blade among FreeCAD 1.1's built-in tool bit shapes.
+"""The grooving blade and the grinding wheel among FreeCAD 1.1's built-in tool bit shapes.
 
 FreeCAD 1.1's tool bits are assets (Path.Tool.camassets): the tool library's
 shape chooser (Path.Tool.shape.ui.shapeselector, behind "Add tool bit" in the
@@ -10,8 +10,9 @@ write to, and FreeCAD has no list of extra shape folders.
 
 So :func:`install` puts :class:`AddonShapeStore` in the asset manager under
 the name "builtin", for this session: it answers from FreeCAD's own store
-first and adds the add-on's files (:data:`ASSETS`: the shape
-resources/tools/grooving.fcstd and its drawing grooving.svg). Everything
+first and adds the add-on's files (:data:`ASSETS`: the shapes
+resources/tools/grooving.fcstd and grinding_wheel.fcstd and their drawings
+grooving.svg and grinding_wheel.svg). Everything
 that reads built-in assets goes through the manager's store table at call
 time (the chooser, ToolBit.from_dict, a bit restored from a document), so
 the grooving shape is listed, loads and is drawn like FreeCAD's own shapes;
@@ -36,10 +37,13 @@ STORE_NAME = "builtin"  # the store the shape chooser lists built-in shapes from
 SHAPE_ID = "grooving"
 TOOLS_DIR = pathlib.Path(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))) / \
     "resources" / "tools"
+WHEEL_SHAPE_ID = "grindingwheel"  # the Plunge grind op's grinding wheel (wheel_toolbit.py)
 # (asset type, asset id) -> the add-on's file
 ASSETS = {
     ("toolbitshape", SHAPE_ID): TOOLS_DIR / "grooving.fcstd",
     ("toolbitshapesvg", SHAPE_ID + ".svg"): TOOLS_DIR / "grooving.svg",
+    ("toolbitshape", WHEEL_SHAPE_ID): TOOLS_DIR / "grinding_wheel.fcstd",
+    ("toolbitshapesvg", WHEEL_SHAPE_ID + ".svg"): TOOLS_DIR / "grinding_wheel.svg",
 }
 
 
@@ -114,7 +118,7 @@ def installed(manager=None) -> bool:
     if manager is None:
         from Path.Tool.camassets import cam_assets as manager
     store = manager.stores.get(STORE_NAME)
-    return isinstance(getattr(store, "files", None), dict) and ("toolbitshape", SHAPE_ID) in store.files
+    return isinstance(getattr(store, "files", None), dict) and all(key in store.files for key in ASSETS)
 
 
 def install(manager=None) -> bool:
@@ -125,7 +129,7 @@ def install(manager=None) -> bool:
         return False
     if manager is None:
         from Path.Tool.camassets import cam_assets as manager
-    from . import toolbit  # noqa: F401  (registers the Grooving shape and bit classes)
+    from . import toolbit, wheel_toolbit  # noqa: F401  (register the Grooving and GrindingWheel shape and bit classes)
 
     if installed(manager):
         return True

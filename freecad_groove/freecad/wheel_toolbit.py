@@ -12,8 +12,9 @@ FreeCAD 1.1: this module registers a ToolBitShape subclass "GrindingWheel"
 the bit's Proxy: a saved document imports this module (the class path
 ``freecad_groove.freecad.wheel_toolbit.ToolBitGrindingWheel``, never to move)
 before FreeCAD restores the bit. FreeCAD 1.0: a plain Bit made from the shape
-file by its absolute path. Unlike the grooving blade the shape is not listed
-in 1.1's shape chooser (no asset registration yet): bits are made by
+file by its absolute path. In 1.1 the shape is listed in the tool library's shape
+chooser ("Grinding wheel", drawn with resources/tools/grinding_wheel.svg)
+through shape_assets.py, as the grooving blade is; scripts make bits with
 make_wheel_bit / make_wheel_tool_controller.
 """
 

@@ -16,12 +16,15 @@ the page class): keep them stable.
     slot_view.py   the Cylinder slot command and the op's Path drawn wrapped on its cylinder
     slot_panel.py, slot_preview.py  the Cylinder slot task panel and its picture of the developed path
     turning_view.py  the Check turning command: verify_job's section in the 3D view, figures in a task panel
+    grind_command.py  the Plunge grind command; grind_view.py its view provider, grind_panel.py its task panel,
+                      grind_preview.py the strokes drawn while it is open
 """
 
 import os
 
 RESOURCES = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "resources")
 ICON = os.path.join(RESOURCES, "icons", "groove.svg")
+GRIND_ICON = os.path.join(RESOURCES, "icons", "plunge_grind.svg")
 PANELS = os.path.join(RESOURCES, "panels")
 TRANSLATIONS = os.path.join(RESOURCES, "translations")
 COMMAND = "FreeCADGroove_Groove"
@@ -33,13 +36,19 @@ def _attach_view_provider(obj):
     task_panel.attach_view_provider(obj)
 
 
+def _attach_grind_view_provider(obj):
+    from . import grind_view
+
+    grind_view.attach_view_provider(obj)
+
+
 def register():
     """Add the Groove command to the CAM workbench and give ops made by
     scripts their view provider."""
     import FreeCADGui
 
     from .. import hooks
-    from . import command, slot_view, turning_view
+    from . import command, grind_command, slot_view, turning_view
 
     FreeCADGui.addLanguagePath(TRANSLATIONS)
     FreeCADGui.updateLocale()
@@ -48,3 +57,5 @@ def register():
     hooks.view_provider_factory = _attach_view_provider
     slot_view.register()
     hooks.slot_view_provider_factory = slot_view.attach_view_provider
+    grind_command.register()
+    hooks.grind_view_provider_factory = _attach_grind_view_provider

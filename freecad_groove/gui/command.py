@@ -37,6 +37,23 @@ def job_of_selection(jobs):
     return None
 
 
+def chosen_job():
+    """The Job a new op goes into: the one whose model holds the selection, else the active document's only
+    Job, else the one the user picks (None: none)."""
+    doc = FreeCAD.ActiveDocument
+    jobs = _jobs(doc) if doc is not None else []
+    if not jobs:
+        return None
+    job = job_of_selection(jobs)
+    if job is None:
+        if len(jobs) == 1:
+            return jobs[0]
+        import PathScripts.PathUtils as PathUtils
+
+        job = PathUtils.UserInput.chooseJob(jobs)
+    return job
+
+
 class CommandGroove:
     def GetResources(self):
         return {
@@ -54,18 +71,7 @@ class CommandGroove:
         return doc is not None and bool(_jobs(doc))
 
     def Activated(self):
-        doc = FreeCAD.ActiveDocument
-        jobs = _jobs(doc) if doc is not None else []
-        if not jobs:
-            return None
-        job = job_of_selection(jobs)
-        if job is None:
-            if len(jobs) == 1:
-                job = jobs[0]
-            else:
-                import PathScripts.PathUtils as PathUtils
-
-                job = PathUtils.UserInput.chooseJob(jobs)
+        job = chosen_job()
         if job is None:
             return None
         from . import task_panel
@@ -75,18 +81,19 @@ class CommandGroove:
 
 class Manipulator:
     """Puts ``command`` at the end of CAM's toolbar ``toolbar`` and into its
-    menu right after ``menu_after`` whenever CAM is built."""
+    menu right after ``menu_after`` whenever CAM is built; then the commands
+    of ``entries`` added after it, in order."""
 
     def __init__(self, command: str, toolbar: str, menu_after: str):
-        self.command, self.toolbar, self.menu_after = command, toolbar, menu_after
+        self.entries = [(command, toolbar, menu_after)]
 
     def modifyToolBars(self):
-        return [{"append": self.command, "toolBar": self.toolbar}]
+        return [{"append": command, "toolBar": toolbar} for command, toolbar, _after in self.entries]
 
     def modifyMenuBar(self):
         # "insert" with "after" puts it right after menu_after; "append" would
         # put it at the very end of the menu that holds menu_after.
-        return [{"insert": self.command, "menuItem": self.menu_after, "after": ""}]
+        return [{"insert": command, "menuItem": after, "after": ""} for command, _toolbar, after in self.entries]
 
 
 _manipulators = {}  # command name -> its Manipulator (added once)
@@ -95,7 +102,12 @@ _manipulators = {}  # command name -> its Manipulator (added once)
 def add_to_cam(name: str, command: object, toolbar: str, menu_after: str) -> None:
     """Add FreeCAD command ``name`` and (once) its place in CAM's toolbar and menu."""
     FreeCADGui.addCommand(name, command)
-    if name not in _manipulators:
+    if name in _manipulators:
+        return
+    if menu_after in _manipulators:  # after another command of the add-on: in its manipulator, so placed after it
+        _manipulators[name] = _manipulators[menu_after]  # (FreeCAD runs the manipulators in no fixed order)
+        _manipulators[name].entries.append((name, toolbar, menu_after))
+    else:
         _manipulators[name] = Manipulator(name, toolbar, menu_after)
         FreeCADGui.addWorkbenchManipulator(_manipulators[name])
 

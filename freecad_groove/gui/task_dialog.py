@@ -27,15 +27,20 @@ class GrooveTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
         self.looks_before = document_looks(obj.Document)
         self.applied = False  # Apply wrote the panel's values into the op
         super().__init__(obj, deleteOnReject, opPage, selectionFactory)
-        self.groove_page = opPage
+        self.groove_page = opPage  # the op's page: error, update_preview(), other_pages, on_validity_changed
+        self.add_pages(obj, opPage)
+        opPage.other_pages = [p for p in self.featurePages if p is not opPage]
+        opPage.on_validity_changed = self.update_buttons
+
+    def add_pages(self, obj, op_page):
+        """The add-on's pages besides CAM's: the tool page before the Groove page (a subclass for another op
+        adds its own, or none)."""
         tool_page = ToolPage(obj, obj.Proxy.opFeatures(obj))
         tool_page.parent = self
         tool_page.initPage(obj)
         tool_page.onDirtyChanged(self.pageDirtyChanged)
-        tool_page.groove_page = opPage
-        self.featurePages.insert(self.featurePages.index(opPage), tool_page)
-        opPage.other_pages = [p for p in self.featurePages if p is not opPage]
-        opPage.on_validity_changed = self.update_buttons
+        tool_page.groove_page = op_page
+        self.featurePages.insert(self.featurePages.index(op_page), tool_page)
         self._insert_form(tool_page, obj)
 
     def _insert_form(self, page, obj):

@@ -35,7 +35,7 @@ import os
 import FreeCAD
 import FreeCADGui
 import Path.Op.Gui.Base as PathOpGui
-from PySide import QtCore, QtGui
+from PySide import QtGui
 
 from ..freecad import faces as faces_mod
 from ..freecad import groove_op
@@ -52,6 +52,7 @@ from .widgets import (
     add_error_label,
     add_label,
     child,
+    coalescing_timer,
     connect_changed,
     fill_combo,
     fit_narrow_docks,
@@ -97,22 +98,33 @@ CHAMFER_MEASURE_TEXT = {
 }
 
 
-class BaseGeometryPage(PathOpGui.TaskPanelBaseGeometryPage):
-    """FreeCAD's base geometry page, plus the groove kind of the picked faces."""
+class FacesPage(PathOpGui.TaskPanelBaseGeometryPage):
+    """FreeCAD's base geometry page, faces only, with the op's message under
+    its own lines (add_lines)."""
 
     def getForm(self):
         form = super().getForm()
-        self.kind_label = add_label(form, "grooveKind")
+        self.add_lines(form)
         add_error_label(form)
         # Now: FreeCAD's task view sets its minimum width from the pages once, when it shows them.
         fit_narrow_docks(form)
         return form
+
+    def add_lines(self, form: object) -> None:
+        """Lines of a subclass above the message."""
 
     def supportsEdges(self):
         return False
 
     def supportsVertexes(self):
         return False
+
+
+class BaseGeometryPage(FacesPage):
+    """FreeCAD's base geometry page, plus the groove kind of the picked faces."""
+
+    def add_lines(self, form: object) -> None:
+        self.kind_label = add_label(form, "grooveKind")
 
     def setFields(self, obj):
         super().setFields(obj)
@@ -183,10 +195,7 @@ class GroovePage(PathOpGui.TaskPanelPage):
         self.replans = 0
         self.model_shown = {}  # {property: value} the fields show from the model
         self.on_validity_changed = None
-        self._timer = QtCore.QTimer()  # no parent: it must outlive the form, which Cancel may delete first
-        self._timer.setSingleShot(True)
-        self._timer.setInterval(PREVIEW_DELAY_MS)
-        self._timer.timeout.connect(self.update_preview)
+        self._timer = coalescing_timer(PREVIEW_DELAY_MS, self.update_preview)
 
     def getTitle(self, obj):
         return translate(CONTEXT, "Groove")
@@ -428,12 +437,27 @@ class GroovePage(PathOpGui.TaskPanelPage):
 
 class ViewProvider(PathOpGui.ViewProvider):
     """The op's view provider: FreeCAD's, with the add-on's icon, selection
-    gate and task panel."""
+    gate and task panel. Another op of the add-on derives from it and sets
+    the class attributes (grind_view.ViewProviderPlungeGrind)."""
+
+    ICON = ICON
+    TITLE = FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Groove")  # the op's kind, as the page's title says it
+    NAME = "Groove"  # a new op's object name
+    DIALOG = GrooveTaskPanel
+
+    @staticmethod
+    def make_op(name: str, job: object) -> object:
+        """A new op of this kind in ``job``, without its view provider."""
+        return groove_op.Create(name, parentJob=job)
+
+    @staticmethod
+    def command_resources() -> object:
+        return resources()
 
     def getIcon(self):
         if getattr(self, "Object", None) is not None and not self.Object.Active:
             return ":/icons/CAM_OpActive.svg"
-        return ICON
+        return self.ICON
 
     def getSelectionFactory(self):
         return select_turned_faces
@@ -444,9 +468,9 @@ class ViewProvider(PathOpGui.ViewProvider):
         if vobj is None:
             vobj = self.vobj
         page = self.getTaskPanelOpPage(vobj.Object)
-        page.setTitle(translate(CONTEXT, "Groove"))
-        page.setIcon(ICON)
-        panel = GrooveTaskPanel(vobj.Object, self.deleteObjectsOnReject(), page, self.getSelectionFactory())
+        page.setTitle(translate(CONTEXT, self.TITLE))
+        page.setIcon(self.ICON)
+        panel = self.DIALOG(vobj.Object, self.deleteObjectsOnReject(), page, self.getSelectionFactory())
         self.setupTaskPanel(panel)
         self.deleteOnReject = False
         return True
@@ -482,28 +506,31 @@ def resources() -> object:
     )
 
 
-def attach_view_provider(obj: object, delete_on_reject: bool = False) -> None:
-    """Give the op its view provider (ops made by scripts get one too)."""
-    vobj = obj.ViewObject
+def attach_view_provider(obj: object, delete_on_reject: bool = False, provider: type = ViewProvider) -> None:
+    """Give the op its view provider (ops made by scripts get one too); ``provider``: its class."""
+    vobj = getattr(obj, "ViewObject", None)
     if vobj is None:
         return
-    if not isinstance(getattr(vobj, "Proxy", None), ViewProvider):
-        vobj.Proxy = ViewProvider(vobj, resources())
+    if type(getattr(vobj, "Proxy", None)) is not provider:
+        vobj.Proxy = provider(vobj, provider.command_resources())
     vobj.Proxy.setDeleteObjectsOnReject(delete_on_reject)
 
 
-def create(job: object) -> object:
-    """A new Groove op in ``job`` with its task panel open (what the command
-    does). Cancel deletes it again. Returns the op, or None."""
+def create(job: object, provider: type = ViewProvider) -> object:
+    """A new op (of ``provider``'s kind: a Groove) in ``job`` with its task
+    panel open (what the command does). Cancel deletes it again. Returns the
+    op, or None."""
     doc = job.Document
-    doc.openTransaction(translate(CONTEXT, "Create Groove"))
+    kind = translate(CONTEXT, provider.TITLE)
+    doc.openTransaction(translate(CONTEXT, "Create {0}").format(kind))
     try:
-        obj = groove_op.Create("Groove", parentJob=job)
-        attach_view_provider(obj, delete_on_reject=True)
+        obj = provider.make_op(provider.NAME, job)
+        attach_view_provider(obj, delete_on_reject=True, provider=provider)
         obj.ViewObject.Visibility = True
     except Exception as error:
         doc.abortTransaction()
-        FreeCAD.Console.PrintError(translate(CONTEXT, "Groove: cannot create the operation: {0}").format(error) + "\n")
+        FreeCAD.Console.PrintError(translate(CONTEXT, "{0}: cannot create the operation: {1}").format(kind, error)
+                                   + "\n")
         return None
     doc.commitTransaction()
     obj.ViewObject.Document.setEdit(obj.ViewObject, 0)

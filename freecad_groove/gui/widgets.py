@@ -163,6 +163,16 @@ class ScaledPicture(QtCore.QObject):
         self.label.setFixedHeight(height)
 
 
+def coalescing_timer(delay_ms: int, slot: object) -> object:
+    """A single-shot timer calling slot() ``delay_ms`` after its last start(): the signals of one edit make one
+    call. No parent: it must outlive the form, which Cancel may delete first."""
+    timer = QtCore.QTimer()
+    timer.setSingleShot(True)
+    timer.setInterval(delay_ms)
+    timer.timeout.connect(slot)
+    return timer
+
+
 def fill_combo(combo: object, texts: dict) -> None:
     """Fill a combo box from {stored value: text shown (translated here)}."""
     combo.blockSignals(True)

@@ -29,6 +29,7 @@ VALUES = dict(depth=0.1, start_clearance=0.05, plunge_pick=0.02, cross_pick=5, s
 # the start 0.1 + 0.05 above it (Z20.15).
 CALL = G83(X=105.0, I=-5.0, Y=20.0, J=0.02, Z=35.0, K=5.0, L=1, F=60.0, E=6000.0)
 START = MachineState(x=-5.0, z=5.0, y=20.15, feed=60.0, diameter_mode=False)
+WHEEL_RPM = 3000.0  # the Job's tool controller's SpindleSpeed
 
 
 def make_box_job(size=(100, 40, 20)):
@@ -37,6 +38,7 @@ def make_box_job(size=(100, 40, 20)):
     block.Shape = Part.makeBox(*size)
     doc.recompute()
     job = PathJob.Create("Job", [block])
+    job.Tools.Group[0].SpindleSpeed = WHEEL_RPM  # the posts refuse a wheel that does not turn
     doc.recompute()
     return doc, block, job
 
@@ -162,7 +164,7 @@ def test_bad_inputs_give_one_line_naming_the_property(shop, face, values, messag
 import importlib.util  # noqa: E402
 import os  # noqa: E402
 
-from freecad_groove.engine.grind_program import GrindItem, PlainMoves, grind_program  # noqa: E402
+from freecad_groove.engine.grind_program import GrindItem, PlainMoves, WheelChange, grind_program  # noqa: E402
 from freecad_groove.engine.moves import RAPID, Move  # noqa: E402
 from freecad_groove.freecad.posts.errors import PostError  # noqa: E402
 
@@ -178,10 +180,16 @@ def post_module(name):
     return module
 
 
+def _wheel(job):
+    """The wheel of the Job's tool controller (tool 1 at WHEEL_RPM, clockwise)."""
+    tc = job.Tools.Group[0]
+    return WheelChange(tc.Label, 1, WHEEL_RPM, True)
+
+
 def _expected(call, job, target, native, extra=()):
     item = GrindItem("PlungeGrind: Block.Face6", call, START, max(job.Stock.Shape.BoundBox.ZMax, 20.0) + 5.0,
                      call.expand(START))
-    return grind_program([item, *extra], target, native, "Job")
+    return grind_program([_wheel(job), item, *extra], target, native, "Job")
 
 
 def test_the_ab9_grind_post_writes_the_op_as_its_g83_block_or_expanded(shop):
@@ -192,7 +200,7 @@ def test_the_ab9_grind_post_writes_the_op_as_its_g83_block_or_expanded(shop):
     assert native == _expected(CALL, job, "ab9grind", True)
     op.CoolantMode = "Flood"
     lines = post.export([job], "-", "").splitlines()
-    assert lines[5] == "M08" and lines[-2:] == ["M09", "M30"]
+    assert lines[8] == "M08" and lines[-3:] == ["M09", "M05", "M30"]  # after the tool change, spindle, comment
     op.CoolantMode = "None"
     assert "G83 X105. I-5. Y20. J0.02 Z35. K5. L1 F60. E6000." in native.splitlines()
     assert post.export([job], "-", "--expand-cycles") == _expected(CALL, job, "ab9grind", False)
@@ -226,6 +234,25 @@ def test_the_grind_posts_refuse_an_op_that_cannot_grind_and_commands_they_cannot
         post_module("ab9_grind").export([job, arc], "-", "")
 
 
+def test_the_posts_start_the_wheel_from_the_tool_controller_and_refuse_a_still_wheel(shop):
+    doc, block, job = shop
+    op = make_plunge_grind(job, (block, TOP), **VALUES)
+    tc = op.ToolController
+    lines = post_module("ab9_grind").export([job], "-", "").splitlines()
+    assert lines[4:7] == ["(tool 1: %s)" % tc.Label, "T01 M06", "S3000 M03"] and lines[-2:] == ["M05", "M30"]
+    tc.SpindleDir = "Reverse"
+    tc.ToolNumber = 7
+    lines = post_module("linuxcnc_grind").export([job], "-", "").splitlines()
+    assert lines[2:5] == ["(tool 7: %s)" % tc.Label, "T7 M6 G43", "S3000 M4"] and lines[-2:] == ["M5", "M2"]
+    tc.SpindleSpeed = 0
+    with pytest.raises(PostError, match=r"^PlungeGrind: the wheel does not turn: %s has SpindleSpeed 0, SpindleDir "
+                                        r"Reverse \(set a speed above 0, Forward or Reverse\)$" % tc.Label):
+        post_module("ab9_grind").export([job], "-", "")
+    tc.SpindleSpeed, tc.SpindleDir = 3000, "None"
+    with pytest.raises(PostError, match="^PlungeGrind: the wheel does not turn: .* SpindleDir None"):
+        post_module("linuxcnc_grind").export([job], "-", "")
+
+
 def test_a_wall_within_the_overtravel_is_refused_and_none_without_overtravel():
     doc = FreeCAD.newDocument("PlungeWall")
     try:
@@ -250,6 +277,59 @@ def test_a_wall_within_the_overtravel_is_refused_and_none_without_overtravel():
 # ---------------------------------------------------------------- the grinding wheel tool bit
 
 from freecad_groove.freecad import wheel_toolbit  # noqa: E402
+
+
+def _stepped_job(name):
+    """The 100 x 40 face at Z20 in a step: beyond its +X end a 12 mm gap down to Z10, then a wall X112..122 up
+    to Z30; along its +Y edge a wall Y40..50 up to Z30, flush with the wheel's side at the end of the crossover."""
+    doc = FreeCAD.newDocument(name)
+    block = doc.addObject("Part::Feature", "Stepped")
+    block.Shape = Part.makeBox(100, 40, 20).fuse([
+        Part.makeBox(22, 40, 10, FreeCAD.Vector(100, 0, 0)), Part.makeBox(10, 40, 30, FreeCAD.Vector(112, 0, 0)),
+        Part.makeBox(100, 10, 30, FreeCAD.Vector(0, 40, 0))])
+    doc.recompute()
+    job = PathJob.Create("Job", [block])
+    doc.recompute()
+    top = next("Face%d" % (i + 1) for i, f in enumerate(block.Shape.Faces)
+               if abs(f.BoundBox.ZMin - 20) < 1e-9 and abs(f.BoundBox.ZMax - 20) < 1e-9)
+    return doc, block, job, top
+
+
+@pytest.mark.parametrize("diameter, overtravel, refused", [
+    (200, 5, True),  # at the reversal X105 the 100 mm radius reaches X112 0.25 mm above the face
+    (16, 5, True),  # reaches X113 at 8 mm above the face, below the wall's top (10 mm above)
+    (16, 0, False),  # from X100: X108
+    (10, 5, False),  # from X105: X110, 2 mm short of the wall
+])
+def test_the_wheel_body_is_checked_against_a_wall_beside_the_face(diameter, overtravel, refused):
+    doc, block, job, top = _stepped_job("PlungeBody")
+    try:
+        op = make_plunge_grind(job, (block, top), **dict(VALUES, wheel_diameter=diameter, overtravel=overtravel))
+        if refused:
+            assert op_error(op) == (
+                "Base: the wheel's body (diameter %g) meets Stepped beside Stepped.%s: a wall within the wheel's "
+                "radius of a reversal point (reduce Overtravel, grind with a smaller wheel, or grind another face)"
+                % (diameter, top))
+            assert op.GrindCall == "" and not [c for c in op.Path.Commands if c.Name in ("G0", "G1")]
+        else:  # the lowest point alone passes in every case; the +Y wall touches the wheel's side only
+            assert op_error(op) is None and op.Proxy.current_plan(op).warnings == []
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+
+
+def test_a_wheel_of_unknown_diameter_grinds_with_a_warning_and_the_wheel_bit_gives_its_diameter():
+    doc, block, job, top = _stepped_job("PlungeBodyUnknown")
+    try:
+        op = make_plunge_grind(job, (block, top), **VALUES)  # the Job's end mill: no Width, WheelDiameter 0
+        assert op_error(op) is None
+        assert op.Proxy.current_plan(op).warnings == [
+            "WheelDiameter: the wheel's diameter is unknown (the tool bit has no Width: not a grinding wheel bit; "
+            "WheelDiameter is 0): its body above the lowest point is not checked against the part"]
+        op.ToolController = wheel_toolbit.make_wheel_tool_controller(job, width=10, diameter=200)
+        doc.recompute()
+        assert op_error(op).startswith("Base: the wheel's body (diameter 200) meets Stepped")
+    finally:
+        FreeCAD.closeDocument(doc.Name)
 
 
 def test_the_wheel_tool_bit_gives_the_op_its_width_and_survives_save_and_reopen(tmp_path):
@@ -344,6 +424,45 @@ def test_reciprocation_along_y_and_the_posts_axes():
         custom.Path = Path.Path([Path.Command("G0", {"X": 1, "Y": 2, "Z": 30})])
         doc.recompute()
         plain = PlainMoves("Custom", [Move(RAPID, 2.0, 1.0, y=30.0)])  # grinder X = FreeCAD Y, Z = FreeCAD X
-        assert post.export([op, custom], "-", "--axes YZX") == grind_program([item, plain], "ab9grind", True, "Job")
+        assert post.export([op, custom], "-", "--axes YZX") == grind_program([_wheel(job), item, plain], "ab9grind",
+                                                                              True, "Job")
     finally:
         FreeCAD.closeDocument(doc.Name)
+
+
+# ---------------------------------------------------------------- the wheel in FreeCAD 1.1's shape chooser
+
+from freecad_groove.freecad import shape_assets  # noqa: E402
+
+
+@pytest.mark.skipif(not shape_assets.AVAILABLE, reason="FreeCAD 1.0 has no tool bit shape chooser: wheels come "
+                    "from make_wheel_tool_controller")
+def test_the_shape_chooser_lists_the_grinding_wheel_and_a_bit_from_it_grinds(shop):
+    import Path.Tool.Controller as PathToolController
+    from Path.Tool.shape import ToolBitShapeSvgIcon
+    from test_toolbit import _bit_from_the_chooser, _chooser_shapes
+
+    doc, block, job = shop
+    assert shape_assets.installed(), "Init.py registered the shapes when CAM imported Path.Tool"
+    shapes = _chooser_shapes()
+    shape = shapes[shape_assets.WHEEL_SHAPE_ID]
+    assert "endmill" in shapes and shape_assets.SHAPE_ID in shapes  # FreeCAD's and the grooving blade too
+    assert isinstance(shape, wheel_toolbit.ToolBitShapeGrindingWheel) and shape.label == "Grinding wheel"
+    assert shape.is_builtin
+    params = shape.get_parameters()
+    assert (params["Diameter"].Value, params["Width"].Value) == (pytest.approx(200), pytest.approx(20))
+    icon = shape.get_icon()  # what the chooser's button draws
+    assert isinstance(icon, ToolBitShapeSvgIcon) and icon.abbreviations == {"Diameter": "D", "Width": "W"}
+    asset = _bit_from_the_chooser(shape)
+    assert isinstance(asset, wheel_toolbit.ToolBitGrindingWheel)
+    bit = asset.attach_to_doc(doc)  # the tool library's "Add to Job", then the user's values
+    bit.Width, bit.Diameter = 10, 150
+    tc = PathToolController.Create("TC: " + asset.label, bit, 5)
+    tc.SpindleSpeed = WHEEL_RPM
+    job.Proxy.addToolController(tc)
+    op = make_plunge_grind(job, (block, TOP), tool_controller=tc, **{k: v for k, v in VALUES.items()
+                                                                     if k != "wheel_width"})
+    assert op_error(op) is None, op_error(op)
+    assert op.GrindCall == CALL.emit()  # the wheel's width 10 from the bit
+    assert op.Proxy.current_plan(op).warnings == []  # its diameter known: the body checked
+    assert "T05 M06" in post_module("ab9_grind").export([job], "-", "").splitlines()

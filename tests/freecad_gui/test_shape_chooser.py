@@ -11,13 +11,14 @@ suite. FreeCAD 1.0 has no shape chooser: skipped.
 import traceback
 
 import FreeCADGui
+import Part
 import pytest
 from gui_helpers import close_shop, make_gui_shop, process, screenshot_widget, version, wait_for
 from parts import face_name
 from PySide import QtCore, QtGui
 
-from freecad_groove import make_groove
-from freecad_groove.freecad import shape_assets, toolbit
+from freecad_groove import make_groove, make_plunge_grind
+from freecad_groove.freecad import plunge_grind_op, shape_assets, toolbit, wheel_toolbit
 from freecad_groove.freecad.groove_op import op_error
 
 pytestmark = pytest.mark.skipif(not shape_assets.AVAILABLE, reason="FreeCAD 1.0 has no tool bit shape chooser: "
@@ -63,11 +64,11 @@ def _in_the_chooser(seen):
     try:
         chooser, buttons = wait_for(_shape_buttons, timeout=30, what="the shape chooser")
         seen["entries"] = sorted(b.label_widget.text() for b in buttons)
-        (button,) = [b for b in buttons if b.shape.id == shape_assets.SHAPE_ID]
+        (button,) = [b for b in buttons if b.shape.id == seen.get("shape_id", shape_assets.SHAPE_ID)]
         seen["label"] = button.label_widget.text()
         seen["shape"] = button.shape
         seen["icon_drawn"] = not button.icon_widget.icon_widget.pixmap().isNull()
-        screenshot_widget("%s-shape-chooser" % version(), chooser)
+        screenshot_widget("%s-shape-chooser%s" % (version(), seen.get("shot", "")), chooser)
         button.click()
     except Exception:
         seen["error"] = traceback.format_exc()
@@ -93,11 +94,9 @@ def _local_toolbits():
     return {str(u) for u in cam_assets.list_assets(asset_type="toolbit", store="local")}
 
 
-def test_the_shape_chooser_offers_the_grooving_blade():
-    from Path.Tool.camassets import cam_assets
-
-    before = _local_toolbits()
-    seen = {}
+def _choose_in_the_tool_library(seen):
+    """CAM > Tool library editor > Add tool bit > the shape ``seen["shape_id"]`` (default the grooving blade);
+    ``seen`` gets what the chooser showed."""
     QtCore.QTimer.singleShot(200, lambda: _in_the_editor(seen))
     watchdog = QtCore.QTimer()  # stopped below: it must not close a later test's dialogs
     watchdog.setSingleShot(True)
@@ -108,6 +107,14 @@ def test_the_shape_chooser_offers_the_grooving_blade():
         process(0.2)
     finally:
         watchdog.stop()
+
+
+def test_the_shape_chooser_offers_the_grooving_blade():
+    from Path.Tool.camassets import cam_assets
+
+    before = _local_toolbits()
+    seen = {}
+    _choose_in_the_tool_library(seen)
     assert "error" not in seen, seen["error"]
     assert seen["label"] == "Grooving blade" and "Grooving blade" in seen["entries"], seen
     assert "Endmill" in seen["entries"]
@@ -132,5 +139,35 @@ def test_the_shape_chooser_offers_the_grooving_blade():
         (_c, settings, _st), = op.Proxy.cycles(op)
         assert (settings.tool.width, settings.tool.corner_radius) == (pytest.approx(2), pytest.approx(0.25))
         assert bit.Diameter.Value == pytest.approx(2)
+    finally:
+        close_shop(doc)
+
+
+def test_the_shape_chooser_offers_the_grinding_wheel():
+    from Path.Tool.camassets import cam_assets
+
+    before = _local_toolbits()
+    seen = {"shape_id": shape_assets.WHEEL_SHAPE_ID, "shot": "-wheel"}
+    _choose_in_the_tool_library(seen)
+    assert "error" not in seen, seen["error"]
+    assert seen["label"] == "Grinding wheel" and "Grooving blade" in seen["entries"], seen
+    assert seen["icon_drawn"] and seen["shape"].get_icon().id == "grindingwheel.svg"
+    (new,) = _local_toolbits() - before
+    made = cam_assets.get(new, store=["local", "builtin"])
+    assert isinstance(made, wheel_toolbit.ToolBitGrindingWheel)
+    import Path.Tool.Controller as PathToolController
+
+    doc, job, model = make_gui_shop("ChooserWheel", shape=Part.makeBox(100, 40, 20))
+    try:
+        bit = made.attach_to_doc(doc)
+        bit.Width, bit.Diameter = 8, 120
+        tc = PathToolController.Create("TC: " + made.label, bit, 6)
+        tc.HorizFeed = tc.VertFeed = "300 mm/min"
+        job.Proxy.addToolController(tc)
+        op = make_plunge_grind(job, (model, "Face6"), tool_controller=tc)
+        doc.recompute()
+        assert plunge_grind_op.op_error(op) is None, plunge_grind_op.op_error(op)
+        assert op.Proxy.current_plan(op).call.Z == pytest.approx(36.0)  # flush with Y40: the 8 mm wheel's middle
+        assert op.Proxy.current_plan(op).warnings == []
     finally:
         close_shop(doc)

@@ -10,8 +10,13 @@ written through it; a Plunge grind op grinds along its own (its
 ReciprocationAxis: XZY or YZX) and is refused when they differ.
 
 What a post writes for the objects: a Job: its operations in order; a tool
-controller or a fixture block: nothing (the grinder has one wheel; its work
-offset is the machine's); an inactive op: nothing; a Plunge grind op: its
+controller, and the tool controller of each op: the wheel (engine
+grind_program.WheelChange: the tool change when its ToolNumber differs from
+the one in force, then its SpindleSpeed with M3 for SpindleDir Forward, M4
+for Reverse, M5 for 0 or None); a Plunge grind op is refused unless its tool
+controller turns the wheel (SpindleSpeed above 0, SpindleDir Forward or
+Reverse); a fixture block: nothing (the work offset is the machine's); an
+inactive op: nothing; a Plunge grind op: its
 plan (op.Proxy.current_plan; an op that cannot grind is refused with its
 message); any other object with a Path: its G0/G1 moves as they are (feeds
 in mm/min), comments dropped, any other command refused naming the op. An
@@ -24,7 +29,7 @@ import traceback
 from typing import Any, Iterable, List, Optional, Sequence, Union
 
 from ...engine.errors import ProgramError
-from ...engine.grind_program import GrindItem, PlainMoves, grind_program
+from ...engine.grind_program import GrindItem, PlainMoves, WheelChange, grind_program
 from ...engine.moves import FEED, RAPID, Move
 from ..plunge_grind_op import ObjectPlungeGrind, op_error
 from ..units import SECONDS_PER_MINUTE
@@ -88,17 +93,41 @@ def _coolant(obj: Any) -> Optional[int]:
     return COOLANT_CODES.get(str(getattr(obj, "CoolantMode", "None") or "None"))
 
 
+def _wheel(tc: Any) -> WheelChange:
+    """The wheel of tool controller ``tc``."""
+    direction = str(getattr(tc, "SpindleDir", "Forward"))
+    rpm = float(tc.SpindleSpeed) if direction in ("Forward", "Reverse") else 0.0
+    return WheelChange(label_of(tc), int(tc.ToolNumber), rpm, direction != "Reverse")
+
+
+def _grinding_wheel(obj: Any) -> WheelChange:
+    """The wheel of a Plunge grind op's tool controller; PostError unless it turns."""
+    tc = getattr(obj, "ToolController", None)
+    if tc is None:
+        raise PostError("no tool controller: the post starts the wheel from it (ToolNumber, SpindleSpeed, "
+                        "SpindleDir)", label_of(obj))
+    wheel = _wheel(tc)
+    if not wheel.rpm > 0:
+        raise PostError("the wheel does not turn: %s has SpindleSpeed %g, SpindleDir %s (set a speed above 0, "
+                        "Forward or Reverse)" % (label_of(tc), float(tc.SpindleSpeed),
+                                                 getattr(tc, "SpindleDir", "Forward")), label_of(obj))
+    return wheel
+
+
 def _items(objects: Iterable[Any], axes: str) -> list:
     items = []
     for obj in objects:
         if is_job(obj):
             items += _items(obj.Operations.Group, axes)
-        elif is_tool_controller(obj) or is_fixture_block(obj) or not getattr(obj, "Active", True):
+        elif is_tool_controller(obj):
+            items.append(_wheel(obj))
+        elif is_fixture_block(obj) or not getattr(obj, "Active", True):
             continue
         elif isinstance(getattr(obj, "Proxy", None), ObjectPlungeGrind):
             error = op_error(obj)
             if error:
                 raise PostError(error, label_of(obj))
+            items.append(_grinding_wheel(obj))
             try:
                 plan = obj.Proxy.current_plan(obj)
             except ValueError as e:
@@ -110,6 +139,8 @@ def _items(objects: Iterable[Any], axes: str) -> list:
             items.append(GrindItem("%s: %s" % (label_of(obj), plan.face_name), plan.call, plan.start, plan.safe_z,
                                    plan.moves, _coolant(obj)))
         elif hasattr(obj, "Path"):
+            if getattr(obj, "ToolController", None) is not None:
+                items.append(_wheel(obj.ToolController))
             items.append(PlainMoves(label_of(obj), _moves_of_path(obj, axes), _coolant(obj)))
     return items
 
