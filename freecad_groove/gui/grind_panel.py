@@ -10,7 +10,7 @@ values (the op seen through groove_op._WithValues: the document is not
 touched) and draws its strokes in the 3D view (grind_preview.py); an
 invalid value shows the op's message in one line on both pages, frames the
 fields it names red, and OK and Apply are refused until it is
-fixed (task_dialog.GrooveTaskPanel). OK writes the values into the op and
+fixed (task_dialog.AddonTaskPanel). OK writes the values into the op and
 recomputes; Cancel aborts the panel's transaction (and, for a new op,
 deletes it).
 
@@ -21,7 +21,6 @@ providers keep their page): keep it here.
 
 import FreeCAD
 import FreeCADGui
-import Path.Op.Gui.Base as PathOpGui
 import PathScripts.PathUtils as PathUtils
 from PySide import QtCore, QtGui
 
@@ -30,28 +29,20 @@ from ..freecad.plunge_grind_op import read_face
 from ..freecad.plunge_grind_properties import DERIVED, PROPERTIES
 from . import GRIND_ICON
 from .grind_preview import GrindPreview
-from .task_dialog import GrooveTaskPanel
+from .live_page import LivePage
 from .task_panel import FacesPage
 from .widgets import (
     CONTEXT,
-    ERROR_LABEL,
-    WARNING_LABEL,
     add_error_label,
     child,
-    coalescing_timer,
     connect_changed,
     fit_narrow_docks,
-    mark_invalid,
-    mark_warned,
     select_data,
-    show_error,
     show_quantity,
-    show_warnings,
 )
 
 translate = FreeCAD.Qt.translate
 
-CHECK_DELAY_MS = 20  # coalesces the signals of one edit into one re-plan
 UNITS = {"App::PropertyLength": "mm", "App::PropertySpeed": "mm/min"}  # quantity fields and the unit they show
 INTEGER_RANGE = (0, 99999)  # the op checks the ranges of L, P, D and names the property
 FIELDS = tuple(p for p in PROPERTIES if p[1] not in DERIVED)  # (type, name, group, tooltip, default)
@@ -94,8 +85,10 @@ class GrindBaseGeometryPage(FacesPage):
     """FreeCAD's base geometry page, faces only, with the op's message."""
 
 
-class PlungeGrindPage(PathOpGui.TaskPanelPage):
-    """The op's own values; owns the validity state the dialog reads (as the Groove page)."""
+class PlungeGrindPage(LivePage):
+    """The op's own values; owns the validity state the dialog reads (live_page.py, as the Groove page)."""
+
+    INTERNAL_ERROR = FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Internal error while planning the grind: {0}")
 
     def getForm(self):
         form = QtGui.QWidget()
@@ -131,16 +124,9 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
         return GrindBaseGeometryPage(obj, features)
 
     def initPage(self, obj):
-        self.other_pages = []  # set by the dialog: pages whose errors share this state
-        self.error = None  # the op's message while the values make no grind
-        self.invalid = ()  # properties marked
-        self.replans = 0
+        self.init_live()  # its preview: the strokes drawn in the 3D view (grind_preview.py)
         self.plan = None
-        self.preview = None  # the strokes drawn in the 3D view (grind_preview.py)
-        self.warnings = []  # the plan's warnings shown
         self.shown = {}
-        self.on_validity_changed = None
-        self._timer = coalescing_timer(CHECK_DELAY_MS, self.update_preview)
 
     def getTitle(self, obj):
         return translate(CONTEXT, "Plunge grind")
@@ -266,79 +252,26 @@ class PlungeGrindPage(PathOpGui.TaskPanelPage):
             self.schedule_preview()
 
     # -- validity -----------------------------------------------------------------
-    def schedule_preview(self) -> None:
-        self._timer.start()
+    def replan(self) -> object:
+        """The op's plan from the page's values (live_page.LivePage)."""
+        return self.obj.Proxy.plan(_WithValues(self.obj, self.values()))
 
-    def update_preview(self) -> None:
-        """Re-plan the op from the page's values: the G83 block it programs, or its error."""
-        self._timer.stop()
-        obj = self.obj
-        error, invalid, plan = None, (), None
-        try:
-            plan = obj.Proxy.plan(_WithValues(obj, self.values()))
-        except ValueError as bad_input:  # GrindInputError names the properties to fix
-            error, invalid = str(bad_input), tuple(getattr(bad_input, "properties", ()))
-        except Exception as bug:  # a bug, not bad input: say so in the panel, details in the report view
-            import traceback
+    def error_fields(self, bad_input: ValueError) -> tuple:
+        return tuple(getattr(bad_input, "properties", ()))  # GrindInputError names the properties to fix
 
-            FreeCAD.Console.PrintError(traceback.format_exc())
-            error = translate(CONTEXT, "Internal error while planning the grind: {0}").format(bug)
-        self.replans += 1
+    def show_plan(self, plan: object) -> None:
+        """The G83 block ``plan`` programs and its strokes in the 3D view (none while invalid), and its
+        warnings; the field each names ("WheelDiameter: ...") framed amber."""
         self.plan = plan
         child(self.form, GRIND_CALL_LABEL).setText(plan.call.emit() if plan is not None else "")
         if self.preview is None:
             gui_document = FreeCADGui.ActiveDocument
             self.preview = GrindPreview(gui_document.ActiveView if gui_document is not None else None)
         self.preview.show(plan)
-        self.set_error(error, invalid)
-        self.set_warnings(plan.warnings if plan is not None else [])
-
-    def set_warnings(self, lines: list) -> None:
-        """Show the plan's warnings (what the op does but could not check) in amber on every page; the field
-        each names ("WheelDiameter: ...") framed amber."""
-        self.warnings = list(lines)
-        for _type, name, _group, _tip, _default in FIELDS:
-            mark_warned(self.field(name), any(line.startswith(name + ":") for line in lines))
-        for page in [self] + list(self.other_pages):
-            show_warnings(child(page.form, WARNING_LABEL), lines)
-
-    def set_error(self, message: object, properties: tuple = ()) -> None:
-        """Show ``message`` (None: the values make a grind) on every page and frame the fields of
-        ``properties`` (the face list for Base)."""
-        was_valid = self.error is None
-        self.error = message
-        for prop in self.invalid:
-            mark_invalid(self._marked(prop), False)
-        self.invalid = tuple(properties) if message else ()
-        for prop in self.invalid:
-            mark_invalid(self._marked(prop), True)
-        for page in [self] + list(self.other_pages):
-            show_error(child(page.form, ERROR_LABEL), message)
-        if was_valid != (message is None) and self.on_validity_changed is not None:
-            self.on_validity_changed()
-
-    def _marked(self, prop: str) -> object:
-        if prop != "Base":
-            return self.field(prop)
-        for page in self.other_pages:
-            if isinstance(page, GrindBaseGeometryPage):
-                return page.form.baseList
-        return None
-
-    def cleanupPage(self, obj):
-        self._timer.stop()
-        if self.preview is not None:
-            self.preview.remove()
-            self.preview = None
-
-
-class PlungeGrindTaskPanel(GrooveTaskPanel):
-    """The Groove panel's dialog (qt_wrappers.ForgetsButtonBox first: the button box forgotten on closing;
-    OK and Apply refused while the values make no grind; an unchanged document left unmodified), without
-    the Groove's tool page: the tool controller is on the Plunge grind page."""
-
-    def add_pages(self, obj, op_page):
-        pass
+        lines = plan.warnings if plan is not None else []
+        named = [name for _type, name, _group, _tip, _default in FIELDS
+                 if any(line.startswith(name + ":") for line in lines)]
+        self.show_warning_lines(lines, tuple(named))
 
 
 class FlatFaceGate:

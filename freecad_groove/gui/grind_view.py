@@ -11,7 +11,8 @@ import Path.Op.Gui.Base as PathOpGui
 from ..freecad import plunge_grind_op
 from . import GRIND_ICON, task_panel
 from .grind_command import MENU_TEXT, TOOL_TIP
-from .grind_panel import PlungeGrindPage, PlungeGrindTaskPanel, select_flat_faces
+from .grind_panel import PlungeGrindPage, select_flat_faces
+from .task_dialog import AddonTaskPanel
 from .widgets import CONTEXT
 
 
@@ -22,7 +23,7 @@ class ViewProviderPlungeGrind(task_panel.ViewProvider):
     ICON = GRIND_ICON
     TITLE = FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Plunge grind")
     NAME = "PlungeGrind"
-    DIALOG = PlungeGrindTaskPanel
+    DIALOG = AddonTaskPanel  # no tool page: the tool controller is on the Plunge grind page
 
     @staticmethod
     def make_op(name: str, job: object) -> object:

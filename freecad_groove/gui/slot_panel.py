@@ -26,31 +26,25 @@ import FreeCAD
 import FreeCADGui
 import Path.Op.Gui.Base as PathOpGui
 import PathScripts.PathUtils as PathUtils
-from PySide import QtCore, QtGui
+from PySide import QtGui
 
-from ..freecad.groove_properties import error_properties
 from . import ICON
-from .qt_wrappers import ForgetsButtonBox
+from .live_page import LivePage
 from .slot_preview import DevelopedPicture, developed_path
-from .task_dialog import document_looks
+from .task_dialog import AddonTaskPanel
 from .widgets import (
     CONTEXT,
     ERROR_LABEL,
-    WARNING_LABEL,
     QuantityFields,
     add_error_label,
     child,
     connect_changed,
     fit_narrow_docks,
-    mark_invalid,
     new_warning_label,
-    show_error,
-    show_warnings,
 )
 
 translate = FreeCAD.Qt.translate
 
-PREVIEW_DELAY_MS = 20  # coalesces the signals of one edit into one re-plan
 SLOT_QUANTITIES = (("depth", "Depth"), ("allowance", "Allowance"), ("retract", "Retract"))
 TOOLTIPS = {
     "Depth": "Depth of the slot below the cylinder, radial (J = -2 Depth)",
@@ -127,8 +121,10 @@ def build_form() -> object:
     return form
 
 
-class SlotPage(PathOpGui.TaskPanelPage):
-    """The slot's values and the live preview; owns the validity state."""
+class SlotPage(LivePage):
+    """The slot's values and the live preview; owns the validity state (live_page.py)."""
+
+    INTERNAL_ERROR = FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Internal error while planning the slot: {0}")
 
     def getForm(self):
         return build_form()
@@ -139,13 +135,9 @@ class SlotPage(PathOpGui.TaskPanelPage):
     def initPage(self, obj):
         self.fields = QuantityFields(self.form, SLOT_QUANTITIES)
         self.picture = DevelopedPicture(child(self.form, "developedPicture"), child(self.form, "passesLabel"))
-        self.other_pages = []  # set by SlotTaskPanel
-        self.error, self.invalid, self.warnings, self.plan, self.replans = None, (), [], None, 0
-        self.on_validity_changed = None
-        self._timer = QtCore.QTimer()  # no parent: it must outlive the form, which Cancel may delete first
-        self._timer.setSingleShot(True)
-        self._timer.setInterval(PREVIEW_DELAY_MS)
-        self._timer.timeout.connect(self.update_preview)
+        self.init_live()  # no preview in the 3D view: the picture is in the page
+        self.plan = None
+        self.planned_values = {}
 
     def getTitle(self, obj):
         return translate(CONTEXT, "Cylinder slot")
@@ -216,54 +208,17 @@ class SlotPage(PathOpGui.TaskPanelPage):
         if prop in ("Base", "ToolController", "DevelopedSketch"):
             self.schedule_preview()
 
-    # -- preview and validity ---------------------------------------------------
-    def schedule_preview(self) -> None:
-        self._timer.start()
+    # -- preview and validity (live_page.LivePage) --------------------------------
+    def replan(self) -> object:
+        self.planned_values = self.values()
+        return self.obj.Proxy.plan_with(self.obj, self.planned_values)
 
-    def update_preview(self) -> None:
-        """Re-plan the op from the panel's values; redraw, or show the error."""
-        self._timer.stop()
-        error, invalid, plan = None, (), None
-        values = self.values()
-        try:
-            plan = self.obj.Proxy.plan_with(self.obj, values)
-        except ValueError as bad_input:  # CycleError and GrooveInputError are ValueErrors
-            error, invalid = str(bad_input), error_properties(bad_input)
-        except Exception as bug:  # a bug, not bad input: say so in the panel, details in the report view
-            import traceback
-
-            FreeCAD.Console.PrintError(traceback.format_exc())
-            error = translate(CONTEXT, "Internal error while planning the slot: {0}").format(bug)
-        self.replans += 1
+    def show_plan(self, plan: object) -> None:
+        """The developed path of ``plan`` (none while invalid) and its warnings."""
         self.plan = plan
-        width = end_mill_diameter(values.get("ToolController", self.obj.ToolController))
+        width = end_mill_diameter(self.planned_values.get("ToolController", self.obj.ToolController))
         self.picture.show(developed_path(plan, width) if plan is not None else None)
-        self.set_error(error, invalid)
-        self.warnings = list(plan.warnings) if plan is not None else []
-        for page in [self] + list(self.other_pages):
-            show_warnings(child(page.form, WARNING_LABEL), self.warnings)
-
-    def set_error(self, message: object, properties: tuple = ()) -> None:
-        """Show ``message`` (None: the values make a slot) on every page and mark the fields of ``properties``."""
-        was_valid = self.error is None
-        self.error = message
-        for prop in self.invalid:
-            mark_invalid(self._field_anywhere(prop), False)
-        self.invalid = tuple(properties) if message else ()
-        for prop in self.invalid:
-            mark_invalid(self._field_anywhere(prop), True)
-        for page in [self] + list(self.other_pages):
-            show_error(child(page.form, ERROR_LABEL), message)
-        if was_valid != (message is None) and self.on_validity_changed is not None:
-            self.on_validity_changed()
-
-    def _field_anywhere(self, prop: str) -> object:
-        if prop == "Base":
-            return next((p.form.baseList for p in self.other_pages if isinstance(p, SlotBaseGeometryPage)), None)
-        return self.field(prop)
-
-    def cleanupPage(self, obj):
-        self._timer.stop()
+        self.show_warning_lines(list(plan.warnings) if plan is not None else [])
 
 
 def end_mill_diameter(tool_controller: object) -> float:
@@ -273,73 +228,9 @@ def end_mill_diameter(tool_controller: object) -> float:
     return float(getattr(diameter, "Value", diameter))
 
 
-class RefusesOkWhileInvalid:
-    """Mixin before Path.Op.Gui.Base.TaskPanel: OK and Apply disabled while ``self.op_page.error`` stands, and
-    refused (one line in the report view) if reached anyway; the page re-plans with the values shown first."""
-
-    def update_buttons(self) -> None:
-        box = getattr(self, "buttonBox", None)
-        if box is None:
-            return
-        valid = self.op_page.error is None
-        box.button(QtGui.QDialogButtonBox.Ok).setEnabled(valid)
-        box.button(QtGui.QDialogButtonBox.Apply).setEnabled(valid and self.isDirty())
-
-    def pageDirtyChanged(self, page):
-        self.update_buttons()
-
-    def modifyStandardButtons(self, buttonBox):
-        super().modifyStandardButtons(buttonBox)
-        fit_narrow_docks(buttonBox)  # OK, Cancel, Apply: three 80 px buttons are wider than 1.0's dock
-        self.update_buttons()
-
-    def _refuse(self) -> bool:
-        self.op_page.update_preview()  # the values the user sees now, not those of 20 ms ago
-        if self.op_page.error is None:
-            return False
-        FreeCAD.Console.PrintWarning("%s: %s\n" % (self.obj.Label, self.op_page.error))
-        return True
-
-    def accept(self, resetEdit=True):
-        if self._refuse():
-            return False
-        super().accept(resetEdit)
-        return True
-
-    def clicked(self, button):
-        if button == QtGui.QDialogButtonBox.Apply and self._refuse():
-            return
-        super().clicked(button)
-
-
-class SlotTaskPanel(ForgetsButtonBox, RefusesOkWhileInvalid, PathOpGui.TaskPanel):
-    """FreeCAD's op task panel for the Cylinder slot: OK/Apply refused while the slot is invalid; the button
-    box's wrappers forgotten on closing (qt_wrappers.py)."""
-
-    def __init__(self, obj, deleteOnReject, opPage, selectionFactory):
-        self.op_page = opPage
-        # Before CAM's panel shows the op and hides the model and stock: that marks the document modified.
-        self.gui_document = FreeCADGui.getDocument(obj.Document.Name)
-        self.was_modified, self.looks_before = self.gui_document.Modified, document_looks(obj.Document)
-        self.applied = False  # Apply wrote the panel's values into the op
-        super().__init__(obj, deleteOnReject, opPage, selectionFactory)
-        opPage.other_pages = [p for p in self.featurePages if p is not opPage]
-        opPage.on_validity_changed = self.update_buttons
-
-    def clicked(self, button):
-        was_dirty = self.isDirty()
-        super().clicked(button)
-        if button == QtGui.QDialogButtonBox.Apply and was_dirty and not self.isDirty():
-            self.applied = True
-
-    def reject(self, resetEdit=True):
-        """Cancel; a saved document stays unmodified when the panel of an existing op changed nothing in it
-        (CAM's panel only shows and hides objects while it is open), as the Groove panel does."""
-        unchanged = not self.deleteOnReject and not self.applied
-        result = super().reject(resetEdit)
-        if unchanged and not self.was_modified and document_looks(self.gui_document.Document) == self.looks_before:
-            self.gui_document.Modified = False
-        return result
+class SlotTaskPanel(AddonTaskPanel):
+    """The add-on's op dialog (task_dialog.py: OK/Apply refused while the slot is invalid, the button box's
+    wrappers forgotten on closing, a saved document left unmodified by a look) for the Cylinder slot."""
 
 
 def open_panel(vobj: object, delete_on_reject: bool) -> SlotTaskPanel:

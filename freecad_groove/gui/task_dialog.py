@@ -1,7 +1,8 @@
-"""The Groove op's task dialog: FreeCAD CAM's op task panel with the tool
-page (tool_page.py) inserted before the Groove page, OK and Apply refused
-while the groove is invalid, and a document left unmodified by a look at the
-panel (CAM's panel changes Visibility while it is open).
+"""The add-on's op task dialogs: FreeCAD CAM's op task panel with OK and
+Apply refused while the op's page holds an error, and a document left
+unmodified by a look at the panel (CAM's panel changes Visibility while it is
+open): AddonTaskPanel, the dialog of the Cylinder slot and Plunge grind ops;
+GrooveTaskPanel adds the tool page (tool_page.py) before the Groove page.
 
 Not stored in documents (ViewProvider.setEdit builds it): free to move.
 """
@@ -16,9 +17,10 @@ from .tool_page import ToolPage
 from .widgets import fit_narrow_docks
 
 
-class GrooveTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
-    """FreeCAD's op task panel with the tool page added and OK/Apply refused
-    while the groove is invalid; its button box's wrappers forgotten on closing (qt_wrappers.py)."""
+class AddonTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
+    """FreeCAD's op task panel with OK/Apply refused while the op's page holds an error; its button box's
+    wrappers forgotten on closing (qt_wrappers.py). The op's page has ``error``, ``update_preview()``,
+    ``other_pages`` and ``on_validity_changed``."""
 
     def __init__(self, obj, deleteOnReject, opPage, selectionFactory):
         # Before CAM's panel shows the op and hides the model and stock: that marks the document modified.
@@ -27,36 +29,18 @@ class GrooveTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
         self.looks_before = document_looks(obj.Document)
         self.applied = False  # Apply wrote the panel's values into the op
         super().__init__(obj, deleteOnReject, opPage, selectionFactory)
-        self.groove_page = opPage  # the op's page: error, update_preview(), other_pages, on_validity_changed
+        self.op_page = opPage
         self.add_pages(obj, opPage)
         opPage.other_pages = [p for p in self.featurePages if p is not opPage]
         opPage.on_validity_changed = self.update_buttons
 
-    def add_pages(self, obj, op_page):
-        """The add-on's pages besides CAM's: the tool page before the Groove page (a subclass for another op
-        adds its own, or none)."""
-        tool_page = ToolPage(obj, obj.Proxy.opFeatures(obj))
-        tool_page.parent = self
-        tool_page.initPage(obj)
-        tool_page.onDirtyChanged(self.pageDirtyChanged)
-        tool_page.groove_page = op_page
-        self.featurePages.insert(self.featurePages.index(op_page), tool_page)
-        self._insert_form(tool_page, obj)
+    @property
+    def groove_page(self) -> object:
+        """The op's page (the name the Groove and Plunge grind tests read)."""
+        return self.op_page
 
-    def _insert_form(self, page, obj):
-        """Show ``page`` just before the Groove page, whatever the layout."""
-        op_form = self.groove_page.form
-        if isinstance(self.form, QtGui.QToolBox):
-            at = self.form.indexOf(op_form)
-            reversed_order = at == 0 and self.form.count() > 1
-            index = at + 1 if reversed_order else at
-            self.form.insertItem(index, page.form, page.getTitle(obj))
-            self.form.setCurrentWidget(op_form)
-        else:
-            page.form.setWindowTitle(page.getTitle(obj))
-            at = self.form.index(op_form)
-            reversed_order = at == 0 and len(self.form) > 1
-            self.form.insert(at + 1 if reversed_order else at, page.form)
+    def add_pages(self, obj: object, op_page: object) -> None:
+        """The add-on's pages besides CAM's (none here)."""
 
     def setupUi(self):
         super().setupUi()
@@ -65,10 +49,10 @@ class GrooveTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
 
     @property
     def valid(self) -> bool:
-        return self.groove_page.error is None
+        return self.op_page.error is None
 
     def update_buttons(self) -> None:
-        """OK only while the groove is valid, Apply also only while there is something to apply."""
+        """OK only while the op is valid, Apply also only while there is something to apply."""
         box = getattr(self, "buttonBox", None)
         if box is None:
             return
@@ -84,10 +68,10 @@ class GrooveTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
         self.update_buttons()
 
     def _refuse(self):
-        self.groove_page.update_preview()  # the values the user sees now, not those of 20 ms ago
+        self.op_page.update_preview()  # the values the user sees now, not those of 20 ms ago
         if self.valid:
             return False
-        FreeCAD.Console.PrintWarning("%s: %s\n" % (self.obj.Label, self.groove_page.error))
+        FreeCAD.Console.PrintWarning("%s: %s\n" % (self.obj.Label, self.op_page.error))
         return True
 
     def accept(self, resetEdit=True):
@@ -123,6 +107,35 @@ class GrooveTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
         as before, and no object added (a grooving tool controller)."""
         if unchanged and not self.was_modified and document_looks(self.gui_document.Document) == self.looks_before:
             self.gui_document.Modified = False
+
+
+class GrooveTaskPanel(AddonTaskPanel):
+    """The Groove op's dialog: the tool page (tool_page.py) before the Groove page."""
+
+    def add_pages(self, obj, op_page):
+        """The tool page before the Groove page."""
+        tool_page = ToolPage(obj, obj.Proxy.opFeatures(obj))
+        tool_page.parent = self
+        tool_page.initPage(obj)
+        tool_page.onDirtyChanged(self.pageDirtyChanged)
+        tool_page.groove_page = op_page
+        self.featurePages.insert(self.featurePages.index(op_page), tool_page)
+        self._insert_form(tool_page, obj)
+
+    def _insert_form(self, page, obj):
+        """Show ``page`` just before the Groove page, whatever the layout."""
+        op_form = self.op_page.form
+        if isinstance(self.form, QtGui.QToolBox):
+            at = self.form.indexOf(op_form)
+            reversed_order = at == 0 and self.form.count() > 1
+            index = at + 1 if reversed_order else at
+            self.form.insertItem(index, page.form, page.getTitle(obj))
+            self.form.setCurrentWidget(op_form)
+        else:
+            page.form.setWindowTitle(page.getTitle(obj))
+            at = self.form.index(op_form)
+            reversed_order = at == 0 and len(self.form) > 1
+            self.form.insert(at + 1 if reversed_order else at, page.form)
 
 
 def document_looks(doc: object) -> dict:

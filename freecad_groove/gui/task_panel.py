@@ -39,31 +39,26 @@ from PySide import QtGui
 
 from ..freecad import faces as faces_mod
 from ..freecad import groove_op
-from ..freecad.groove_properties import cycle93_properties
+from ..freecad.groove_properties import GrooveInputError, cycle93_properties
 from ..freecad.model_grooves import not_overridden, read_model_groove
 from . import ICON, PANELS, preview
+from .live_page import LivePage
 from .task_dialog import GrooveTaskPanel
 from .widgets import (
     CONTEXT,
     ERROR_LABEL,
-    WARNING_LABEL,
     QuantityFields,
     ScaledPicture,
     add_error_label,
     add_label,
     child,
-    coalescing_timer,
     connect_changed,
     fill_combo,
     fit_narrow_docks,
     load_form,
-    mark_invalid,
-    mark_warned,
     new_warning_label,
     select_data,
-    show_error,
     show_quantity,
-    show_warnings,
 )
 
 translate = FreeCAD.Qt.translate
@@ -72,7 +67,6 @@ FROM_MODEL_LABEL = "fromModelLabel"  # the line naming the values that came from
 FROM_MODEL_PROPERTY = "fromModel"  # Qt property of a field showing the model's value
 
 DIAGRAM_SIZE = (360, 170)  # px: the groove picture at most (groove_section.svg is 360 x 170)
-PREVIEW_DELAY_MS = 20  # coalesces the signals of one edit into one re-plan
 
 # (widget name, op property): quantity fields (Gui::QuantitySpinBox)
 GROOVE_QUANTITIES = (
@@ -151,8 +145,10 @@ class BaseGeometryPage(FacesPage):
             self.show_kind(obj)
 
 
-class GroovePage(PathOpGui.TaskPanelPage):
-    """The groove's size; owns the live preview and the validity state."""
+class GroovePage(LivePage):
+    """The groove's size; owns the live preview and the validity state (live_page.py)."""
+
+    INTERNAL_ERROR = FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Internal error while planning the groove: {0}")
 
     def getForm(self):
         form = load_form("PageGrooveEdit.ui")
@@ -185,17 +181,9 @@ class GroovePage(PathOpGui.TaskPanelPage):
 
     def initPage(self, obj):
         self.fields = QuantityFields(self.form, GROOVE_QUANTITIES)
-        self.other_pages = []  # set by GrooveTaskPanel: pages whose values and errors share this state
-        self.preview = None
-        self.error = None  # the message while the values make no groove
-        self.invalid = ()  # properties marked
-        self.warnings = []  # the plans' warning texts shown
-        self.warned = ()  # properties the warnings name
+        self.init_live()
         self.plans = []
-        self.replans = 0
         self.model_shown = {}  # {property: value} the fields show from the model
-        self.on_validity_changed = None
-        self._timer = coalescing_timer(PREVIEW_DELAY_MS, self.update_preview)
 
     def getTitle(self, obj):
         return translate(CONTEXT, "Groove")
@@ -346,37 +334,26 @@ class GroovePage(PathOpGui.TaskPanelPage):
         label.setVisible(bool(from_model))
 
     # -- preview and validity ---------------------------------------------------
-    def schedule_preview(self) -> None:
-        """Re-plan once the signals of the current edit are in."""
-        self._timer.start()
-
-    def update_preview(self) -> None:
-        """Re-plan the op from the panel's values; redraw or show the error."""
-        self._timer.stop()
-        obj = self.obj
-        error, invalid, plans = None, (), []
-        try:
-            plans = obj.Proxy.plan_with(obj, self.all_values())
-        except ValueError as bad_input:  # CycleError and GrooveInputError are ValueErrors
-            error, invalid = str(bad_input), groove_op.error_properties(bad_input)
-        except Exception as bug:  # a bug, not bad input: say so in the panel, details in the report view
-            import traceback
-
-            FreeCAD.Console.PrintError(traceback.format_exc())
-            error = translate(CONTEXT, "Internal error while planning the groove: {0}").format(bug)
-        if error is None and not plans:  # OK would make an op that cuts nothing
-            error, invalid = translate(
+    def replan(self) -> list:
+        """The op's plans from the panel's values (live_page.LivePage)."""
+        plans = self.obj.Proxy.plan_with(self.obj, self.all_values())
+        if not plans:  # OK would make an op that cuts nothing
+            raise GrooveInputError(translate(
                 CONTEXT, "Base Geometry: no face picked. Pick a cylinder, cone or plane face of the turned part "
-                "and press Add."), ("Base",)
-        self.replans += 1
-        self.plans = plans
-        self._show_angc(obj, plans)
+                "and press Add."), ("Base",))
+        return plans
+
+    def show_plan(self, plans: object) -> None:
+        """Draw ``plans`` (None while invalid) and show their warnings."""
+        self.plans = plans or []
+        self._show_angc(self.obj, self.plans)
         if self.preview is None:
             view = FreeCADGui.ActiveDocument.ActiveView if FreeCADGui.ActiveDocument else None
             self.preview = preview.Preview(view if hasattr(view, "getSceneGraph") else None)
-        self.preview.show(plans)
-        self.set_error(error, invalid)
-        self.set_warnings(plans)
+        self.preview.show(self.plans)
+        named = [prop for plan in self.plans for warning in plan.warnings
+                 for prop in cycle93_properties(warning.parameter)]
+        self.show_warning_lines([text for plan in self.plans for text in plan.warning_texts], tuple(named))
 
     def _show_angc(self, obj, plans):
         if plans:
@@ -391,48 +368,6 @@ class GroovePage(PathOpGui.TaskPanelPage):
         else:
             text = ""
         self.form.angc.setText(text)
-
-    def set_error(self, message: object, properties: tuple = ()) -> None:
-        """Show ``message`` (None: the values make a groove) on every page and
-        mark the fields of ``properties``."""
-        was_valid = self.error is None
-        self.error = message
-        self.invalid = self._mark_fields(self.invalid, properties if message else (), mark_invalid)
-        mark_invalid(self._base_list(), "Base" in self.invalid)
-        for page in [self] + list(self.other_pages):
-            show_error(child(page.form, ERROR_LABEL), message)
-        if was_valid != (message is None) and self.on_validity_changed is not None:
-            self.on_validity_changed()
-
-    def set_warnings(self, plans: list) -> None:
-        """Show the warnings of ``plans`` (GroovePlan.warning_texts) on every
-        page and mark the fields they name; none while an error stands."""
-        plans = [] if self.error else plans
-        self.warnings = [text for plan in plans for text in plan.warning_texts]
-        named = [prop for plan in plans for warning in plan.warnings for prop in cycle93_properties(warning.parameter)]
-        self.warned = self._mark_fields(self.warned, tuple(dict.fromkeys(named)), mark_warned)
-        for page in [self] + list(self.other_pages):
-            show_warnings(child(page.form, WARNING_LABEL), self.warnings)
-
-    def _mark_fields(self, old: tuple, new: tuple, mark: object) -> tuple:
-        """Unmark the fields of the properties ``old``, mark those of ``new``; returns ``new``."""
-        for prop in old:
-            mark(self.field(prop), False)
-        for prop in new:
-            mark(self.field(prop), True)
-        return tuple(new)
-
-    def _base_list(self):
-        for page in self.other_pages:
-            if isinstance(page, BaseGeometryPage):
-                return page.form.baseList
-        return None
-
-    def cleanupPage(self, obj):
-        self._timer.stop()
-        if self.preview is not None:
-            self.preview.remove()
-            self.preview = None
 
 
 class ViewProvider(PathOpGui.ViewProvider):
