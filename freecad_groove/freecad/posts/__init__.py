@@ -113,14 +113,13 @@ from typing import Any, Iterable, Optional, Sequence, Union
 
 import FreeCAD
 
-from .command_post import command_post_class, report_help
+from .command_post import command_post_class, report_help, script_export
 from .controls import CONTROLS, Control, control_named
 from .errors import PostError
 from .objects import groove_op_of, job_of, label_of
 from .options import Options, make_parser, parse_options, tooltip
 from .pecking import PECKING_PROPERTIES
 from .program import Program
-from .program_file import write_program_file
 from .writer import LatheWriter
 
 __all__ = ["CONTROLS", "PostError", "export", "build", "parse_options", "make_parser", "tooltip", "groove_op_of",
@@ -150,15 +149,11 @@ def export(name: str, objectslist: Optional[Iterable[Any]], filename: Optional[s
     ``--help`` shows the options in the report view and returns None (no
     program, no file), as FreeCAD's own script posts return None when they
     write nothing."""
-    try:
+    def text_of():
         options, parser = parse_options(name, argstring)
         if options.help:
             report_help(name, parser.format_help())
             return None
-        text = build(name, objectslist, options)
-        if filename and filename != "-":
-            write_program_file(filename, text)
-        return text
-    except PostError as e:
-        FreeCAD.Console.PrintError("%s_post: %s\n" % (control_named(name).post, e))
-        raise
+        return build(name, objectslist, options)
+
+    return script_export(control_named(name).post + "_post", text_of, filename)

@@ -19,13 +19,14 @@ argument parsers, which these posts do not take.
 """
 
 import traceback
-from typing import Any, List, Optional, Tuple
+from typing import Any, Callable, List, Optional, Tuple
 
 import FreeCAD
 
 from .controls import control_named
 from .errors import PostError
 from .options import make_parser, parse_options, tooltip
+from .program_file import write_program_file
 
 Sections = List[Tuple[str, str]]
 
@@ -36,18 +37,10 @@ def report_help(name: str, text: str) -> None:
                                  % (control_named(name).post, text.rstrip("\n")))
 
 
-def post_sections(name: str, processor: Any, argstring: Any) -> Optional[Sections]:
-    """[(part name, program)] of the Job's post list, or None after reporting
-    why not (a PostError, --help, anything unexpected) in the report view."""
-    from . import build  # the package's build(); imported here, the package imports this module
-
-    post = control_named(name).post + "_post"
+def reported(post: str, attempt: Callable[[], Optional[Sections]]) -> Optional[Sections]:
+    """attempt(), or None after reporting why not in one line of the report view (``post``: "fanuc_lathe_post")."""
     try:
-        options, parser = parse_options(name, argstring)
-        if options.help:
-            report_help(name, parser.format_help())
-            return None
-        return [(part, build(name, objects, options)) for part, objects in processor._buildPostList()]
+        return attempt()
     except PostError as exc:
         text = str(exc)  # an option error already names the post
         FreeCAD.Console.PrintError("%s (no file written)\n" % (text if text.startswith(post) else post + ": " + text))
@@ -58,35 +51,65 @@ def post_sections(name: str, processor: Any, argstring: Any) -> Optional[Section
     return None
 
 
-def command_post_class(name: str) -> type:
-    """The class FreeCAD's PostProcessorFactory takes from post ``name``'s module."""
+def each_part(processor: Any, program: Callable[[list], Optional[str]]) -> Optional[Sections]:
+    """[(part name, program(objects))] of the Job's post list; None when a program is None (--help)."""
+    sections = [(part, program(objects)) for part, objects in processor._buildPostList()]
+    return None if any(text is None for _part, text in sections) else sections
+
+
+def post_sections(name: str, processor: Any, argstring: Any) -> Optional[Sections]:
+    """[(part name, program)] of the Job's post list, or None after reporting
+    why not (a PostError, --help, anything unexpected) in the report view."""
+    from . import build  # the package's build(); imported here, the package imports this module
+
+    def attempt():
+        options, parser = parse_options(name, argstring)
+        if options.help:
+            report_help(name, parser.format_help())
+            return None
+        return [(part, build(name, objects, options)) for part, objects in processor._buildPostList()]
+
+    return reported(control_named(name).post + "_post", attempt)
+
+
+def post_class(class_name: str, tip: str, tip_args: str, sections: Callable[[Any, str], Optional[Sections]]) -> type:
+    """A class for FreeCAD's PostProcessorFactory named ``class_name``: its export() is
+    ``sections(self, the Job's PostProcessorArgs)`` (which must not raise: see ``reported``)."""
     from Path.Post.Processor import PostProcessor
 
-    class LathePost(PostProcessor):
-        """Post ``name`` for CAM's Post Process command (see the module notes)."""
+    class CommandPost(PostProcessor):
+        """A post of the add-on for CAM's Post Process command (see the module notes)."""
 
         def __init__(self, job: Any, *args: Any, **kwargs: Any) -> None:  # noqa: D107 - no base constructor
             self._job = job
-            self._tooltip = tooltip(name)
-            self._tooltipargs = make_parser(name).format_help()
-            self._units = "Metric"
             self._args = args
             self._kwargs = kwargs
 
-        @property
-        def tooltip(self) -> str:
-            return self._tooltip
-
-        @property
-        def tooltipArgs(self) -> str:  # noqa: N802 - FreeCAD's name
-            return self._tooltipargs
-
-        @property
-        def units(self) -> str:
-            return self._units
+        tooltip = property(lambda self: tip)
+        tooltipArgs = property(lambda self: tip_args)  # noqa: N815 - FreeCAD's name
+        units = property(lambda self: "Metric")
 
         def export(self) -> Optional[Sections]:
-            return post_sections(name, self, getattr(self._job, "PostProcessorArgs", ""))
+            return sections(self, getattr(self._job, "PostProcessorArgs", ""))
 
-    LathePost.__name__ = LathePost.__qualname__ = control_named(name).post.title()
-    return LathePost
+    CommandPost.__name__ = CommandPost.__qualname__ = class_name
+    return CommandPost
+
+
+def command_post_class(name: str) -> type:
+    """The class FreeCAD's PostProcessorFactory takes from lathe post ``name``'s module."""
+    return post_class(control_named(name).post.title(), tooltip(name), make_parser(name).format_help(),
+                      lambda processor, argstring: post_sections(name, processor, argstring))
+
+
+def script_export(post: str, text_of: Callable[[], Optional[str]], filename: Optional[str]) -> Optional[str]:
+    """A script post's export(): text_of() (None: --help, nothing written), written to ``filename`` unless it is
+    "-" or None; a PostError is printed on the report view (``post``: "ab9_grind_post") and raised."""
+    try:
+        text = text_of()
+        if text is not None and filename and filename != "-":
+            write_program_file(filename, text)
+        return text
+    except PostError as e:
+        FreeCAD.Console.PrintError("%s: %s\n" % (post, e))
+        raise

@@ -25,7 +25,6 @@ op's CoolantMode: M8 (flood) or M7 (mist) before it, M9 after it.
 
 import argparse
 import shlex
-import traceback
 from typing import Any, Iterable, List, Optional, Sequence, Union
 
 from ...engine.errors import ProgramError
@@ -33,9 +32,9 @@ from ...engine.grind_program import GrindItem, PlainMoves, WheelChange, grind_pr
 from ...engine.moves import FEED, RAPID, Move
 from ..plunge_grind_op import ObjectPlungeGrind, op_error
 from ..units import SECONDS_PER_MINUTE
+from .command_post import each_part, post_class, reported, script_export
 from .errors import PostError
 from .objects import is_fixture_block, is_job, is_tool_controller, job_of, label_of
-from .program_file import write_program_file
 
 AXES = ("XZY", "YZX", "XYZ", "YXZ", "ZXY", "ZYX")
 DEFAULT_AXES = "XZY"
@@ -171,51 +170,14 @@ def _program(name: str, objects: Iterable[Any], argstring: Union[None, str, Sequ
 def grind_export(name: str, objectslist: Optional[Iterable[Any]], filename: Optional[str],
                  argstring: Union[None, str, Sequence[str]]) -> Optional[str]:
     """A script post's export() for grinder post ``name`` (see the module notes); PostError on any problem."""
-    import FreeCAD
-
-    try:
-        text = _program(name, objectslist or [], argstring)
-        if text is not None and filename and filename != "-":
-            write_program_file(filename, text)
-        return text
-    except PostError as e:
-        FreeCAD.Console.PrintError("%s_post: %s\n" % (name, e))
-        raise
+    return script_export(name + "_post", lambda: _program(name, objectslist or [], argstring), filename)
 
 
 def grind_command_post_class(name: str) -> type:
-    """The class FreeCAD's PostProcessorFactory takes from grinder post ``name``'s module (as
-    command_post.py's for the lathe posts): its export() reports a failed post in one line and returns None."""
-    import FreeCAD
-    from Path.Post.Processor import PostProcessor
+    """The class FreeCAD's PostProcessorFactory takes from grinder post ``name``'s module (command_post.py):
+    its export() reports a failed post in one line and returns None."""
+    def sections(processor: Any, argstring: str) -> Optional[list]:
+        return reported(name + "_post", lambda: each_part(processor, lambda objects: _program(name, objects,
+                                                                                              argstring)))
 
-    class GrindPost(PostProcessor):
-        """Grinder post ``name`` for CAM's Post Process command."""
-
-        def __init__(self, job: Any, *args: Any, **kwargs: Any) -> None:  # noqa: D107 - no base constructor
-            self._job = job
-            self._tooltip = GRIND_POSTS[name][2]
-            self._tooltipargs = make_grind_parser(name).format_help()
-            self._units = "Metric"
-            self._args = args
-            self._kwargs = kwargs
-
-        tooltip = property(lambda self: self._tooltip)
-        tooltipArgs = property(lambda self: self._tooltipargs)  # noqa: N815 - FreeCAD's name
-        units = property(lambda self: self._units)
-
-        def export(self) -> Optional[list]:
-            argstring = getattr(self._job, "PostProcessorArgs", "")
-            try:
-                sections = [(part, _program(name, objects, argstring)) for part, objects in self._buildPostList()]
-                return None if any(text is None for _part, text in sections) else sections
-            except PostError as e:
-                FreeCAD.Console.PrintError("%s_post: %s (no file written)\n" % (name, e))
-            except Exception as e:  # noqa: BLE001 - a user action must never end in a traceback
-                FreeCAD.Console.PrintError("%s_post: could not post the Job: %s: %s (no file written; please "
-                                           "report it)\n" % (name, type(e).__name__, e))
-                FreeCAD.Console.PrintLog(traceback.format_exc())
-            return None
-
-    GrindPost.__name__ = GrindPost.__qualname__ = name.title()
-    return GrindPost
+    return post_class(name.title(), GRIND_POSTS[name][2], make_grind_parser(name).format_help(), sections)

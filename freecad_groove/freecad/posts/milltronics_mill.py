@@ -32,16 +32,15 @@ fixtures write nothing: the work offset is set on the machine. ``M5``,
 one line, no file written.
 """
 
-import traceback
 from typing import Any, Iterable, List, Optional, Sequence, Union
 
 from ...engine.numbers import MM_PER_INCH, format_decimal
 from ..units import SECONDS_PER_MINUTE
+from .command_post import each_part, post_class, reported, script_export
 from .errors import PostError
 from .milltronics_ops import DECIMALS, NativeOp, recognise
 from .objects import is_fixture_block, is_job, is_tool_controller, job_of, label_of
 from .options import PostParser, split_arguments
-from .program_file import write_program_file
 
 POST = "milltronics_mill"
 TITLE = "Milltronics mill (Face and Pocket Shape ops as the G33/G34 autoroutines, other ops as moves)"
@@ -176,50 +175,13 @@ def _program(objects: Iterable[Any], argstring: Union[None, str, Sequence[str]])
 def export(objectslist: Optional[Iterable[Any]], filename: Optional[str],
            argstring: Union[None, str, Sequence[str]]) -> Optional[str]:
     """A script post's export(): the program, written to ``filename`` unless "-"; PostError on any problem."""
-    import FreeCAD
-
-    try:
-        text = _program(objectslist or [], argstring)
-        if text is not None and filename and filename != "-":
-            write_program_file(filename, text)
-        return text
-    except PostError as e:
-        FreeCAD.Console.PrintError("%s_post: %s\n" % (POST, e))
-        raise
+    return script_export(POST + "_post", lambda: _program(objectslist or [], argstring), filename)
 
 
 def command_post_class() -> type:
     """The class FreeCAD's PostProcessorFactory takes from the post's module (see command_post.py):
     its export() reports a failed post in one line and returns None."""
-    import FreeCAD
-    from Path.Post.Processor import PostProcessor
+    def sections(processor: Any, argstring: str) -> Optional[list]:
+        return reported(POST + "_post", lambda: each_part(processor, lambda objects: _program(objects, argstring)))
 
-    class MilltronicsPost(PostProcessor):
-        """The milltronics_mill post for CAM's Post Process command."""
-
-        def __init__(self, job: Any, *args: Any, **kwargs: Any) -> None:  # noqa: D107 - no base constructor
-            self._job = job
-            self._args = args
-            self._kwargs = kwargs
-
-        tooltip = property(lambda self: TITLE)
-        tooltipArgs = property(lambda self: make_parser().format_help())  # noqa: N815 - FreeCAD's name
-        units = property(lambda self: "Metric")
-
-        def export(self) -> Optional[list]:
-            argstring = getattr(self._job, "PostProcessorArgs", "")
-            try:
-                sections = [(part, _program(objects, argstring)) for part, objects in self._buildPostList()]
-                return None if any(text is None for _part, text in sections) else sections
-            except PostError as e:
-                text = str(e)
-                FreeCAD.Console.PrintError("%s (no file written)\n"
-                                           % (text if text.startswith(POST) else "%s_post: %s" % (POST, text)))
-            except Exception as e:  # noqa: BLE001 - a user action must never end in a traceback
-                FreeCAD.Console.PrintError("%s_post: could not post the Job: %s: %s (no file written; please "
-                                           "report it)\n" % (POST, type(e).__name__, e))
-                FreeCAD.Console.PrintLog(traceback.format_exc())
-            return None
-
-    MilltronicsPost.__name__ = MilltronicsPost.__qualname__ = POST.title()
-    return MilltronicsPost
+    return post_class(POST.title(), TITLE, make_parser().format_help(), sections)
