@@ -12,3 +12,14 @@ def closing():
     yield docs
     for doc in docs:
         FreeCAD.closeDocument(doc.Name)
+
+
+@pytest.fixture
+def console(monkeypatch):
+    """FreeCAD's report view: {"PrintMessage": [...], "PrintError": [...]} from now on."""
+    import FreeCAD
+
+    seen = {"PrintMessage": [], "PrintError": []}
+    for kind, lines in seen.items():
+        monkeypatch.setattr(FreeCAD.Console, kind, lines.append, raising=False)
+    return seen

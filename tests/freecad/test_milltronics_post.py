@@ -291,15 +291,6 @@ def test_a_path_command_the_post_cannot_write_is_refused_naming_the_op(shop, tmp
     assert not target.exists()
 
 
-@pytest.fixture
-def console(monkeypatch):
-    """FreeCAD's report view: {"PrintMessage": [...], "PrintError": [...]} from now on."""
-    seen = {"PrintMessage": [], "PrintError": []}
-    for kind, lines in seen.items():
-        monkeypatch.setattr(FreeCAD.Console, kind, lines.append, raising=False)
-    return seen
-
-
 def test_cam_post_process_writes_the_program_or_reports_a_failed_post_in_one_line(shop, console):
     from Path.Post.Processor import PostProcessorFactory
 

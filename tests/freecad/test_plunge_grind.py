@@ -363,15 +363,6 @@ def test_a_wheel_without_size_is_refused_in_one_line(shop):
         wheel_toolbit.make_wheel_bit(doc, 0, 200)
 
 
-@pytest.fixture
-def console(monkeypatch):
-    """FreeCAD's report view: {"PrintMessage": [...], "PrintError": [...]} from now on."""
-    seen = {"PrintMessage": [], "PrintError": []}
-    for kind, lines in seen.items():
-        monkeypatch.setattr(FreeCAD.Console, kind, lines.append, raising=False)
-    return seen
-
-
 def test_cam_post_process_writes_the_program_or_reports_a_failed_post_in_one_line(shop, console):
     from Path.Post.Processor import PostProcessorFactory
 

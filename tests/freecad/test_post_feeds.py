@@ -40,15 +40,6 @@ def f_words(text, name):
     return {float(f) for line in code_lines(text, name) for f in re.findall(r"\bF(-?[\d.]+)", line)}
 
 
-@pytest.fixture
-def console(monkeypatch):
-    """FreeCAD's report view: {"PrintMessage": [...], "PrintError": [...]} from now on."""
-    seen = {"PrintMessage": [], "PrintError": []}
-    for kind, lines in seen.items():
-        monkeypatch.setattr(FreeCAD.Console, kind, lines.append, raising=False)
-    return seen
-
-
 def new_job_tool_controller(tc):
     """The tool controller as a new Job makes it: no feed, no spindle speed."""
     tc.HorizFeed = tc.VertFeed = 0
