@@ -16,6 +16,11 @@ The class derives from FreeCAD's ``Path.Post.Processor.PostProcessor`` for its
 ``_buildPostList`` (the Job's output order, split output, fixtures), but not
 for its argument handling: FreeCAD 1.1's constructor builds its own shared
 argument parsers, which these posts do not take.
+
+Every post family builds its class with ``post_class`` (the lathe posts
+through ``command_post_class``, the grinder posts in grind.py, the Milltronics
+post in milltronics_mill.py), reports a failed post with ``reported``, and
+writes a script post's file with ``script_export``.
 """
 
 import traceback
