@@ -56,8 +56,9 @@ def test_the_example_program_runs_in_linuxcnc_and_every_move_stays_in_its_rectan
     proc = subprocess.run([sys.executable, "-m", "freecad_groove", "expand", str(EXAMPLE), "--dialect", "milltronics",
                            "--tool-diameter", "0.25", "--to", "linuxcnc"], cwd=ROOT, capture_output=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
-    canon = run_rs274(proc.stdout.decode(), xyz=True)
+    canon = run_rs274(proc.stdout.decode(), xyz=True, tool_table=[1])  # T1 M6, G43 H1: tool 1 in the table
     inch = [c[:4] for c in canon]
+    assert inch[0] == ("G0", 0.0, 0.0, pytest.approx(4.0))  # the G32 before any X Y: Z alone
     cuts = [c for c in inch if c[3] < -1e-9]
     assert min(c[3] for c in cuts) == pytest.approx(-0.5)
     for _, x, y, _ in cuts:  # the facing (centre X1 Y2, 1 x 3) or the pocket (centre X4 Y2, 2 x 1.5)
