@@ -310,3 +310,12 @@ def test_after_a_tool_change_the_position_is_unknown():
     with pytest.raises(ProgramError, match="G33 needs its start point: program an absolute X, Y and Z") as raised:
         translate_program(text, "milltronics", QUARTER, target="linuxcnc")
     assert raised.value.line == 8
+
+
+def test_a_tool_change_keeps_the_diameter_register_in_force():
+    # T selects the tool, D the diameter register: without a D after T2 M6 the G33 still cuts with D1's 0.25
+    text = ("G20 G90\nD1\nT2 M6\nG0 X1 Y2 Z1.\nF20\nP151=1\nP152=3\nP155=.1\nG33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5\n"
+            "M30\n")
+    tools = read_mill_tool_table(TWO_TOOLS, "tools.tbl")
+    lines = translate_program(text, "milltronics", Settings(), target="linuxcnc", tools=tools).splitlines()
+    assert "(G33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5: tool diameter 0.25, D1 of tools.tbl)" in lines
