@@ -56,8 +56,9 @@ def test_the_example_program_runs_in_linuxcnc_and_every_move_stays_in_its_rectan
     proc = subprocess.run([sys.executable, "-m", "freecad_groove", "expand", str(EXAMPLE), "--dialect", "milltronics",
                            "--tool-diameter", "0.25", "--to", "linuxcnc"], cwd=ROOT, capture_output=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
-    canon = run_rs274(proc.stdout.decode(), xyz=True)
+    canon = run_rs274(proc.stdout.decode(), xyz=True, tool_table=[1])  # T1 M6, G43 H1: tool 1 in the table
     inch = [c[:4] for c in canon]
+    assert inch[0] == ("G0", 0.0, 0.0, pytest.approx(4.0))  # the G32 before any X Y: Z alone
     cuts = [c for c in inch if c[3] < -1e-9]
     assert min(c[3] for c in cuts) == pytest.approx(-0.5)
     for _, x, y, _ in cuts:  # the facing (centre X1 Y2, 1 x 3) or the pocket (centre X4 Y2, 2 x 1.5)
@@ -104,10 +105,13 @@ def test_a_metric_pocket_program():
     ("G0 X0 Y0 Z1.\nG41 X1\n", "2: G41: only a cycle's block"),
     ("G0 X0 Y0 Z1.\nP151=1 X2\n", "2: P151=1: a parameter assignment stands alone in its block"),
     ("G0 X0 Y0 Z1.\nP149=1\n", r"2: P149=1: not a parameter of the Milltronics cycles \(P150, P151"),
-    ("G0 X0 Y0 Z1.\nG43 H1\n", "2: G43: tool length offset"),
-    ("T1\n", r"1: T1: tool changes and length offsets \(T, H\) in a Milltronics program are not translated: "
-              r"G33/G34 take the end mill's diameter from D<n> and the tool table, or --tool-diameter"),
-    ("S1000 M3 H1\n", r"1: H1: tool changes and length offsets"),
+    ("G0 X0 Y0 Z1.\nG43\n", "2: G43 without H: program the tool length offset as G43 H<n>"),
+    ("T1\n", "1: T1 without M6: a tool selected for a later change is not translated; program the tool change "
+              "as T1 M6 in one block"),
+    ("M6\n", "1: M6 without T: program the tool change as T<n> M6 in one block"),
+    ("T0 M6\n", "1: T0: the tool number must be 1 or more"),
+    ("S1000 M3 H1\n", r"1: H1 without G43: program the tool length offset as G43 H<n>"),
+    ("G49 H1\n", r"1: H1 without G43"),
     ("D1.5\n", "1: D1.5 must be a whole number"),
     ("G0 X0 Y0 Z1.\nF20\nP151=1\nP152=1\nP155=.1\nG33 R.1 Z-.1 V-.1\n",
      "6: G33 tool diameter: is not known: give the end mill's diameter"),
@@ -236,3 +240,82 @@ def test_the_command_line_reads_a_mill_tool_table_for_a_milltronics_program(tmp_
                            "--tool-table", str(table)], cwd=ROOT, capture_output=True, timeout=120)
     assert proc.returncode != 0 and proc.stdout == b""
     assert proc.stderr.decode().strip() == "%s:1: 3 fields: a line holds D and diameter (e.g. '1 0.25')" % table
+
+
+# the milltronics_mill post's form of a tool change (the seed's D1 G43 H1), with the G32 before it
+TOOL_CHANGES = """G20 G90
+G32
+T1 M6
+S3000 M3
+D1 G43 H1
+G0 X1 Y2 Z1.
+F20
+P151=1
+P152=3
+P155=.1
+G33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5
+G31
+G32
+T2 M6
+S2000 M3
+D2 G43 H2
+G0 X3 Y2 Z1.
+G49
+M30
+"""
+TWO_TOOLS = "1 0.25\n2 0.5\n"
+
+
+def _tool_lines(target):
+    """The translation around the G33's moves: up to its call, and from the G31 after it."""
+    tools = read_mill_tool_table(TWO_TOOLS, "tools.tbl")
+    lines = translate_program(TOOL_CHANGES, "milltronics", Settings(), target=target, tools=tools).splitlines()
+    call = next(at for at, line in enumerate(lines) if line.startswith("(G33"))
+    return lines[:call], lines[lines.index("(G31: Z0.1, the last R)"):]
+
+
+def test_tool_changes_and_length_offsets_are_written_for_linuxcnc_and_rs274_runs_them():
+    head, tail = _tool_lines("linuxcnc")
+    assert head[2:] == [
+        "G20", "(G32: Z4., setting milltronics_tool_change_inch)", "G0 Z4.",  # at the start: Z alone
+        "T1 M6", "S3000 M3", "G43 H1 (D1: the diameter register of the G33/G34 that follow)", "G0 X1. Y2. Z1.",
+        "F20.", "(P151=1: for the G33/G34 that follow)", "(P152=3: for the G33/G34 that follow)",
+        "(P155=.1: for the G33/G34 that follow)"]
+    assert tail == [
+        "(G31: Z0.1, the last R)", "(G32: Z4., setting milltronics_tool_change_inch)", "Z4.",
+        "T2 M6", "S2000 M3", "G43 H2 (D2: the diameter register of the G33/G34 that follow)", "G0 X3. Y2. Z1.",
+        "G49", "M2"]
+    require_rs274()
+    tools = read_mill_tool_table(TWO_TOOLS, "tools.tbl")
+    text = translate_program(TOOL_CHANGES, "milltronics", Settings(), target="linuxcnc", tools=tools)
+    canon = run_rs274(text, xyz=True, tool_table=[1, 2])
+    assert canon[0][0] == "G0" and canon[0][3] == pytest.approx(4.0)  # the G32 before any X Y
+    assert canon[-2][1:4] == pytest.approx(canon[-3][1:3] + (4.0,))  # G32 after the cut: Z alone, X Y held
+    assert canon[-1][1:4] == pytest.approx((3.0, 2.0, 1.0))
+
+
+def test_tool_changes_and_length_offsets_are_written_for_fanuc():
+    head, tail = _tool_lines("fanuc")
+    assert head[4:11] == [
+        "G20", "(G32: Z4., setting milltronics_tool_change_inch)", "G00 Z4.",
+        "T01 M06", "S3000 M03", "G43 H1 (D1: the diameter register of the G33/G34 that follow)", "G00 X1. Y2. Z1."]
+    assert tail == [
+        "(G31: Z0.1, the last R)", "(G32: Z4., setting milltronics_tool_change_inch)", "Z4.",
+        "T02 M06", "S2000 M03", "G43 H2 (D2: the diameter register of the G33/G34 that follow)", "G00 X3. Y2. Z1.",
+        "G49", "M30", "%"]
+
+
+def test_after_a_tool_change_the_position_is_unknown():
+    text = "G20 G90\nG0 X0 Y0 Z1.\nT1 M6\nF20\nP151=1\nP152=1\nP155=.1\nG33 R.1 Z-.1 V-.1\nM30\n"
+    with pytest.raises(ProgramError, match="G33 needs its start point: program an absolute X, Y and Z") as raised:
+        translate_program(text, "milltronics", QUARTER, target="linuxcnc")
+    assert raised.value.line == 8
+
+
+def test_a_tool_change_keeps_the_diameter_register_in_force():
+    # T selects the tool, D the diameter register: without a D after T2 M6 the G33 still cuts with D1's 0.25
+    text = ("G20 G90\nD1\nT2 M6\nG0 X1 Y2 Z1.\nF20\nP151=1\nP152=3\nP155=.1\nG33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5\n"
+            "M30\n")
+    tools = read_mill_tool_table(TWO_TOOLS, "tools.tbl")
+    lines = translate_program(text, "milltronics", Settings(), target="linuxcnc", tools=tools).splitlines()
+    assert "(G33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5: tool diameter 0.25, D1 of tools.tbl)" in lines

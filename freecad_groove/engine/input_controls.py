@@ -46,6 +46,7 @@ CYCLE_RETURN = "cycle option: return"
 CYCLE_COMPENSATION = "cycle option: compensation"
 CYCLE_OPTIONS = (CYCLE_RETURN, CYCLE_COMPENSATION)
 REFUSED = "refused"
+LENGTH_OFFSET = "tool length offset"  # Milltronics G43 H<n> (True) / G49 (False)
 MODE_GROUPS = (UNITS, DISTANCE, FEED_MODE, DIAMETER)  # may share a block with a cycle
 
 
@@ -156,7 +157,9 @@ DWELL_POINT_SECONDS = "seconds with a decimal point, milliseconds without"
 # how the tool is selected (InputControl.tool_words)
 TOOL_AND_EDGE = "T<tool> D<cutting edge>"
 TOOL_AND_OFFSET = "T<tool><2-digit offset>"
-DIAMETER_REGISTER = "D<diameter register>"  # Milltronics: D selects the end mill's diameter (mill_tool_table)
+# Milltronics: T<n> M6 changes the tool, G43 H<n> / G49 the length offset, D selects the end mill's diameter
+# (mill_tool_table)
+DIAMETER_REGISTER = "T<tool> M6, D<diameter register>, G43 H<length offset>"
 
 
 @dataclass(frozen=True)
@@ -233,16 +236,12 @@ _MILLTRONICS_CODES = {
     "17": GCode(REFUSED, "plane selection is not translated: the output is in the XY plane (G17) already"),
     "18": GCode(REFUSED, "plane selection: only the XY plane (G17) is translated"),
     "19": GCode(REFUSED, "plane selection: only the XY plane (G17) is translated"),
-    "43": GCode(REFUSED, "tool length offset (G43 H) is not translated: the expanded moves are in the program's "
-                "coordinates; apply the offset on the target machine"),
+    "43": GCode(LENGTH_OFFSET, True),
+    "49": GCode(LENGTH_OFFSET, False),
     "99": GCode(CYCLE_RETURN, "G99"),
     "41": GCode(CYCLE_COMPENSATION, "G41"),
     "42": GCode(CYCLE_COMPENSATION, "G42"),
 }
-
-_MILLTRONICS_TOOLS = ("tool changes and length offsets (T, H) in a Milltronics program are not translated: G33/G34 "
-                      "take the end mill's diameter from D<n> and the tool table, or --tool-diameter; set the "
-                      "offsets on the target machine")
 
 _FANUC = InputControl(
     name="fanuc",
@@ -298,10 +297,10 @@ INPUT_CONTROLS: Dict[str, InputControl] = {
             name="milltronics",
             maker="Milltronics",
             help="Milltronics mill (G33 facing and G34 rectangular pocket autoroutines with P151=.. assignment "
-            "blocks, G31/G32 Z to clearance / tool change; X/Y/Z, feed per minute; G20/G21, G90/G91)",
+            "blocks, G31/G32 Z to clearance / tool change; T<n> M6, G43 H<n>/G49, D<n>; X/Y/Z, feed per minute; "
+            "G20/G21, G90/G91)",
             g_codes=_MILLTRONICS_CODES,
-            plain_letters=frozenset("XYZFSMGD"),
-            letter_refusals={letter: _MILLTRONICS_TOOLS for letter in "TH"},
+            plain_letters=frozenset("XYZFSMGDTH"),
             tool_words=DIAMETER_REGISTER,
             decimal_point=False,  # the seed writes X1 Y2 F20 for 1", 2", 20 in/min
             dwell_unsupported="G04: the Milltronics dwell word is not documented here; not translated",

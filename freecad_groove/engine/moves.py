@@ -22,7 +22,8 @@ class Move(NamedTuple):
 
     kind  RAPID, FEED, DWELL or DRESS (a dress subprogram call, at the
           position held; each target writes its own subprogram call).
-    x, z  target (radius, absolute); for DWELL the position held.
+    x, z  target (radius, absolute); for DWELL the position held. x None: X
+          (and Y) not moved, a mill's Z-only rapid (Milltronics G31/G32).
     f     feed for FEED moves, None = the feed already in force.
     p     dwell time in seconds for DWELL, the program number for DRESS, else 0.
     y     target Y of a cycle on a machine with a Y axis (mill-style
@@ -35,7 +36,7 @@ class Move(NamedTuple):
     """
 
     kind: str
-    x: float
+    x: Optional[float]
     z: float
     f: Optional[float] = None
     p: float = 0.0

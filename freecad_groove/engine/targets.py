@@ -392,10 +392,11 @@ class Writer:
         c = move[6] if len(move) > 6 else None
         scale = 1.0 if self.spec.mill else 2.0
         if not all(-MAX_WORD < value < MAX_WORD for value in (x, z, y, c) if value is not None):
-            raise ProgramError("move to X%r Z%r cannot be written (not a number below %g)" % (x * scale, z,
-                                                                                              MAX_WORD))
+            raise ProgramError("move to X%r Z%r cannot be written (not a number below %g)" % (
+                x if x is None else x * scale, z, MAX_WORD))
         words = []
-        for letter, value, name in (("X", x * scale, "x_text"), ("Y", y, "y_text"), ("Z", z, "z_text"),
+        x_value = None if x is None else x * scale  # None: a Z-only move (Move's x)
+        for letter, value, name in (("X", x_value, "x_text"), ("Y", y, "y_text"), ("Z", z, "z_text"),
                                     ("C", c, "c_text")):
             if value is None:
                 continue

@@ -73,7 +73,7 @@ class CycleTranslation(TranslatorBase):
             model.validate(settings)
         except CycleError as exc:
             self._fail(exc.message)
-        self._check_cycle_start(call.name)
+        self._check_cycle_start(call.name, getattr(entry.cycle_class, "Z_ONLY", False))
         start = self.state.machine_state()
         memory_key = getattr(entry.cycle_class, "MEMORY", "")
         try:
@@ -271,9 +271,13 @@ class CycleTranslation(TranslatorBase):
 
     # -- state before and after ------------------------------------------------------------
 
-    def _check_cycle_start(self, name: str) -> None:
-        """A cycle needs a known start point, feed mode and (per revolution) spindle."""
+    def _check_cycle_start(self, name: str, z_only: bool = False) -> None:
+        """A cycle needs a known start point, feed mode and (per revolution) spindle; a cycle that is one
+        rapid of Z alone (``Z_ONLY``: Milltronics G31/G32) needs only the units its height is in."""
         state = self.state
+        if z_only:
+            self._not_ambiguous("metric", why=name)
+            return
         if state.x is None or state.z is None or (self.control.mill and state.y is None):
             self._fail("%s needs its start point: program an absolute %s before the call"
                        % (name, "X, Y and Z" if self.control.mill else "X and Z"))
@@ -291,7 +295,9 @@ class CycleTranslation(TranslatorBase):
         state = self.state
         feeds = [move.f for move in moves if move.f is not None]
         if moves:
-            state.x, state.z = float(moves[-1].x), float(moves[-1].z)
+            state.z = float(moves[-1].z)
+            if moves[-1].x is not None:  # None: a Z-only move, X (and Y) held
+                state.x = float(moves[-1].x)
             if moves[-1].c is not None:
                 state.c = float(moves[-1].c)
                 self._defined.add("c")

@@ -10,6 +10,7 @@ from .input_controls import (
     DWELL_MILLISECONDS,
     DWELL_POINT_SECONDS,
     DWELL_SECONDS,
+    LENGTH_OFFSET,
     M_GROUPS,
     SPEED_LIMIT,
     TOOL_AND_EDGE,
@@ -72,7 +73,8 @@ class MachineTranslation(TranslatorBase):
     def _tool(self, block: Block, output: List[str]) -> None:
         """T (and Siemens D): a tool change, written as T M6 G43 (Fanuc output: T0101)."""
         if self.control.tool_words == DIAMETER_REGISTER:
-            return  # D is read by _diameter_register
+            self._mill_tool_change(block, output)  # D is read by _diameter_register
+            return
         tool_word = block.get("T")
         edge_word = block.get("D")
         if tool_word is None and edge_word is None:
@@ -105,6 +107,44 @@ class MachineTranslation(TranslatorBase):
         else:
             output.extend(["G43", "H%d" % selection.offset])
 
+    def _mill_tool_change(self, block: Block, output: List[str]) -> None:
+        """Milltronics ``T5 M6``: the change, written ``T5 M6`` (Fanuc ``T05 M06``); afterwards the position
+        and the spindle (M6 stops it) are unknown. T without M6 and M6 without T are refused."""
+        tool_word = block.get("T")
+        m6 = 6 in [int(word.value) for word in block.all("M")]
+        if tool_word is None and not m6:
+            return
+        if tool_word is None:
+            self._fail("M6 without T: program the tool change as T<n> M6 in one block")
+        if not m6:
+            self._fail("T%s without M6: a tool selected for a later change is not translated; program the tool "
+                       "change as T%s M6 in one block" % (tool_word.text, tool_word.text))
+        tool = self._integer(tool_word)
+        if tool < 1:
+            self._fail("T%s: the tool number must be 1 or more" % tool_word.text)
+        output.extend(["T%02d" % tool, "M06"] if self.fanuc_output else ["T%d" % tool, "M6"])
+        state = self.state
+        state.x = state.y = state.z = None
+        state.spindle_dir = None
+        self._defined |= {"x", "y", "z", "spindle_dir"}
+
+    def _length_offset(self, block: Block, groups: Groups, output: List[str]) -> None:
+        """Milltronics ``G43 H1`` written as it is (both targets), ``G49`` too; H without G43 is refused."""
+        height_word = block.get("H")
+        on = groups[LENGTH_OFFSET].value if LENGTH_OFFSET in groups else None
+        if height_word is not None and on is not True:
+            self._fail("H%s without G43: program the tool length offset as G43 H<n>" % height_word.text)
+        if on is None:
+            return
+        if not on:
+            output.append("G49")
+            return
+        if height_word is None:
+            self._fail("G43 without H: program the tool length offset as G43 H<n>")
+        output.extend(["G43", "H%d" % self._integer(height_word)])
+        self.state.z = None  # the offset moves the Z the program's words mean
+        self._defined.add("z")
+
     def _tool_and_edge(self, tool_word: Optional[Word], edge_word: Optional[Word]) -> ToolSelection:
         """Siemens ``T5 D1``; ``T5`` alone selects D1; D0 cancels the offset."""
         tool = offset = None
@@ -129,7 +169,7 @@ class MachineTranslation(TranslatorBase):
     def _restart_spindle(self, block: Block, output: List[str]) -> None:
         """LinuxCNC's M6 stops the spindle; a lathe turret does not: start it again."""
         state = self.state
-        if "M6" not in output or state.spindle_dir not in (3, 4):
+        if self.control.mill or "M6" not in output or state.spindle_dir not in (3, 4):
             return
         if set(_SPINDLE_CODES) & {int(word.value) for word in block.all("M")}:
             return  # the block starts or stops it itself
@@ -226,6 +266,8 @@ class MachineTranslation(TranslatorBase):
         in_group: Dict[str, int] = {}
         for word in block.all("M"):
             code = self._integer(word)
+            if code == 6 and self.control.tool_words == DIAMETER_REGISTER:
+                continue  # written by _mill_tool_change
             group = M_GROUPS.get(code)
             if group is None:
                 self._fail("M%s is not supported (machine-specific M codes are not translated)" % word.text)

@@ -70,7 +70,8 @@ Choices where the manuals are silent (each has a test)
   outside CYCLE93. Fanuc/Haas/AB ``T0512`` -> tool 5, offset 12 ->
   ``T5 M6 G43 H12`` (``G43`` when the offset is the tool number, ``G49`` for
   offset 00); T with fewer than three digits is refused. Fanuc output writes
-  ``T0512``.
+  ``T0512``. Milltronics ``T5 M6`` (one block) -> ``T5 M6`` (Fanuc ``T05 M06``),
+  ``G43 H5`` and ``G49`` as they are, ``D5`` the diameter register of G33/G34.
 * The blade of a cycle that needs one (NEEDS_BLADE: CYCLE93): the tool
   table's entry (``tools``) for the tool in force (the last T: 5 for Siemens
   ``T5 D1`` and Fanuc-style ``T0512``); else ``settings.tool`` (the blade of
@@ -309,6 +310,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
             output.append("G40")
         feed_word = self._feed_word(block)
         self._tool(block, output)  # tool, then spindle speed / CSS / limit
+        self._length_offset(block, groups, output)
         self._restart_spindle(block, output)
         self._spindle(block, groups, output, early)
         stops_and_ends = self._m_codes(block, output)  # written after the motion

@@ -229,36 +229,24 @@ def test_ops_the_cycles_cannot_reproduce_are_written_as_moves_with_the_reason(sh
 TABLE = MillToolTable([(1, TOOL)], "the Job's tools")
 
 
-def _readable(lines):
-    """The program as the engine's reader takes it: it reads D (the diameter of G33/G34 from TABLE), not the tool
-    change (one end mill per program), the length offset (set on the machine) nor a G32 before any X Y (the first
-    is at the start)."""
-    out = []
-    for line in lines:
-        if line == "D1 G43 H1":
-            out.append("D1")
-        elif line not in ("G32", "T1 M6"):
-            out.append(line)
-    return out
-
-
 def test_expand_cycles_writes_the_ops_paths_which_the_engine_reads_back(shop):
     doc, job, face, pocket, model = shop
     text = post_module().export([job], "-", "--expand-cycles")
     lines = text.splitlines()
     assert "(Face written as moves: --expand-cycles)" in lines and "(Pocket written as moves: --expand-cycles)" in lines
     assert not any(line.startswith(("G33", "G34", "P15")) for line in lines)
-    body = _readable(lines)
-    out = translate_program("\n".join(body), "milltronics", Settings(), target="linuxcnc", tools=TABLE)
-    feeds = [line for line in out.splitlines() if line.startswith("G1")]
+    out = translate_program(text, "milltronics", Settings(), target="linuxcnc", tools=TABLE).splitlines()
+    feeds = [line for line in out if line.startswith("G1")]
     assert len(feeds) > 10
+    # read back as written: the G32 at the start (Z alone), the tool change and the length offset
+    assert out[4:8] == ["(G32: Z101.6, setting milltronics_tool_change_inch)", "G0 Z101.6", "T1 M6", "S3000 M3"]
+    assert "G43 H1 (D1: the diameter register of the G33/G34 that follow)" in out
 
 
 def test_native_program_read_back_by_the_engine_is_the_cycles_expansion(shop):
     doc, job, face, pocket, model = shop
-    lines = post_module().export([job], "-", "").splitlines()
-    body = _readable(lines)
-    out = translate_program("\n".join(body), "milltronics", Settings(), target="linuxcnc", tools=TABLE)
+    text = post_module().export([job], "-", "")
+    out = translate_program(text, "milltronics", Settings(), target="linuxcnc", tools=TABLE)
     out_lines = out.splitlines()
     for call in (FACING, POCKET):
         assert "(%s: tool diameter 5.0, D1 of the Job's tools)" % call.emit().split("\n")[-1] in out_lines

@@ -496,6 +496,7 @@ class G31(MilltronicsCycle):
     OPTIONS: ClassVar[tuple] = ()
     PARAMETERS: ClassVar[tuple] = ()  # reads none (the P parameters pass through its memory unchanged)
     WORD_HELP: ClassVar[tuple] = ()
+    Z_ONLY: ClassVar[bool] = True  # moves Z alone: the translator needs no X Y before it
 
     def height(self, state: MachineState, settings: Settings) -> float:
         """The Z the block goes to, in the program's units."""
@@ -509,11 +510,9 @@ class G31(MilltronicsCycle):
         return "Z%s, %s" % (format_number(self.height(state, settings)), source)
 
     def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
-        """One rapid of Z; X and Y held."""
-        if state.x is None or state.y is None:
-            raise CycleError("X", None, "the start position is not known: program X and Y before %s" % self.NAME,
-                             cycle=self.NAME)
-        return [Move(RAPID, state.x, self.height(state, settings), None, 0.0, state.y)]
+        """One rapid of Z alone (X and Y None: held, and not needed, so the call may come before any X Y, as
+        the G32 at the start of a program does)."""
+        return [Move(RAPID, None, self.height(state, settings), None, 0.0, None)]
 
 
 @register
