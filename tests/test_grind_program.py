@@ -124,3 +124,11 @@ def test_rs274_runs_the_linuxcnc_program_with_its_tool_change_and_spindle():
 def test_wheels_the_control_cannot_take_are_refused_naming_the_tool_controller(wheel, target, message):
     with pytest.raises(ProgramError, match=message):
         grind_program([wheel], target, False, "Job")
+
+
+def test_a_tool_call_in_a_grinder_program_keeps_the_wheel_turning_on_linuxcnc():
+    # LinuxCNC's M6 stops the spindle; the 9/Series T does not: the wheel must turn again before it grinds
+    # (in the same block: LinuxCNC runs M3 after M6).
+    program = "G20 G90 G94\nS3000 M03\nG0 X0. Y1. Z1.\nT0303\nG1 X1. F10.\nM30\n"
+    lines = translate_program(program, "ab9grind", target="linuxcnc").splitlines()
+    assert lines[lines.index("G0 X0. Y1. Z1.") + 1:][:2] == ["T3 M6 G43 M3", "G1 X1. F10."]

@@ -167,9 +167,10 @@ class MachineTranslation(TranslatorBase):
         return ToolSelection(tool, offset, offset == tool)
 
     def _restart_spindle(self, block: Block, output: List[str]) -> None:
-        """LinuxCNC's M6 stops the spindle; a lathe turret does not: start it again."""
+        """LinuxCNC's M6 stops the spindle; a lathe turret (and the 9/Series grinder's T) does not: start it
+        again. Not after a Milltronics T M6: the program starts it itself (_mill_tool_change)."""
         state = self.state
-        if self.control.mill or "M6" not in output or state.spindle_dir not in (3, 4):
+        if self.control.tool_words == DIAMETER_REGISTER or "M6" not in output or state.spindle_dir not in (3, 4):
             return
         if set(_SPINDLE_CODES) & {int(word.value) for word in block.all("M")}:
             return  # the block starts or stops it itself
