@@ -182,7 +182,7 @@ def test_gsk_post_read_back_equals_the_op(closing, args):
     from freecad_groove.engine.translator import translate_program
 
     job, op = _helix_op(closing)
-    text = _post("gsk_lathe", [job], args)
+    text = _post("gsk_lathe", [job], args + " --switches-by-hand")
     region = [line for line in text.splitlines() if line.startswith("G7.1") or line.startswith("G1 Z")]
     if args == "--native-cycles":
         assert region == ["G7.1 C20. J-4. R2. K0.4 L2", "G1 Z30. C360. F120.", "G7.1 C0"], text
@@ -199,7 +199,7 @@ def test_gsk_post_read_back_equals_the_op(closing, args):
 
 def test_linuxcnc_post_writes_the_c_moves(closing):
     job, op = _helix_op(closing)
-    text = _post("linuxcnc_lathe", [job], "")
+    text = _post("linuxcnc_lathe", [job], "--switches-by-hand")
     got = _positions(_read_text(text), 0.5)
     want = _op_positions(op)
     assert got[len(got) - len(want):] == [(k, pytest.approx(x, abs=1e-4), pytest.approx(z, abs=1e-4),
@@ -264,7 +264,7 @@ def test_gsk_refuses_inches(closing):
 
     job, op = _helix_op(closing)
     with pytest.raises(PostError, match="--inches: the G7.1 region of a Cylinder slot is written in mm"):
-        _post("gsk_lathe", [job], "--inches")
+        _post("gsk_lathe", [job], "--inches --switches-by-hand")
 
 
 def _developed_distance(point, polyline):

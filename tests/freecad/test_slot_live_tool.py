@@ -30,9 +30,18 @@ def test_given_codes_are_written_around_the_slot_and_the_main_spindle_stays_off(
     assert not [line for line in lines if "given, the post cannot write it" in line]
 
 
-def test_without_the_options_each_missing_switch_is_a_comment(closing):
+def test_without_the_options_the_slot_is_refused_naming_the_op_and_the_option(closing):
     job, op = _helix_op(closing)
-    text = _post("gsk_lathe", [job], "--native-cycles")
+    with pytest.raises(PostError, match=r"^%s: C axis mode on: no --c-axis-on given: the post does not know the "
+                       r"machine's code .* give --c-axis-on WORDS, or --switches-by-hand" % op.Label):
+        _post("gsk_lathe", [job], "--native-cycles")
+    with pytest.raises(PostError, match=r"^%s: live tool on at S1000: no --live-tool-cw given" % op.Label):
+        _post("linuxcnc_lathe", [job], "--c-axis-on M14")
+
+
+def test_switches_by_hand_writes_a_comment_in_place_of_each_missing_switch(closing):
+    job, op = _helix_op(closing)
+    text = _post("gsk_lathe", [job], "--native-cycles --switches-by-hand")
     lines = _lines(text)
     region, cancel = _index(lines, "G7.1 C20. J"), _index(lines, "G7.1 C0")
     before = [line for line in lines[:region] if "cannot write it" in line]
@@ -43,8 +52,9 @@ def test_without_the_options_each_missing_switch_is_a_comment(closing):
         "(live tool on at S1000: no --live-tool-cw given, the post cannot write it)"], before
     assert len(after) == 2 and "--live-tool-stop" in after[0].lower() and "--c-axis-off" in after[1].lower()
     assert "G97 S1000 M03" not in text  # the main spindle is not started for a slot
-    bare = _post("gsk_lathe", [job], "--native-cycles --no-comments")
-    assert "cannot write it" not in bare and "M03" not in bare
+    bare = _post("gsk_lathe", [job], "--native-cycles --no-comments --switches-by-hand")
+    # the placeholders stay: they mark where the machinist writes the codes
+    assert [line for line in _lines(bare) if "cannot write it" in line] == before + after and "M03" not in bare
 
 
 def test_a_reversed_tool_uses_the_ccw_code(closing):

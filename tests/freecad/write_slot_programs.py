@@ -25,8 +25,8 @@ def _freecad_groove_write_slot_programs():
         from freecad_groove import make_cylinder_slot
 
         keyway = Part.makeLine(FreeCAD.Vector(0, 20, 5), FreeCAD.Vector(0, 20, 45))
-        cases = {"helix": (t._helix(), dict(depth=2, passes=2, allowance=0.2, retract=1), ""),
-                 "keyway": (keyway, dict(depth=1.5, passes=1, allowance=0.1, retract=2), ""),
+        cases = {"helix": (t._helix(), dict(depth=2, passes=2, allowance=0.2, retract=1), "--switches-by-hand"),
+                 "keyway": (keyway, dict(depth=1.5, passes=1, allowance=0.1, retract=2), "--switches-by-hand"),
                  # the live tool and C axis switches as LinuxCNC digital outputs (posts/live_tool.py)
                  "keyway-switched": (keyway, dict(depth=1.5, passes=1, allowance=0.1, retract=2),
                                      "--c-axis-on 'M64 P0' --c-axis-off 'M65 P0' --live-tool-cw 'M64 P1' "

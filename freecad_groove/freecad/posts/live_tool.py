@@ -10,15 +10,19 @@ So they are post options without defaults, on the posts that write C:
     --c-axis-on WORDS    --c-axis-off WORDS
     --live-tool-cw WORDS --live-tool-ccw WORDS   (written with S<rpm> of the tool controller)
     --live-tool-stop WORDS
+    --switches-by-hand   (a comment in place of each switch not given)
 
 WORDS: program words, space separated (``M14``, ``"M64 P0"``, ``"M3 $1"``).
 Around a slot the post stops the main spindle (the control's spindle stop)
 if it turns, switches C axis mode on, starts the live tool in the tool
 controller's SpindleDir at its SpindleSpeed, writes the slot, then stops the
 live tool and switches C axis mode off. A switch whose option is not given
-is not guessed: a comment in its place says what is missing and which option
-writes it (with --no-comments the line is missing entirely), and
-``Program.missing_switches`` lists it for the report view.
+is not guessed: the slot is refused (PostError naming the option), since a
+program without it feeds an end mill that does not turn. With
+--switches-by-hand the machinist takes them on: a comment in its place says
+what is missing and which option writes it (even with --no-comments: it
+marks where the code goes), and ``Program.missing_switches`` lists it for
+the report view.
 """
 
 from __future__ import annotations
@@ -43,6 +47,7 @@ OPTIONS = (
     ("--live-tool-ccw", "live_tool_ccw", "as --live-tool-cw, counter-clockwise (SpindleDir Reverse)"),
     ("--live-tool-stop", "live_tool_stop", "the words that stop the live tool after a Cylinder slot (no default)"),
 )
+BY_HAND = "--switches-by-hand"
 
 
 class LiveToolCodes(NamedTuple):
@@ -53,12 +58,16 @@ class LiveToolCodes(NamedTuple):
     live_tool_cw: Optional[str] = None
     live_tool_ccw: Optional[str] = None
     live_tool_stop: Optional[str] = None
+    by_hand: bool = False  # BY_HAND: a comment in place of each switch not given, instead of a refusal
 
 
 def add_options(parser: Any) -> None:
     """The options of OPTIONS on a post's parser (a post whose control writes C)."""
     for option, attribute, text in OPTIONS:
         parser.add_argument(option, dest=attribute, metavar="WORDS", default=None, help=text)
+    parser.add_argument(BY_HAND, dest="switches_by_hand", action="store_true",
+                        help="write a comment in place of each live tool / C axis switch not given (you add the "
+                             "machine's codes by hand); without it a Cylinder slot missing a switch is refused")
 
 
 def read_options(namespace: Any) -> LiveToolCodes:
@@ -72,34 +81,38 @@ def read_options(namespace: Any) -> LiveToolCodes:
                 raise PostError("%s %r: must be program words, a letter and a number each, space separated "
                                 "(e.g. M14, \"M64 P0\")" % (option, value))
         values[attribute] = value
-    return LiveToolCodes(**values)
+    return LiveToolCodes(by_hand=bool(getattr(namespace, "switches_by_hand", False)), **values)
 
 
-def _switch(program: Program, words: Optional[str], option: str, what: str) -> None:
+def _switch(program: Program, words: Optional[str], option: str, what: str, label: str) -> None:
     if words:
         program.add([words])
         return
+    if not program.options.live_tool.by_hand:
+        raise PostError("%s: no %s given: the post does not know the machine's code (without it the end mill "
+                        "would not turn or C would not be an axis); give %s WORDS, or %s to write a comment in "
+                        "its place and add the code by hand" % (what, option, option, BY_HAND), op=label)
     program.missing_switches.append(option)
-    program.note("%s: no %s given, the post cannot write it" % (what, option))
+    program.add([program.control.comment("%s: no %s given, the post cannot write it" % (what, option))])
 
 
-def switch_on(program: Program, tool_controller: Any) -> None:
-    """Before a slot: the main spindle stopped, C axis mode on, the live tool started."""
+def switch_on(program: Program, tool_controller: Any, label: str) -> None:
+    """Before the slot op ``label``: the main spindle stopped, C axis mode on, the live tool started."""
     codes = program.options.live_tool
     if program.spindle_on:
         program.stop_spindle()
-    _switch(program, codes.c_axis_on, "--c-axis-on", "C axis mode on")
+    _switch(program, codes.c_axis_on, "--c-axis-on", "C axis mode on", label)
     reverse = str(getattr(tool_controller, "SpindleDir", "Forward")) == "Reverse"
     rpm = int(round(float(getattr(tool_controller, "SpindleSpeed", 0) or 0)))
     words, option = (codes.live_tool_ccw, "--live-tool-ccw") if reverse else (codes.live_tool_cw, "--live-tool-cw")
     if rpm <= 0:
         raise PostError("SpindleSpeed=%s: the live tool of a Cylinder slot needs a speed (the tool controller's)"
-                        % rpm)
-    _switch(program, "%s S%d" % (words, rpm) if words else None, option, "live tool on at S%d" % rpm)
+                        % rpm, op=label)
+    _switch(program, "%s S%d" % (words, rpm) if words else None, option, "live tool on at S%d" % rpm, label)
 
 
-def switch_off(program: Program) -> None:
-    """After a slot: the live tool stopped, C axis mode off."""
+def switch_off(program: Program, label: str) -> None:
+    """After the slot op ``label``: the live tool stopped, C axis mode off."""
     codes = program.options.live_tool
-    _switch(program, codes.live_tool_stop, "--live-tool-stop", "live tool stop")
-    _switch(program, codes.c_axis_off, "--c-axis-off", "C axis mode off")
+    _switch(program, codes.live_tool_stop, "--live-tool-stop", "live tool stop", label)
+    _switch(program, codes.c_axis_off, "--c-axis-off", "C axis mode off", label)

@@ -57,7 +57,7 @@ class SlotOutput:
         if error:
             raise PostError(error, op=self.label)
         plan = self.op.Proxy.current_plan(self.op)
-        live_tool.switch_on(program, getattr(self.op, "ToolController", None))
+        live_tool.switch_on(program, getattr(self.op, "ToolController", None), self.label)
         program.set_feed_mode(False)
         start = plan.start
         self._moves([Move(RAPID, plan.safe_radius, None),  # X first: Z and C move only at the safe radius
@@ -72,7 +72,7 @@ class SlotOutput:
         else:
             self._moves(plan.moves)
         self._moves([Move(RAPID, plan.safe_radius, start.z)])
-        live_tool.switch_off(program)
+        live_tool.switch_off(program, self.label)
 
     def _region(self, region: GskG71, end: tuple) -> None:
         """The region's blocks; the output then knows it stands at ``end`` (x, z, c) with no motion in force."""
