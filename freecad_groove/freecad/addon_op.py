@@ -2,7 +2,9 @@
 on CAM's op framework (Path.Op.Base.ObjectOp): the tool controller they are
 made with, their features, their properties added on creation and on
 restore (a document saved by an older version gets the new ones), and no
-milling depths; the one-line report of an op that cannot cut.
+milling depths; the one-line report of an op that cannot cut; making an op
+with its view provider (create_op) and registering its kind with CAM's
+SetupSheet (register_op_kind).
 
 Not stored in documents (each op's own class is): free to move.
 
@@ -15,6 +17,7 @@ import FreeCAD
 import Path
 import Path.Op.Base as PathOp
 
+from .. import hooks
 from .op_path import comment_body
 
 
@@ -79,3 +82,26 @@ class AddonOp(PathOp.ObjectOp):
 
     def _add_missing_properties(self, obj: object) -> None:
         raise NotImplementedError
+
+
+def create_op(proxy_class: type, name: str, obj: object, parent_job: object, tool_controller: object,
+              view_hook: str) -> object:
+    """An op (Path::FeaturePython with a ``proxy_class`` proxy) in ``parent_job`` (None: the active document's
+    Job); with the GUI up it also gets its view provider, from the factory the GUI set in ``hooks.<view_hook>``."""
+    if obj is None:
+        doc = parent_job.Document if parent_job is not None else FreeCAD.ActiveDocument
+        obj = doc.addObject("Path::FeaturePython", name)
+    obj.Proxy = proxy_class(obj, name, parent_job, tool_controller)
+    factory = getattr(hooks, view_hook)
+    if factory is not None and getattr(obj, "ViewObject", None) is not None:
+        factory(obj)
+    return obj
+
+
+def register_op_kind(op_name: str, setup_properties: object, prototype: object = None) -> None:
+    """Register the op kind ``op_name`` with CAM's SetupSheet, as FreeCAD's own ops are: a Job applies its
+    SetupSheet to every new op by kind and logs "SetupSheet has no support for ..." for an unregistered one.
+    ``prototype(name, prototype)``: what the SetupSheet editor builds for its properties (default: as given)."""
+    import Path.Base.SetupSheet as PathSetupSheet
+
+    PathSetupSheet.RegisterOperation(op_name, prototype or (lambda name, proto: proto), setup_properties)

@@ -82,15 +82,19 @@ def nothing_left_behind(doc: object) -> Iterator[None]:
         raise
 
 
-def _set_values(obj: object, values: dict) -> None:
-    """The op's properties from make_groove's keywords; ValueError naming the
-    keyword whose value FreeCAD refuses."""
+def set_keyword_values(call: str, obj: object, keywords: dict, values: dict) -> None:
+    """The op's properties from the keywords of the make_* ``call`` ({keyword: property} ``keywords``);
+    ValueError naming the keyword whose value FreeCAD refuses."""
     for key, value in values.items():
         try:
-            setattr(obj, KEYWORDS[key], value)
+            setattr(obj, keywords[key], value)
         except Exception as e:
-            raise ValueError("make_groove(): %s=%r: not a value for %s (%s: %s)"
-                             % (key, value, KEYWORDS[key], type(e).__name__, e)) from None
+            raise ValueError("%s(): %s=%r: not a value for %s (%s: %s)"
+                             % (call, key, value, keywords[key], type(e).__name__, e)) from None
+
+
+def _set_values(obj: object, values: dict) -> None:
+    set_keyword_values("make_groove", obj, KEYWORDS, values)
 
 
 def _tool_controller(job):

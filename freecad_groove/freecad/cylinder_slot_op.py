@@ -37,11 +37,10 @@ import Part
 import Path
 import PathScripts.PathUtils as PathUtils
 
-from .. import hooks
 from ..engine.cycles.gsk_g71 import DECIMALS, GskG71, PathBlock
 from ..engine.moves import FEED, RAPID, MachineState, Move
 from . import slot_reach
-from .addon_op import AddonOp
+from .addon_op import AddonOp, create_op, register_op_kind
 from .faces import element_name
 from .groove_op import _WithValues  # an op seen with the panel's values (the same wrapper as the Groove panel's)
 from .groove_properties import GrooveInputError
@@ -295,21 +294,9 @@ def SetupProperties() -> list:
 
 
 def Create(name: str, obj: object = None, parentJob: object = None, tool_controller: object = None) -> object:
-    """A Cylinder slot op (Path::FeaturePython with an ObjectCylinderSlot proxy) in ``parentJob``."""
-    if obj is None:
-        doc = parentJob.Document if parentJob is not None else FreeCAD.ActiveDocument
-        obj = doc.addObject("Path::FeaturePython", name)
-    obj.Proxy = ObjectCylinderSlot(obj, name, parentJob, tool_controller)
-    if hooks.slot_view_provider_factory is not None and getattr(obj, "ViewObject", None) is not None:
-        hooks.slot_view_provider_factory(obj)  # the GUI's (gui/slot_view.py), set when the GUI is up
-    return obj
+    """A Cylinder slot op (Path::FeaturePython with an ObjectCylinderSlot proxy) in ``parentJob``; with the GUI
+    up, its view provider (gui/slot_view.py) through hooks."""
+    return create_op(ObjectCylinderSlot, name, obj, parentJob, tool_controller, "slot_view_provider_factory")
 
 
-def register_with_setup_sheet() -> None:
-    """Register the op's kind with CAM's SetupSheet, as groove_op does (no "SetupSheet has no support" log)."""
-    import Path.Base.SetupSheet as PathSetupSheet
-
-    PathSetupSheet.RegisterOperation(OP_NAME, lambda name, prototype: prototype, SetupProperties)
-
-
-register_with_setup_sheet()
+register_op_kind(OP_NAME, SetupProperties)

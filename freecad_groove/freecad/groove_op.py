@@ -68,12 +68,11 @@ from typing import Optional
 import FreeCAD
 import PathScripts.PathUtils as PathUtils
 
-from .. import hooks
 from ..engine import GroovingTool, Settings
 from ..engine.cycles.cycle93 import DEFAULT_VRT_MM, Cycle93
 from ..engine.numbers import format_value
 from . import plan_cache
-from .addon_op import AddonOp
+from .addon_op import AddonOp, create_op, register_op_kind
 from .cutting import CuttingData, cutting_data
 from .faces import GrooveFace, analyse_face, element_name
 from .groove_plan import GroovePlan, blade_origin, plan_groove
@@ -509,33 +508,14 @@ def SetupProperties() -> list:
     return []
 
 
-def register_with_setup_sheet() -> None:
-    """Register the op with CAM's SetupSheet, as FreeCAD's own ops are: a Job
-    applies its SetupSheet to every new op by kind and logs "SetupSheet has
-    no support for Groove" for an unregistered one. The SetupSheet editor
-    builds a prototype of each registered op for its properties; with none
-    to offer the prototype stays empty (Create cannot build on one)."""
-    import Path.Base.SetupSheet as PathSetupSheet
-
-    PathSetupSheet.RegisterOperation(OP_NAME, _setup_sheet_prototype, SetupProperties)
-
-
-def _setup_sheet_prototype(name: str, prototype: object) -> object:
-    return prototype
-
-
 def Create(name: str, obj: object = None, parentJob: object = None, tool_controller: object = None) -> object:
     """Create(name, obj=None, parentJob=None) ... a Groove operation
     (Path::FeaturePython with an ObjectGroove proxy), added to ``parentJob``
     (or the document's only Job). With the GUI up it also gets its view
     provider (freecad_groove.hooks.view_provider_factory)."""
-    if obj is None:
-        doc = parentJob.Document if parentJob is not None else FreeCAD.ActiveDocument
-        obj = doc.addObject("Path::FeaturePython", name)
-    obj.Proxy = ObjectGroove(obj, name, parentJob, tool_controller)
-    if hooks.view_provider_factory is not None and getattr(obj, "ViewObject", None) is not None:
-        hooks.view_provider_factory(obj)
-    return obj
+    return create_op(ObjectGroove, name, obj, parentJob, tool_controller, "view_provider_factory")
 
 
-register_with_setup_sheet()
+# A Job logs "SetupSheet has no support for Groove" for an unregistered op kind; the SetupSheet editor's
+# prototype stays empty (a groove offers it no properties: SetupProperties).
+register_op_kind(OP_NAME, SetupProperties)

@@ -3,7 +3,7 @@
 import FreeCAD
 
 from . import plunge_grind_op
-from .api import _faces, nothing_left_behind, snake_case
+from .api import _faces, nothing_left_behind, set_keyword_values, snake_case
 from .plunge_grind_properties import DERIVED, PROPERTY_NAMES
 
 SETTABLE = tuple(n for n in PROPERTY_NAMES if n not in DERIVED) + ("CoolantMode", "Comment")
@@ -21,15 +21,6 @@ def _tool_controller(job: object) -> object:
                                    assignViewProvider=False)
     job.Proxy.addToolController(tc)
     return tc
-
-
-def _set_values(obj: object, values: dict) -> None:
-    for key, value in values.items():
-        try:
-            setattr(obj, KEYWORDS[key], value)
-        except Exception as e:
-            raise ValueError("make_plunge_grind(): %s=%r: not a value for %s (%s: %s)"
-                             % (key, value, KEYWORDS[key], type(e).__name__, e)) from None
 
 
 def make_plunge_grind(job, face, name="PlungeGrind", tool_controller=None, recompute=True, **values):
@@ -79,7 +70,7 @@ def make_plunge_grind(job, face, name="PlungeGrind", tool_controller=None, recom
         for model, subs in faces:
             for sub in subs:
                 obj.Proxy.addBase(obj, model, sub)
-        _set_values(obj, values)
+        set_keyword_values("make_plunge_grind", obj, KEYWORDS, values)
     if recompute:
         doc.recompute()
     return obj

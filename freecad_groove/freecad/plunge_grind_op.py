@@ -49,11 +49,10 @@ import Part
 import Path
 import PathScripts.PathUtils as PathUtils
 
-from .. import hooks
 from ..engine.cycles.ab_g83 import G83, G83_1
 from ..engine.errors import CycleError
 from ..engine.moves import DRESS, FEED, MachineState, Move
-from .addon_op import AddonOp
+from .addon_op import AddonOp, create_op, register_op_kind
 from .grind_clearance import CLEAR_ABOVE_MM, check_wheel_body, wheel_sweep
 from .op_path import comment_body
 from .plunge_grind_properties import DERIVED, PROPERTIES, WORD_PROPERTIES, GrindInputError
@@ -351,22 +350,10 @@ def SetupProperties() -> list:
     return []
 
 
-def register_with_setup_sheet() -> None:
-    """Register with CAM's SetupSheet as groove_op does (a Job logs an unregistered op kind)."""
-    import Path.Base.SetupSheet as PathSetupSheet
-
-    PathSetupSheet.RegisterOperation(OP_NAME, lambda name, prototype: prototype, SetupProperties)
-
-
 def Create(name: str, obj: object = None, parentJob: object = None, tool_controller: object = None) -> object:
-    """A Plunge grind operation (Path::FeaturePython with an ObjectPlungeGrind proxy) in ``parentJob``."""
-    if obj is None:
-        doc = parentJob.Document if parentJob is not None else FreeCAD.ActiveDocument
-        obj = doc.addObject("Path::FeaturePython", name)
-    obj.Proxy = ObjectPlungeGrind(obj, name, parentJob, tool_controller)
-    if hooks.grind_view_provider_factory is not None and getattr(obj, "ViewObject", None) is not None:
-        hooks.grind_view_provider_factory(obj)  # the GUI's (gui/grind_view.py), set when the GUI is up
-    return obj
+    """A Plunge grind operation (Path::FeaturePython with an ObjectPlungeGrind proxy) in ``parentJob``; with the
+    GUI up, its view provider (gui/grind_view.py) through hooks."""
+    return create_op(ObjectPlungeGrind, name, obj, parentJob, tool_controller, "grind_view_provider_factory")
 
 
-register_with_setup_sheet()
+register_op_kind(OP_NAME, SetupProperties)

@@ -3,7 +3,7 @@
 import FreeCAD
 
 from . import cylinder_slot_op
-from .api import _model, nothing_left_behind
+from .api import _model, nothing_left_behind, set_keyword_values
 
 KEYWORDS = {"depth": "Depth", "passes": "Passes", "allowance": "Allowance", "retract": "Retract",
             "coolant_mode": "CoolantMode", "comment": "Comment"}
@@ -82,12 +82,7 @@ def make_cylinder_slot(job, face, path, name="CylinderSlot", tool_controller=Non
             obj.Proxy.addBase(obj, model, sub)
         if is_sketch(path):
             obj.DevelopedSketch = path
-        for key, value in values.items():
-            try:
-                setattr(obj, KEYWORDS[key], value)
-            except Exception as e:
-                raise ValueError("make_cylinder_slot(): %s=%r: not a value for %s (%s: %s)"
-                                 % (key, value, KEYWORDS[key], type(e).__name__, e)) from None
+        set_keyword_values("make_cylinder_slot", obj, KEYWORDS, values)
     if recompute:
         doc.recompute()
     return obj
