@@ -54,7 +54,7 @@ def test_rs274_runs_an_expanded_g83_1_with_its_dress_calls_where_the_engine_puts
     canon = run_rs274(text, files={"dress12.ngc": dress}, xyz=True)
     expected = [("G0", 0.0, 0.0, 0.0)] + [
         ("G4", m.x, m.y, m.z) if m.kind == DRESS else ("G1", m.x, m.y, m.z) for m in moves[:-1]]
-    assert moves[-1][1:] == moves[-2][1:3] + (20.0, 0.0, -0.25, None)  # the last sets F again, moves nothing
+    assert moves[-1][1:7] == moves[-2][1:3] + (20.0, 0.0, -0.25, None)  # the last sets F again, moves nothing
     got = [(c[0], c[1], c[2], c[3]) for c in canon]
     assert len(got) == len(expected)
     for (kind, x, y, z), want in zip(got, expected):

@@ -7,7 +7,7 @@ at the edges (the cycle parsers read them, the dialect writers write them).
 """
 
 from dataclasses import dataclass
-from typing import NamedTuple, Optional
+from typing import NamedTuple, Optional, Tuple
 
 from .errors import CycleError
 
@@ -15,13 +15,19 @@ RAPID = "G0"
 FEED = "G1"
 DWELL = "G4"
 DRESS = "dress"  # a call of the wheel's dress subprogram (grinding cycles): p = its program number
+# Arcs, in the plane of the moves (a lathe's XZ, G18; a mill-style program's XY, G17): clockwise and
+# counter-clockwise seen from the plane's positive normal (G18: from +Y, with Z to the right and X up;
+# G17: from +Z, with X to the right and Y up), as G2 and G3 turn on every control written for.
+ARC_CW = "G2"
+ARC_CCW = "G3"
+ARCS = (ARC_CW, ARC_CCW)
 
 
 class Move(NamedTuple):
     """One expanded move of the tool's reference corner.
 
-    kind  RAPID, FEED, DWELL or DRESS (a dress subprogram call, at the
-          position held; each target writes its own subprogram call).
+    kind  RAPID, FEED, ARC_CW, ARC_CCW, DWELL or DRESS (a dress subprogram
+          call, at the position held; each target writes its own subprogram call).
     x, z  target (radius, absolute); for DWELL the position held. x None: X
           (and Y) not moved, a mill's Z-only rapid (Milltronics G31/G32).
     f     feed for FEED moves, None = the feed already in force.
@@ -31,6 +37,10 @@ class Move(NamedTuple):
           axis is not moved (every lathe cycle).
     c     target of the rotary C axis in degrees (cylinder interpolation);
           None: not moved.
+    centre  an arc's centre (ARC_CW, ARC_CCW) in the plane of the move,
+          absolute: (x radius, z) on a lathe, (x, y) mill-style.
+    radius  an arc given by its radius instead (a program's R or CR= word,
+          kept as programmed): positive up to 180 degrees; None: by centre.
     A target that cannot write an axis a move sets refuses the move
     (targets.py) rather than dropping it.
     """
@@ -42,6 +52,8 @@ class Move(NamedTuple):
     p: float = 0.0
     y: Optional[float] = None
     c: Optional[float] = None
+    centre: Optional[Tuple[float, float]] = None
+    radius: Optional[float] = None
 
 
 def rapid(x: float, z: float) -> Move:
@@ -50,6 +62,11 @@ def rapid(x: float, z: float) -> Move:
 
 def feed(x: float, z: float, f: Optional[float] = None) -> Move:
     return Move(FEED, x, z, f)
+
+
+def arc(clockwise: bool, x: float, z: float, centre: Tuple[float, float], f: Optional[float] = None) -> Move:
+    """An arc to (x, z) about ``centre`` (absolute, the plane's coordinates)."""
+    return Move(ARC_CW if clockwise else ARC_CCW, x, z, f, centre=centre)
 
 
 def dwell(x: float, z: float, seconds: float) -> Move:

@@ -68,8 +68,8 @@ from dataclasses import dataclass, replace
 from typing import Dict, Iterable, List, Optional
 
 from .errors import ProgramError
-from .moves import DRESS, DWELL, FEED, RAPID, MachineState, Move
-from .numbers import MAX_DWELL_SECONDS, MAX_WORD, format_decimal
+from .moves import ARCS, DRESS, DWELL, FEED, RAPID, MachineState, Move
+from .numbers import ARC_IJK_TOLERANCE, MAX_DWELL_SECONDS, MAX_WORD, MM_PER_INCH, format_decimal
 
 __all__ = [
     "TARGETS",
@@ -406,6 +406,46 @@ class Writer:
                 setattr(self, name, text)
         return words
 
+    def _arc_words(self, move: Move) -> Optional[List[str]]:
+        """The end point and centre words of an arc (both axes of its plane, then
+        I/K, mill style I/J, or R for an arc given by its radius); None when its
+        end is written as its start (an I/K arc would then be a full circle).
+        The centre offsets are taken from the start *as written*, so the control
+        computes the circle the move means; one the rounding puts off its circle
+        by more than ARC_IJK_TOLERANCE is refused."""
+        mill = self.spec.mill
+        second, second_text, letter = (move.y, self.y_text, "J") if mill else (move.z, self.z_text, "K")
+        if self.x_text is None or second_text is None:
+            raise ProgramError("an arc needs its start point written before it (%s)" % move.kind)
+        if move.x is None or second is None or (move.centre is None and move.radius is None):
+            raise ProgramError("an arc needs its end point and its centre or radius (%s)" % move.kind)
+        if mill and move.z is not None and format_decimal(move.z, self.digits) != self.z_text:
+            raise ProgramError("a helical arc (Z moving in the XY plane) cannot be written")
+        scale = 1.0 if mill else 2.0
+        ends = (format_number(move.x * scale, self.digits), format_number(second, self.digits))
+        if ends == (self.x_text, second_text):
+            return None
+        x0, s0 = float(self.x_text) / scale, float(second_text)
+        words = ["X" + ends[0], ("Y" if mill else "Z") + ends[1]]
+        if move.radius is not None:
+            words.append("R" + format_number(move.radius, self.digits))
+        else:
+            offsets = (format_number(move.centre[0] - x0, self.digits), format_number(move.centre[1] - s0, self.digits))
+            tolerance = ARC_IJK_TOLERANCE if self.metric else ARC_IJK_TOLERANCE / MM_PER_INCH
+            centre = (x0 + float(offsets[0]), s0 + float(offsets[1]))
+            start_radius = math.hypot(float(offsets[0]), float(offsets[1]))
+            end_radius = math.hypot(float(ends[0]) / scale - centre[0], float(ends[1]) - centre[1])
+            if abs(start_radius - end_radius) > tolerance:
+                raise ProgramError("%s to X%s %s%s: the end is %.4f off the arc's circle as written"
+                                   % (move.kind, ends[0], words[1][0], ends[1], abs(start_radius - end_radius)))
+            words += ["I" + offsets[0], letter + offsets[1]]
+        self.x_text = ends[0]
+        if mill:
+            self.y_text = ends[1]
+        else:
+            self.z_text = ends[1]
+        return words
+
     def write(self, moves: Iterable[Move], prefix: str = "") -> List[str]:
         """Lines for ``moves`` (moves.Move or equal tuples); updates the modal state.
 
@@ -420,7 +460,12 @@ class Writer:
                 continue
             if move[6:] and move[6] is not None:
                 f = self._c_feed(move)  # from the position written before the move
-            words = self._written_axes(move)
+            if kind in ARCS:
+                words = self._arc_words(move)
+                if words is None:
+                    continue  # shorter than the output's resolution: the written position does not change
+            else:
+                words = self._written_axes(move)
             if kind == DRESS:
                 out.append(prefix + self._dress_here(words, p))
                 continue
