@@ -18,7 +18,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 from freecad_groove.engine.cycles.gsk_g71 import GskG71  # noqa: E402
 from freecad_groove.engine.moves import MachineState  # noqa: E402
-from freecad_groove.engine.targets import write_moves  # noqa: E402
+from freecad_groove.engine.output.program import write_moves  # noqa: E402
 
 
 def region(arcs: int, passes: int) -> GskG71:

@@ -8,14 +8,14 @@
 (verify and plot: cli_verify.py.)
 
 Thin layer: argument parsing and error reporting; the work is done by
-freecad_groove.engine (translator.iter_translation, targets.write_program and
+freecad_groove.engine (translator.iter_translation, output.program.write_program and
 the cycle classes).
 
 Errors: an invalid cycle or a line the reader cannot translate prints exactly
 one line ``PROGRAM:LINE: message`` on stderr, writes nothing to stdout or OUT
 (an existing OUT is left untouched) and exits with status 2. A file that cannot
 be read or written is reported the same way with LINE 0 (OUT: what
-engine/output.py refuses, a full or closed stdout as ``<stdout>:0:``). Bad
+engine/output/files.py refuses, a full or closed stdout as ``<stdout>:0:``). Bad
 option values are reported by argparse (usage and message on stderr, status 2).
 A broken pipe on stdout ends quietly with status 1. SIGINT, SIGTERM and SIGHUP
 print ``PROGRAM:0: interrupted`` and exit with 128 + the signal's number, the
@@ -38,7 +38,7 @@ stdout, an anonymous temporary file (tempfile.TemporaryFile, in TMPDIR, gone
 when closed, even on a kill) copied to stdout only when the whole run
 succeeded. So memory stays flat with the size of the program and the output,
 and a run that fails writes nothing to stdout or OUT. OUT is checked (what
-engine/output.py refuses) before the translation starts, after the program
+engine/output/files.py refuses) before the translation starts, after the program
 and tool table were opened.
 """
 
@@ -73,9 +73,9 @@ from .cli_verify import add_verify_parsers
 from .cli_verify import run as run_verify
 from .engine import registry
 from .engine.input_controls import DIALECTS, INPUT_CONTROLS
-from .engine.output import write_chunks_atomically
+from .engine.output.files import write_chunks_atomically
+from .engine.output.targets import TARGETS
 from .engine.registry import CALL, CycleEntry, CycleWord
-from .engine.targets import TARGETS
 from .engine.warnings import CycleWarning, cycle_warnings
 
 EXIT_ERROR = 2
@@ -159,7 +159,8 @@ def _add_expand_options(parser: argparse.ArgumentParser) -> None:
     ex.add_argument("--spindle", type=positive, metavar="RPM",
                     help="spindle speed started (M3) before the moves; needed with feed per revolution")
     ex.add_argument("--incremental", action="store_true", help="G91 in force (AB, Siemens)")
-    ex.add_argument("--to", choices=TARGETS, default="linuxcnc", help="output control")
+    ex.add_argument("--to", choices=list(TARGETS), default="linuxcnc", metavar="TARGET",
+                    help="output control: %s (default linuxcnc)" % ", ".join(TARGETS))
     add_start_options(parser, expand=False)
 
 
@@ -210,8 +211,9 @@ def _native_text(args: argparse.Namespace, entry: CycleEntry) -> str:
 def _emit(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]) -> str:
     """The native call, or with --expand the whole program; the cycle's warnings
     are appended to ``warnings`` (on line 1)."""
-    from .engine import targets
     from .engine.errors import CycleError, ProgramError
+    from .engine.output.program import write_program
+    from .engine.output.targets import program_target
     from .engine.tool_table import BLADE_UNKNOWN
 
     entry = registry.entry(args.cycle_name)
@@ -235,8 +237,11 @@ def _emit(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]) ->
         state.incremental = args.incremental
         moves = model.expand(state, settings)
         warnings.extend((1, warning) for warning in cycle_warnings(model, state, settings))
-        target = targets.mill_target(args.to) if mill else args.to
-        return targets.write_program(
+        try:
+            target = program_target(args.to, mill)
+        except ValueError as exc:
+            raise ProgramError("--to %s: %s" % (args.to, exc)) from None
+        return write_program(
             moves, target, state, title="%s: %s" % (entry.title, " / ".join(text.split("\n"))), spindle=args.spindle
         )
     except CycleError as exc:
@@ -511,10 +516,13 @@ def build_parser():
     )
     ex.add_argument(
         "--to",
-        choices=TARGETS,
+        choices=list(TARGETS),
         default="linuxcnc",
-        help="the control the output is for: linuxcnc (G7 diameter mode, G4 P seconds, M2; the default) or "
-        "fanuc (plain Fanuc lathe code: diameter X, G98/G99, G04 P milliseconds, M30, %% lines)",
+        metavar="TARGET",
+        help="the control the output is for (default linuxcnc): "
+        + "; ".join("%s = %s" % (name, target.title.replace("%", "%%")) for name, target in TARGETS.items())
+        + ". A mill-style program (--dialect ab9grind, milltronics) naming linuxcnc or fanuc is written on its "
+        "mill twin (linuxcnc-mill, fanuc-mill)",
     )
     ex.add_argument(
         "-o",

@@ -121,7 +121,7 @@ def _drawer(args: argparse.Namespace):
 
 def _plot(args: argparse.Namespace, draw, result) -> None:
     from .cli import _Failure
-    from .engine.output import write_chunks_atomically
+    from .engine.output.files import write_chunks_atomically
 
     data = draw(result, args.output.lower().rsplit(".", 1)[1])
     try:  # bytes through the text writer: Latin-1 maps each byte to one character and back

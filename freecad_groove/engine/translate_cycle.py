@@ -88,7 +88,7 @@ class CycleTranslation(TranslatorBase):
             self._collect_warnings(entry, model, start, settings)
         except CycleError as exc:
             self._fail(exc.message)
-        self._emit(self._words_line(block, [], label.replace("(", " ").replace(")", "")))
+        self._emit_line(block, [], label.replace("(", " ").replace(")", ""))
         try:
             lines = self.writer.write(moves, self._prefix)
         except ProgramError as exc:
@@ -143,8 +143,8 @@ class CycleTranslation(TranslatorBase):
         memory = dict(self.state.cycle_memory.get(cycle.MEMORY, {}), **{key: value})
         self.state.cycle_memory = dict(self.state.cycle_memory, **{cycle.MEMORY: memory})
         self._defined.add("cycle_memory")
-        self._emit(self._words_line(block, [], "%s=%s: for the %s that follow" % (
-            key, text, "/".join(e.name for e in self.control.cycles() if getattr(e.cycle_class, "PARAMETERS", ())))))
+        self._emit_line(block, [], "%s=%s: for the %s that follow" % (
+            key, text, "/".join(e.name for e in self.control.cycles() if getattr(e.cycle_class, "PARAMETERS", ()))))
 
     # -- a cycle over several blocks (GSK G7.1 ... G7.1 C0) ------------------------------
 
@@ -216,7 +216,7 @@ class CycleTranslation(TranslatorBase):
         self._defined.add("retract_e")
         kinds = "/".join(other.name for other in self.control.cycles() if other.retract_block)
         note = "%s %s%s: peck retract e for the next %s" % (entry.name, letter, words[0].text, kinds)
-        self._emit(self._words_line(block, [], note))
+        self._emit_line(block, [], note)
 
     def _with_retract_block(self, entry: CycleEntry, call: CycleCall) -> CycleCall:
         """The call with the retract block read before it, when there was one."""
