@@ -336,6 +336,7 @@ def _expand(args, warnings):
             start=start_state(args),
             tools=tools,
             warnings=warnings,
+            native_cycles=args.native_cycles,
         )
         try:
             _write_chunks(chunks, args.output)
@@ -524,6 +525,7 @@ def build_parser():
         + ". A mill-style program (--dialect ab9grind, milltronics) naming linuxcnc or fanuc is written on its "
         "mill twin (linuxcnc-mill, fanuc-mill)",
     )
+    ex.add_argument("--native-cycles", action="store_true", help=_native_help())
     ex.add_argument(
         "-o",
         "--output",
@@ -537,6 +539,20 @@ def build_parser():
     _add_emit_parsers(sub)
     add_verify_parsers(sub)
     return parser
+
+
+def _native_help():
+    """--native-cycles' help: what it does and the pairs written natively (engine/native/pairs.py)."""
+    from .engine.native import native_pairs
+
+    pairs = "; ".join("%s: %s" % item for item in native_pairs().items())
+    return ("write each cycle call as the target's own cycle where one cuts the same grooves, else its moves "
+            "after a comment saying why (the same reasons as the lathe posts give). A call converted to another "
+            "control's cycle is written only when the engine's expansion of the call as written cuts the same "
+            "moves (within the output's resolution); CYCLE93 becomes a pecking cycle as the lathe posts decide "
+            "(plain grooves only). A call relying on a machine setting (the peck retract e of Allen-Bradley and "
+            "Haas, from --retract) says so in a comment. Default: every call expanded. Native per --to target: "
+            + pairs + ".").replace("%", "%%")
 
 
 _TRAILING_POINT = re.compile(r"^-\d+\.$")

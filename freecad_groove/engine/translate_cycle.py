@@ -90,7 +90,7 @@ class CycleTranslation(TranslatorBase):
             self._fail(exc.message)
         self._emit_line(block, [], label.replace("(", " ").replace(")", ""))
         try:
-            lines = self.writer.write(moves, self._prefix)
+            lines, moves = self._cycle_output(model, start, settings, moves)  # translate_native.py
         except ProgramError as exc:
             self._fail("%s: %s" % (call.name, exc))
         self.body.extend(lines)

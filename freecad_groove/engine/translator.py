@@ -137,6 +137,7 @@ from .input_controls import (
 )
 from .modal import TRACKED, ModalState
 from .moves import MachineState
+from .native import NativeOutput
 from .output.targets import program_target
 from .output.writer import MAX_LINE, Writer
 from .reader import Block, parse_block
@@ -145,23 +146,26 @@ from .translate_base import ActiveCode, Groups, Tools
 from .translate_cycle import CycleTranslation
 from .translate_machine import MachineTranslation
 from .translate_motion import MotionTranslation
+from .translate_native import NativeCycleTranslation
 from .warnings import CycleWarning
 
 __all__ = ["Translator", "iter_translation", "program_lines", "translate_program"]
 
 
-class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
+class Translator(MotionTranslation, MachineTranslation, CycleTranslation, NativeCycleTranslation):
     """Reads a program block by block and writes the translation.
 
     ``line(text, number)`` reads one line; ``state`` is the ModalState after it;
     ``result()`` is the translated program text; ``translate(lines)`` reads
     every line and yields the text as it is made; ``warnings`` the (line,
-    CycleWarning) of the cycles read so far, in line order.
+    CycleWarning) of the cycles read so far, in line order. ``native_cycles``:
+    each cycle call written as the target's own cycle where it cuts the same
+    (engine/native), else expanded after a comment saying why.
     """
 
     def __init__(self, dialect: str, settings: Settings = DEFAULT_SETTINGS, target: str = "linuxcnc",
                  source_name: str = "PROGRAM", start: Optional[MachineState] = None,
-                 tools: Optional[Tools] = None) -> None:
+                 tools: Optional[Tools] = None, native_cycles: bool = False) -> None:
         self.control = input_control(dialect)  # raises on an unknown dialect
         # a mill-style program (X/Y/Z) on a mill target or a lathe target's mill twin; raises when there is none
         output_target = program_target(target, self.control.mill)
@@ -185,6 +189,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         self.start_metric = state.metric
         self.start_feed_per_rev = state.feed_per_rev
         self.writer = Writer(output_target, state.metric, state.feed_per_rev)
+        self.native = NativeOutput(output_target, self.writer) if native_cycles else None
         self.body: List[str] = []
         self.warnings: List[Tuple[int, CycleWarning]] = []
         self.program_number: Optional[int] = None
@@ -352,10 +357,11 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
     def header(self) -> List[str]:
         """The lines that open the translation (modes at the start, the title)."""
         header_writer = Writer(self.writer.target, self.start_metric, self.start_feed_per_rev)
-        title = "%s: %s program%s, cycles expanded for %s by freecad-groove" % (
+        title = "%s: %s program%s, cycles %s for %s by freecad-groove" % (
             self.source_name,
             self.dialect,
             " O%d" % self.program_number if self.program_number is not None else "",
+            "native or expanded" if self.native is not None else "expanded",
             self.target,
         )
         return header_writer.header(title, self.program_number)
@@ -419,7 +425,8 @@ def program_lines(program: Union[str, Iterable[str]]) -> Iterator[str]:
 def iter_translation(program: Union[str, Iterable[str]], dialect: str, settings: Settings = DEFAULT_SETTINGS,
                      target: str = "linuxcnc", source_name: str = "PROGRAM", start: Optional[MachineState] = None,
                      tools: Optional[Tools] = None,
-                     warnings: Optional[List[Tuple[int, CycleWarning]]] = None) -> Iterator[str]:
+                     warnings: Optional[List[Tuple[int, CycleWarning]]] = None,
+                     native_cycles: bool = False) -> Iterator[str]:
     """translate_program, block by block: yields the translated text in chunks
     of whole lines as ``program`` is read (a text, or lines read lazily, e.g. a
     text file object: see program_lines), so neither the input nor the output
@@ -427,7 +434,8 @@ def iter_translation(program: Union[str, Iterable[str]], dialect: str, settings:
     result; a line that cannot be translated raises ProgramError when the
     translation reaches it, after the chunks of the lines before it.
     ``warnings``: as for translate_program, appended to as the lines are read."""
-    translator = Translator(dialect, settings, target=target, source_name=source_name, start=start, tools=tools)
+    translator = Translator(dialect, settings, target=target, source_name=source_name, start=start, tools=tools,
+                            native_cycles=native_cycles)
     if warnings is not None:
         translator.warnings = warnings  # appended to as the lines are read
     return translator.translate(program_lines(program))
@@ -442,6 +450,7 @@ def translate_program(
     start: Optional[MachineState] = None,
     tools: Optional[Tools] = None,
     warnings: Optional[List[Tuple[int, CycleWarning]]] = None,
+    native_cycles: bool = False,
 ) -> str:
     """Translate a ``dialect`` program for ``target`` with every cycle call expanded.
 
@@ -456,6 +465,10 @@ def translate_program(
     cannot be translated. ``warnings`` (a list, optional) gets a (line,
     warnings.CycleWarning) appended for each warning of a cycle, as the lines
     are read (so also those before a line that raises); they never change the
-    text returned. (iter_translation gives the same text in chunks.)
+    text returned. ``native_cycles``: each cycle call written as the target's
+    own cycle where it cuts the same, else expanded after a comment saying why
+    (engine/native; off: every call expanded). (iter_translation gives the
+    same text in chunks.)
     """
-    return "".join(iter_translation(text, dialect, settings, target, source_name, start, tools, warnings))
+    return "".join(iter_translation(text, dialect, settings, target, source_name, start, tools, warnings,
+                                    native_cycles))

@@ -8,19 +8,19 @@ from typing import TYPE_CHECKING, Any, Callable, List, Optional
 
 from ...engine import DWELL, FEED, CycleError, ProgramError
 from ...engine.moves import Move
-from ...engine.numbers import MM_PER_INCH, format_decimal
+from ...engine.native.cycle93_pecking import retract_note
+from ...engine.numbers import MM_PER_INCH
 from ..cutting import CuttingData, cutting_data
 from ..groove_properties import GrooveInputError
 from .controls import NATIVE_CYCLE93, NATIVE_PECKING
 from .errors import PostError
 from .objects import label_of
-from .pecking import NotNative, PeckingCall, PeckingCalls, plain_reason
+from .pecking import NotNative, PeckingCall, PeckingCalls
 from .reference_corner import corner_shift
 
 if TYPE_CHECKING:
     from .program import Program
 
-RETRACT_DECIMALS = 4  # of the peck retract named in a comment
 CYCLE93_LENGTHS = ("axfa", "axsa", "widg", "depg", "rco1", "rco2", "rci1", "rci2", "fal1", "fal2", "idep", "vrt")
 
 
@@ -170,20 +170,11 @@ class GrooveOutput:
     # -- pecking cycles (Allen-Bradley G77/G76, Fanuc and Haas G75/G74)
     def pecking(self, group: List[Any]) -> None:
         """A face's grooves as pecking-cycle calls, or expanded with the reason when the cycle cannot cut them."""
-        first = group[0]
-        call = first.cycle
-        geometry = call.geometry(first.settings)
-        why = plain_reason(call, geometry)
-        if why is None:
-            try:
-                calls = PeckingCalls(self.program, self.label, self.feed, self.per_rev).calls(group, geometry)
-            except NotNative as exc:
-                why = str(exc)
-        if why is not None:
-            control = self.program.control
-            cycle = control.longitudinal_cycle if call.kind()[0] else control.face_cycle
+        try:
+            calls = PeckingCalls(self.program, self.label, self.feed, self.per_rev).calls(group)
+        except NotNative as exc:
             for plan in group:
-                self.expanded(plan, "%s cannot cut %s" % (cycle, why))
+                self.expanded(plan, str(exc))
             return
         for pecking_call in calls:
             self.pecking_call(pecking_call)
@@ -197,10 +188,9 @@ class GrooveOutput:
         else:
             what = "%s groove %d" % (first.face.name, first.index + 1)
         program.note("%s: %s as %s" % (what, call_text(first.cycle), call.model.NAME))
-        if control.retract_setting:
-            program.note("peck retract e = %s %s: %s" % (format_decimal(call.retract, RETRACT_DECIMALS),
-                                                        "in" if program.options.inches else "mm",
-                                                        control.retract_setting))
+        note = retract_note(control.target, call.retract, not program.options.inches)
+        if note:
+            program.note(note)
         # the call's start point in one block; when that is the plan's start point, the link's last step
         # (which would reach it) is left to that block
         self.link(first, to_start=call.approach[-1] != call.approach[0])

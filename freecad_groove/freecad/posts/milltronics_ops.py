@@ -36,6 +36,7 @@ from typing import Any, List, NamedTuple, Optional, Tuple, Union
 from ...engine.cycles.milltronics import G33, G34, MilltronicsCycle
 from ...engine.errors import CycleError
 from ...engine.moves import MachineState, Move
+from ...engine.native import NotNative  # why an op is written as moves: the project's one reason type
 from ...engine.numbers import MM_PER_INCH
 from ...engine.settings import Settings
 from ..units import SECONDS_PER_MINUTE
@@ -47,10 +48,6 @@ ANGLE_TOL = 1e-6  # degrees / radians
 MOTION = {"G1": "G1", "G01": "G1", "G2": "G2", "G02": "G2", "G3": "G3", "G03": "G3"}
 REACH_TOL = 0.01  # mm: how far the op's Path may end from where the cycle's tool centre turns
 DECIMALS = {False: 3, True: 4}  # the P parameters and words: mm, inch
-
-
-class NotNative(Exception):
-    """Why an op is written as moves."""
 
 
 class Rectangle(NamedTuple):
