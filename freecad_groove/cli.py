@@ -161,6 +161,9 @@ def _add_expand_options(parser: argparse.ArgumentParser) -> None:
     ex.add_argument("--incremental", action="store_true", help="G91 in force (AB, Siemens)")
     ex.add_argument("--to", choices=list(TARGETS), default="linuxcnc", metavar="TARGET",
                     help="output control: %s (default linuxcnc)" % ", ".join(TARGETS))
+    ex.add_argument("--native-cycles", action="store_true",
+                    help="write the call as the --to control's own cycle where one cuts the same (as expand "
+                    "--native-cycles does), else the moves after a comment saying why")
     add_start_options(parser, expand=False)
 
 
@@ -241,13 +244,31 @@ def _emit(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]) ->
             target = program_target(args.to, mill)
         except ValueError as exc:
             raise ProgramError("--to %s: %s" % (args.to, exc)) from None
+        call, note = _native_call(args, model, state, settings, moves, target)
         return write_program(
-            moves, target, state, title="%s: %s" % (entry.title, " / ".join(text.split("\n"))), spindle=args.spindle
+            moves, target, state, title="%s: %s" % (entry.title, " / ".join(text.split("\n"))), spindle=args.spindle,
+            call=call, note=note,
         )
     except CycleError as exc:
         raise _Failure("emit %s" % args.cycle_name, 1, exc.message) from None
     except ProgramError as exc:
         raise _Failure("emit %s" % args.cycle_name, 1, str(exc)) from None
+
+
+def _native_call(args, model, state, settings, moves, target):
+    """emit --expand --native-cycles: (the target's call, None) or (None, the comment saying why not)."""
+    if not args.native_cycles:
+        return None, None
+    from dataclasses import replace
+
+    from .engine.native import NativeOutput, NotNative
+    from .engine.output.writer import Writer
+
+    decider = NativeOutput(target, Writer(target, state.metric, state.feed_per_rev))
+    try:
+        return decider.call(model, replace(state), settings, moves, settings.tool), None
+    except NotNative as why:
+        return None, "expanded: %s" % why
 
 
 # ---------------------------------------------------------------- expand: a program

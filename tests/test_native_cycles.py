@@ -155,7 +155,8 @@ def test_milltronics_autoroutines_are_written_with_their_d_register_and_p_blocks
 def test_a_fanuc_g75_is_written_for_haas_and_ab9_with_their_words():
     haas = assert_reads_back(FANUC, "fanuc", "haas")
     assert lines_after(haas, FANUC_CALL, 2) == ["(peck retract e = 0.5 mm: setting 22)",
-                                             "G75 X50. Z-35. I2. K2.5 F0.05"]
+                                                "G75 X50. Z-35. I2. K2.5 F0.05"]
+    assert HaasG75.parse(lines_after(haas, FANUC_CALL, 2)[1]) == HaasG75(X=50.0, Z=-35.0, I=2.0, K=2.5, F=0.05)
     ab9 = assert_reads_back(FANUC, "fanuc", "ab9")
     blocks = lines_after(ab9, FANUC_CALL, 2)
     assert blocks == ["(peck retract e = 0.5 mm: AMP parameter)", "G77 X50. Z-35. I2. K2.5 F0.05 D0."]
@@ -357,3 +358,12 @@ def test_without_native_cycles_every_call_is_expanded_as_before():
         plain = translate_program(FANUC, "fanuc", BLADE, target=target)
         assert not re.search(r"^(G7[4-7]|CYCLE93)", plain, re.M) and "expanded:" not in plain
         assert "cycles expanded for %s" % target in plain
+
+
+def test_cycle93_read_with_diameter_input_says_the_control_must_read_it_so():
+    seed = example("seed_cycle93.mpf").replace("CYCLE93(35, 60, 30, 25,", "CYCLE93(70, 60, 30, 50,")
+    settings = Settings(tool=GroovingTool(3.0, 0.2), cycle93_diameter_input=True)
+    text = assert_reads_back(seed, "sinumerik", "sinumerik", settings)
+    assert lines_after(text, "CYCLE93 70, 60", 2) == [
+        "; CYCLE93 reads AXFA, DEPG, FAL1 and FAL2 as diameters: the control must too, --diameter-input",
+        "CYCLE93(70, 60, 30, 50, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)"]

@@ -263,3 +263,21 @@ def test_a_blade_from_the_tool_table_reaches_the_cycle93_written_for_a_pecking_c
     text = native(program, "fanuc", "sinumerik", Settings(), tools=tools)
     assert "CYCLE93(30, -18, 3, 2, , , , , , , , , , 5, , 1, 1)" in text
     assert GroovingTool(3.0, 0.2, "plus").reference_offset == 3.0
+
+
+EMIT_G75 = ["emit", "g75", "-X", "50.", "-Z", "-35.", "-P", "2000", "-Q", "2500", "-F", "0.05", "--expand",
+            "--start-x", "62", "--start-z", "-15", "--spindle", "600", "--native-cycles"]
+
+
+def test_emit_expand_native_cycles_writes_the_targets_call_or_says_why():
+    status, out, err = run_inline(EMIT_G75 + ["-e", "0.5", "--to", "ab9"])
+    assert (status, err) == (0, "")
+    assert out.splitlines()[3:7] == ["G00 X62. Z-15.", "(peck retract e = 0.5 mm: AMP parameter)",
+                                     "G77 X50. Z-35. I2. K2.5 F0.05 D0.", "M30"]
+    status, out, err = run_inline(EMIT_G75 + ["-e", "0.3", "--to", "haas"])
+    assert (status, err) == (0, "")
+    lines = out.splitlines()
+    assert lines[5:8] == ["G00 X62. Z-15.", "(expanded: the peck retract e is 0.3 mm, the setting 22 G75 reads is "
+                                            "0.5 mm: give --retract 0.3)", "G01 X58. F0.05"]
+    status, plain, _ = run_inline(EMIT_G75[:-1] + ["-e", "0.3", "--to", "haas"])
+    assert [line for line in lines if "expanded:" not in line] == plain.splitlines()

@@ -2,7 +2,7 @@
 modal state, and translate them with every grooving cycle expanded.
 
     translate_program(text, dialect, settings, target="linuxcnc", source_name="PROGRAM", start=None,
-                      tools=None, warnings=None) -> str
+                      tools=None, warnings=None, native_cycles=False) -> str
     iter_translation(text or lines, dialect, ...) -> Iterator[str]   # the same text, chunk by chunk
 
 ``dialect`` is the input: "sinumerik" (CYCLE93), "ab9" (G77/G76), "ab9grind"
@@ -27,7 +27,10 @@ target's writer. The output is always absolute (G90) with X words as diameters
 resolved by the reader and never reach the output: an incremental move needs
 a known position (else ProgramError). N numbers, comments and the block delete
 ``/`` are kept. A cycle block becomes a comment naming the call, then the
-expanded moves (no N numbers; each prefixed with ``/`` when the call was).
+expanded moves (no N numbers; each prefixed with ``/`` when the call was);
+with ``native_cycles`` the target's own call where engine/native decides it
+cuts the same (translate_native.py), else a comment with the reason and the
+moves.
 
 Choices where the manuals are silent (each has a test)
 ------------------------------------------------------

@@ -119,14 +119,14 @@ class NativeOutput:
         if cycle93 and start.feed is None:
             raise NotNative("no feed is in force for CYCLE93 to cut at")
         if cycle93 and kind == "cycle93":
-            return self._proved(model, start, settings, moves, feed=start.feed)
+            return self._proved(model, start, settings, moves, feed=start.feed, notes=_cycle93_notes(settings))
         if cycle93:
             return self._cycle93_pecking(model, start, settings, moves)
         tstart = self.written(start)
         if kind == "cycle93":
             call, got, feed = to_cycle93(model, start, settings, moves, blade, tstart, self.writer.digits,
                                          self.tolerance)
-            return NativeCall(call, got, feed=feed)
+            return NativeCall(call, got, feed=feed, notes=_cycle93_notes(settings))
         call, got = to_pecking(model, start, settings, moves, self.target, tstart, self.words(), self.tolerance)
         note = retract_note(self.target, settings.retract_e(start.metric), start.metric)
         return NativeCall(call, got, notes=(note,) if note else ())
@@ -197,6 +197,13 @@ class NativeOutput:
                             "does not select with D<n>" % model.NAME)
         return self._proved(mill_model(model, self.words()), start, settings, moves, feed=start.feed,
                             register=register)
+
+
+def _cycle93_notes(settings: Settings) -> Tuple[str, ...]:
+    """A CYCLE93 read with --diameter-input relies on the control reading its words so (840D with DIAMON)."""
+    if settings.cycle93_diameter_input:
+        return ("CYCLE93 reads AXFA, DEPG, FAL1 and FAL2 as diameters: the control must too, --diameter-input",)
+    return ()
 
 
 def grind_model(model: G83, start: MachineState, words: Words) -> G83:

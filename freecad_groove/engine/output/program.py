@@ -14,11 +14,12 @@ the position is unknown (the next move writes every axis), and on a target
 whose tool change stops the spindle (LinuxCNC's M6) the spindle is off.
 """
 
-from typing import Iterable, List, NamedTuple, Optional, Sequence, Union
+from typing import Any, Iterable, List, NamedTuple, Optional, Sequence, Union
 
 from ..errors import ProgramError
 from ..moves import RAPID, MachineState, Move
 from ..numbers import MAX_WORD
+from .native import native_lines
 from .syntax import LATHE, Target
 from .writer import Writer
 
@@ -160,8 +161,12 @@ def write_moves(moves: Iterable[Move], target: Union[str, Target], state: Machin
 
 
 def write_program(moves: List[Move], target: Union[str, Target], state: MachineState, title: Optional[str] = None,
-                  program_number: Optional[int] = None, spindle: Optional[float] = None) -> str:
+                  program_number: Optional[int] = None, spindle: Optional[float] = None, call: Any = None,
+                  note: Optional[str] = None) -> str:
     """A whole program: the header, the spindle, a rapid to the start point, ``moves``, the end.
+
+    ``call`` (engine/native's NativeCall): written in place of the moves, the
+    target's own cycle (output/native.py); ``note``: a comment before the moves.
 
     The start point is (state.x, state.z) (and state.y, mill style); the
     tool's position before the program is unknown, so the approach writes
@@ -180,6 +185,11 @@ def write_program(moves: List[Move], target: Union[str, Target], state: MachineS
             raise ProgramError("spindle speed %r cannot be written" % (spindle,))
         program.add(spindle_lines(writer, Spindle(spindle)))
     program.write([Move(RAPID, state.x, state.z, y=state.y)])
-    program.write(moves)
+    if note:
+        program.add([writer.comment(note)])
+    if call is not None:
+        program.add(native_lines(writer, call))
+    else:
+        program.write(moves)
     program.add(writer.footer())
     return program.text()

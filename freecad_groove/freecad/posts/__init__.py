@@ -103,8 +103,9 @@ options), ``writer`` (the line writer), ``objects`` (what a post recognises
 among FreeCAD objects), ``program`` (one program's text: frame, tools,
 spindle, coolant, objects), ``path_commands`` (other objects' Paths as plain
 moves), ``grooves`` (a Groove op's grooves: native or expanded), ``pecking``
-(the pecking-cycle calls for plain grooves), ``reference_corner`` (the output's
-blade corner), ``errors`` (:class:`PostError`), ``program_file`` (the
+(the pecking-cycle calls for plain grooves: the engine decides, in
+engine/native/cycle93_pecking.py, as ``expand --native-cycles`` does),
+``reference_corner`` (the output's blade corner), ``errors`` (:class:`PostError`), ``program_file`` (the
 program written to its file, atomically). This module: :func:`build` and
 :func:`export`.
 """
