@@ -367,3 +367,19 @@ def test_cycle93_read_with_diameter_input_says_the_control_must_read_it_so():
     assert lines_after(text, "CYCLE93 70, 60", 2) == [
         "; CYCLE93 reads AXFA, DEPG, FAL1 and FAL2 as diameters: the control must too, --diameter-input",
         "CYCLE93(70, 60, 30, 50, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)"]
+
+
+def test_a_haas_g75_is_written_for_ab9_and_gsk():
+    ab9 = assert_reads_back(HAAS, "haas", "ab9")
+    assert G77.parse(lines_after(ab9, HAAS_CALL, 2)[1]) == G77(X=50.0, Z=-30.0, I=2.0, K=2.5, F=0.05, D=0.0)
+    gsk = assert_reads_back(HAAS, "haas", "gsk")
+    model = FanucG75.parse("\n".join(lines_after(gsk, HAAS_CALL, 2)))
+    assert (model.e, model.X, model.Z, model.P, model.Q, model.F) == (0.5, 50.0, -30.0, 2000, 2500, 0.05)
+
+
+def test_an_allen_bradley_plunge_in_one_peck_is_written_as_cycle93():
+    # from X52. Z-10. (radius 26) to X47. (23.5): one peck of 3 >= 2.5; VRT 1, the contour at radius 25;
+    # the call's F becomes the feed in force CYCLE93 cuts at
+    program = AB9.replace("G77 X44. Z-30. I1.5 K10. F0.06 D0.", "G77 X47. I3. F0.06 D0.")
+    text = assert_reads_back(program, "ab9", "sinumerik")
+    assert lines_after(text, "G77 X47. I3.", 2) == ["F0.06", "CYCLE93(25, -10, 3, 1.5, , , , , , , , , , 3, , 1, 1)"]
