@@ -193,7 +193,7 @@ class MachineTranslation(TranslatorBase):
         if limit_word is not None and self._limit(output, early, "LIMS="):
             return
         if speed_word is not None:
-            output.append("S" + self.writer.speed_text(speed))
+            output.append(self.writer.speed_word(speed))
 
     def _limit(self, output: List[str], early: List[str], what: str) -> bool:
         """Write the speed limit in force, the target's way; True when that wrote
@@ -235,9 +235,7 @@ class MachineTranslation(TranslatorBase):
         if on:
             output.extend(self._css_words(speed_word.value, limit_changed, early))
             return
-        output.append("G97")
-        if speed_word is not None:
-            output.append("S" + self.writer.speed_text(speed_word.value))
+        output.extend(self.writer.rpm_words(None if speed_word is None else speed_word.value))
 
     def _css_words(self, surface_speed: float, limit_changed: bool, early: List[str]) -> List[str]:
         """G96 with the surface speed and the limit in force, where the target writes it with G96 (or it changed)."""

@@ -137,7 +137,7 @@ from .input_controls import (
 )
 from .modal import TRACKED, ModalState
 from .moves import MachineState
-from .output.targets import program_target
+from .output.targets import program_target, with_g07_meaning
 from .output.writer import MAX_LINE, Writer
 from .reader import Block, parse_block
 from .settings import DEFAULT_SETTINGS, Settings
@@ -164,7 +164,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
                  tools: Optional[Tools] = None) -> None:
         self.control = input_control(dialect)  # raises on an unknown dialect
         # a mill-style program (X/Y/Z) on a mill target or a lathe target's mill twin; raises when there is none
-        output_target = program_target(target, self.control.mill)
+        output_target = with_g07_meaning(program_target(target, self.control.mill), settings.ab_g07_is_diameter)
         self.dialect = dialect
         self.settings = settings
         self.tools = tools
@@ -315,7 +315,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         stops_and_ends = self._m_codes(block, output)  # written after the motion
         self._motion(block, groups, output)
         if feed_word is not None:
-            output.append("F" + self.writer.f_word(state.feed))
+            output.append(self.writer.feed_word(state.feed))
         self._stops_and_ends(stops_and_ends, output)
         note = self._diameter_register(block) if self.control.tool_words == DIAMETER_REGISTER else None
         self._emit_early(block, early, output or block.comments or note)
