@@ -58,8 +58,9 @@ def files(*patterns):
 @pytest.mark.parametrize(
     "patterns, forbidden",
     [
-        (("freecad_groove/engine/**/*.py", "freecad_groove/__main__.py",
-          "freecad_groove/cli.py", "freecad_groove/cli_options.py", "freecad_groove/hooks.py"),
+        (("freecad_groove/engine/**/*.py", "freecad_groove/__main__.py", "freecad_groove/cli.py",
+          "freecad_groove/cli_io.py", "freecad_groove/cli_options.py", "freecad_groove/cli_parameters.py",
+          "freecad_groove/hooks.py"),
          FREECAD | GUI | FREECAD_LAYER | GUI_LAYER | VERIFY_LAYER),
         (("freecad_groove/verify/*.py",), FREECAD | GUI | FREECAD_LAYER | GUI_LAYER),
         (("freecad_groove/cli_verify.py",), FREECAD | GUI | FREECAD_LAYER | GUI_LAYER),
