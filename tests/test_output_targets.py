@@ -218,3 +218,38 @@ def test_a_siemens_tool_with_its_own_edge_takes_its_own_offset_register_on_fanuc
 def test_a_fanuc_offset_of_another_tool_has_no_siemens_d_number():
     with pytest.raises(ProgramError, match=r"^T5 with the offset of tool 12: a Siemens D number is a cutting edge "):
         lines("T0512\nG0 X50. Z2.\nM30\n", "sinumerik")
+
+
+# ---------------------------------------------------------------- mill-style programs
+
+
+def test_the_milltronics_example_expanded_for_milltronics_reads_back_as_the_same_moves():
+    # the seed's facing and pocket, expanded into Milltronics' own G0/G1/G2/G3 (3 decimals in mm, 4 in inch; its
+    # comments in parentheses), read again by the Milltronics reader: the moves of the LinuxCNC translation
+    require_rs274()
+    with open(os.path.join(ROOT, "examples", "milltronics_g33_g34.nc")) as f:
+        program = f.read()
+    settings = Settings(mill_tool_diameter=0.25)
+    written = translate_program(program, "milltronics", settings, target="milltronics")
+    assert written.splitlines()[:2] == [
+        "(PROGRAM: milltronics program, cycles expanded for milltronics by freecad-groove)", "G21 G90 G40"]
+    direct = translate_program(program, "milltronics", settings)
+    again = translate_program(written, "milltronics", settings)
+    assert same_canon_xyz(run_rs274(again, tool_table={1}, xyz=True), run_rs274(direct, tool_table={1}, xyz=True))
+
+
+@pytest.mark.parametrize("to, reader", [("linuxcnc", None), ("fanuc", None)])
+def test_the_grinder_example_is_written_on_the_mill_twins(to, reader):
+    with open(os.path.join(ROOT, "examples", "ab9_g83.nc")) as f:
+        program = f.read()
+    out = translate_program(program, "ab9grind", target=to).splitlines()
+    setup = {"linuxcnc": "G17 G21 G90 G91.1 G40", "fanuc": "G17 G90 G40"}[to]
+    assert setup in out[:4] and ("o<dress12> call" if to == "linuxcnc" else "M98 P12") in out
+
+
+def same_canon_xyz(a, b, tol=1e-3):
+    assert len(a) == len(b), (len(a), len(b))
+    for one, two in zip(a, b):
+        assert one[0] == two[0] and all(math.isclose(p, q, abs_tol=tol) for p, q in zip(one[1:4], two[1:4])), (
+            one, two)
+    return True
