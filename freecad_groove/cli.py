@@ -78,8 +78,8 @@ from .cli_parameters import add_parameter_options, parameter_lines
 from .cli_verify import add_verify_parsers
 from .cli_verify import run as run_verify
 from .engine import registry
-from .engine.input_controls import DIALECTS, INPUT_CONTROLS
-from .engine.output.targets import TARGETS
+from .engine.input_controls import DIALECTS, INPUT_CONTROLS, input_control
+from .engine.output.targets import TARGETS, program_target
 from .engine.registry import CALL, CycleEntry, CycleWord
 from .engine.warnings import CycleWarning, cycle_warnings
 
@@ -217,7 +217,6 @@ def _emit(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]) ->
     are appended to ``warnings`` (on line 1)."""
     from .engine.errors import CycleError, ProgramError
     from .engine.output.program import write_program
-    from .engine.output.targets import program_target
     from .engine.tool_table import BLADE_UNKNOWN
 
     entry = registry.entry(args.cycle_name)
@@ -268,6 +267,10 @@ def _expand(args, warnings):
 
     tools = tool_table(args)
     name = program_name(args.program)
+    try:  # a mill-style program for a lathe target, or the reverse: refused before anything is read
+        program_target(args.to, input_control(args.dialect).mill)
+    except ValueError as exc:
+        raise Failure(name, 0, "--to %s: %s" % (args.to, exc)) from None
     with open_program(args.program, name) as text:
         chunks = iter_translation(
             read_lines(text, name),
