@@ -53,6 +53,7 @@ from typing import Callable, List, Tuple
 from . import __version__
 from .cli_io import (
     Failure,
+    check_not_the_program,
     open_program,
     program_name,
     quiet_stdout,
@@ -267,6 +268,7 @@ def _expand(args, warnings):
 
     tools = tool_table(args)
     name = program_name(args.program)
+    check_not_the_program(args.output, args.program)
     try:  # a mill-style program for a lathe target, or the reverse: refused before anything is read
         program_target(args.to, input_control(args.dialect).mill)
     except ValueError as exc:

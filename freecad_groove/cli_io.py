@@ -42,6 +42,19 @@ def one_line(text: object) -> str:
     return " ".join(str(text).split())
 
 
+def check_not_the_program(out: Optional[str], program: str) -> None:
+    """A Failure when OUT is the program being read (the same file, through any
+    name or link): the translation would replace its own source."""
+    if out in (None, "-") or program == "-":
+        return
+    try:
+        same = os.path.samefile(out, program)
+    except OSError:  # OUT does not exist yet (or cannot be looked at: the write says why)
+        return
+    if same:
+        raise Failure(out, 0, "-o names the program being read (%s): write the output to another file" % program)
+
+
 def read_text(path: str, what: str) -> Tuple[str, str]:
     """A small text file (the tool table) read whole: UTF-8, else Latin-1."""
     name = program_name(path)

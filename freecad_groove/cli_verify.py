@@ -107,10 +107,11 @@ def _check(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]):
 
 def _drawer(args: argparse.Namespace):
     """plot's draw function, checked before the simulation: the picture's format and matplotlib."""
-    from .cli_io import Failure
+    from .cli_io import Failure, check_not_the_program
 
     if not args.output.lower().endswith((".svg", ".png")):
         raise Failure(args.output, 0, "the picture's name must end in .svg or .png")
+    check_not_the_program(args.output, args.program)
     try:
         from .verify.plot import draw
     except ImportError as exc:

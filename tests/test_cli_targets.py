@@ -24,8 +24,8 @@ def test_expand_help_lists_every_target():
     ("examples/ab9_g77.nc", "ab9", "ab9grind"),
 ])
 def test_a_program_for_a_target_of_the_other_kind_is_refused_naming_the_option(example, dialect, to):
-    status, out, err = run_inline(["expand", example, "--dialect", dialect, "--to", to, "--tool-diameter", "0.25"]
-                                  if dialect == "milltronics" else ["expand", example, "--dialect", dialect, "--to", to])
+    tool = ["--tool-diameter", "0.25"] if dialect == "milltronics" else []
+    status, out, err = run_inline(["expand", example, "--dialect", dialect, "--to", to] + tool)
     assert (status, out) == (2, "")
     assert err.startswith("%s:0: --to %s: %s is a " % (example, to, to)) and err.count("\n") == 1
     assert "internal error" not in err
@@ -47,3 +47,17 @@ def test_a_spindle_speed_that_would_be_written_as_zero_is_refused(tmp_path):
     status, out, err = run_inline(["expand", str(path), "--dialect", "sinumerik"])
     assert (status, out) == (2, "")
     assert err.endswith("s.mpf:1: S0.000001 rounds to 0 in the output (4 decimals): the spindle would not turn\n")
+
+
+def test_output_naming_the_program_itself_is_refused_and_the_program_kept(tmp_path):
+    program = tmp_path / "part.nc"
+    text = "G21 G98\nG0 X50. Z2.\nM30\n"
+    program.write_text(text)
+    link = tmp_path / "same.nc"
+    link.symlink_to("part.nc")
+    for out in (program, link):
+        status, stdout, err = run_inline(["expand", str(program), "--dialect", "fanuc", "-o", str(out)])
+        assert (status, stdout) == (2, "")
+        assert err == "%s:0: -o names the program being read (%s): write the output to another file\n" % (
+            out, program)
+    assert program.read_text() == text and sorted(p.name for p in tmp_path.iterdir()) == ["part.nc", "same.nc"]
