@@ -8,7 +8,6 @@ import codecs
 import contextlib
 import io
 import os
-import shutil
 import sys
 import tempfile
 from typing import Any, Iterable, Iterator, Optional, Tuple
@@ -16,6 +15,10 @@ from typing import Any, Iterable, Iterator, Optional, Tuple
 from .engine.output.files import write_chunks_atomically
 
 CHUNK = 1 << 16  # characters or bytes read at a time
+# Bounds on what is read, so that no input (a 40 MB line, /dev/zero, an endless pipe) holds memory or runs on:
+MAX_LINE_CHARS = 1 << 16  # characters in one line of a program (a 4300-digit number fits many times over)
+MAX_PROGRAM_BYTES = 1 << 30  # a program, read from a file or copied from standard input
+MAX_TABLE_BYTES = 1 << 24  # a tool table
 
 
 class Failure(Exception):
@@ -55,21 +58,35 @@ def check_not_the_program(out: Optional[str], program: str) -> None:
         raise Failure(out, 0, "-o names the program being read (%s): write the output to another file" % program)
 
 
-def read_text(path: str, what: str) -> Tuple[str, str]:
-    """A small text file (the tool table) read whole: UTF-8, else Latin-1."""
+def read_text(path: str, what: str, limit: Optional[int] = None) -> Tuple[str, str]:
+    """A small text file (the tool table) read whole, at most ``limit`` bytes
+    (default MAX_TABLE_BYTES): UTF-8, else Latin-1; a NUL byte is refused (not a
+    text file)."""
     name = program_name(path)
+    limit = MAX_TABLE_BYTES if limit is None else limit
     try:
         if path == "-":
-            data = sys.stdin.buffer.read()
+            data = sys.stdin.buffer.read(limit + 1)
         else:
             with open(path, "rb") as f:
-                data = f.read()
+                data = f.read(limit + 1)
     except OSError as exc:
         raise Failure(name, 0, "cannot read %s: %s" % (what, exc.strerror or exc)) from None
+    if b"\0" in data:
+        raise Failure(name, data.count(b"\n", 0, data.index(b"\0")) + 1, "a NUL byte: %s is not a text file" % what)
+    if len(data) > limit:
+        raise Failure(name, 0, "%s is longer than %d bytes" % (what, limit))
     try:
         return name, data.decode("utf-8")
     except UnicodeDecodeError:
         return name, data.decode("latin-1")
+
+
+def check_line_lengths(text: str, name: str) -> None:
+    """A Failure on the first line of a program read whole that is longer than MAX_LINE_CHARS."""
+    for number, line in enumerate(text.splitlines(), 1):
+        if len(line) > MAX_LINE_CHARS:
+            raise Failure(name, number, "the line is longer than %d characters" % MAX_LINE_CHARS)
 
 
 def tool_table(args: Any) -> Any:
@@ -108,11 +125,11 @@ def open_program(path: str, name: str) -> Iterator[io.TextIOWrapper]:
             source = sys.stdin.buffer if path == "-" else stack.enter_context(open(path, "rb"))
             if not source.seekable():
                 spool = stack.enter_context(tempfile.TemporaryFile())
-                shutil.copyfileobj(source, spool, CHUNK)
+                _copy_bounded(source, spool, name)
                 spool.seek(0)
                 source = spool
             begin = source.tell()  # standard input redirected from a file may be read from further on
-            encoding = text_encoding(source)
+            encoding = text_encoding(source, name)
             source.seek(begin)
         except OSError as exc:
             raise Failure(name, 0, "cannot read the program: %s" % (exc.strerror or exc)) from None
@@ -123,23 +140,56 @@ def open_program(path: str, name: str) -> Iterator[io.TextIOWrapper]:
             text.detach()  # the file is closed by the stack (standard input is not closed)
 
 
-def text_encoding(source: Any) -> str:
-    """utf-8 when the whole binary file ``source`` decodes as UTF-8, else latin-1."""
+def _checked_chunks(source: Any, name: str) -> Iterator[bytes]:
+    """The program's bytes a chunk at a time; a Failure at a NUL byte (not a text
+    file: /dev/zero) or beyond MAX_PROGRAM_BYTES."""
+    size = lines = 0
+    for chunk in iter(lambda: source.read(CHUNK), b""):
+        if b"\0" in chunk:
+            raise Failure(name, lines + chunk.count(b"\n", 0, chunk.index(b"\0")) + 1,
+                          "a NUL byte: the program is not a text file")
+        size += len(chunk)
+        lines += chunk.count(b"\n")
+        if size > MAX_PROGRAM_BYTES:
+            raise Failure(name, 0, "the program is longer than %d bytes" % MAX_PROGRAM_BYTES)
+        yield chunk
+
+
+def _copy_bounded(source: Any, spool: Any, name: str) -> None:
+    """Standard input (or a pipe) copied to ``spool``, within the program's bounds."""
+    for chunk in _checked_chunks(source, name):
+        spool.write(chunk)
+
+
+def text_encoding(source: Any, name: str = "PROGRAM") -> str:
+    """utf-8 when the whole binary file ``source`` decodes as UTF-8, else latin-1
+    (a Failure for a file that is not a text program: _checked_chunks)."""
     decoder = codecs.getincrementaldecoder("utf-8")()
     try:
-        for chunk in iter(lambda: source.read(CHUNK), b""):
+        for chunk in _checked_chunks(source, name):
             decoder.decode(chunk)
         decoder.decode(b"", True)
     except UnicodeDecodeError:
+        for _chunk in _checked_chunks(source, name):  # the rest is checked all the same
+            pass
         return "latin-1"
     return "utf-8"
 
 
-def read_lines(text: Iterable[str], name: str) -> Iterator[str]:
-    """The lines of ``text`` one by one; a read error as a Failure (not an
-    OSError, which the output would take for its own)."""
+def read_lines(text: Any, name: str) -> Iterator[str]:
+    """The lines of the text file ``text`` one by one, each at most
+    MAX_LINE_CHARS characters (a longer one is a Failure on its line, read no
+    further); a read error as a Failure (not an OSError, which the output would
+    take for its own)."""
+    number = 0
     try:
-        for line in text:
+        while True:
+            line = text.readline(MAX_LINE_CHARS + 1)
+            if not line:
+                return
+            number += 1
+            if len(line) > MAX_LINE_CHARS and not line.endswith(("\n", "\r")):
+                raise Failure(name, number, "the line is longer than %d characters" % MAX_LINE_CHARS)
             yield line
     except OSError as exc:
         raise Failure(name, 0, "cannot read the program: %s" % (exc.strerror or exc)) from None

@@ -80,7 +80,7 @@ def _missing(exc: ImportError, packages: Tuple[str, ...]) -> None:
 
 def _check(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]):
     """The ProgramCheck of the program the options name; Failure on bad input."""
-    from .cli_io import Failure, program_name, read_text, tool_table
+    from .cli_io import MAX_PROGRAM_BYTES, Failure, check_line_lengths, program_name, read_text, tool_table
     from .cli_options import start_state
     from .engine.errors import ProgramError
 
@@ -95,7 +95,8 @@ def _check(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]):
         _missing(exc, ("shapely", "numpy"))
         raise Failure(name, 0, SHAPELY_MISSING) from None
     tools = tool_table(args)
-    name, text = read_text(args.program, "the program")
+    name, text = read_text(args.program, "the program", MAX_PROGRAM_BYTES)
+    check_line_lengths(text, name)
     try:
         record = record_program(text, args.dialect, settings_from(args), start_state(args), tools)
         warnings.extend(record.warnings)

@@ -61,3 +61,41 @@ def test_output_naming_the_program_itself_is_refused_and_the_program_kept(tmp_pa
         assert err == "%s:0: -o names the program being read (%s): write the output to another file\n" % (
             out, program)
     assert program.read_text() == text and sorted(p.name for p in tmp_path.iterdir()) == ["part.nc", "same.nc"]
+
+
+# ---------------------------------------------------------------- bounded input
+
+
+@pytest.mark.parametrize("command", ["expand", "verify"])
+def test_a_line_longer_than_the_bound_is_refused_on_its_line(tmp_path, command):
+    path = tmp_path / "long.nc"
+    path.write_text("G21 G98\nG0 X" + "1" * 70000 + ".\nM30\n")
+    status, out, err = run_inline([command, str(path), "--dialect", "fanuc", "--tool-width", "3"])
+    assert (status, out) == (2, "")
+    assert err == "%s:2: the line is longer than 65536 characters\n" % path
+
+
+def test_a_program_that_is_not_text_is_refused_at_its_first_nul_byte(tmp_path):
+    path = tmp_path / "zeros.nc"
+    path.write_bytes(b"G21 G98\nG0 X1.\n\0\0\0")
+    status, out, err = run_inline(["expand", str(path), "--dialect", "fanuc"])
+    assert (status, out, err) == (2, "", "%s:3: a NUL byte: the program is not a text file\n" % path)
+
+
+def test_dev_zero_as_the_program_or_the_tool_table_is_refused_at_once():
+    status, out, err = run_inline(["expand", "/dev/zero", "--dialect", "fanuc"])
+    assert (status, out, err) == (2, "", "/dev/zero:1: a NUL byte: the program is not a text file\n")
+    status, out, err = run_inline(["expand", "examples/fanuc_g75.nc", "--dialect", "fanuc", "--tool-width", "3",
+                                   "--tool-table", "/dev/zero"])
+    assert (status, out, err) == (2, "", "/dev/zero:1: a NUL byte: the tool table is not a text file\n")
+
+
+def test_a_tool_table_longer_than_the_bound_is_refused(tmp_path, monkeypatch):
+    from freecad_groove import cli_io
+
+    monkeypatch.setattr(cli_io, "MAX_TABLE_BYTES", 100)
+    path = tmp_path / "tools.tbl"
+    path.write_text("5 3.0 0.2 minus\n" * 10)
+    status, out, err = run_inline(["expand", "examples/fanuc_g75.nc", "--dialect", "fanuc", "--tool-width", "3",
+                                   "--tool-table", str(path)])
+    assert (status, out, err) == (2, "", "%s:0: the tool table is longer than 100 bytes\n" % path)
