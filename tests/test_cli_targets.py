@@ -99,3 +99,31 @@ def test_a_tool_table_longer_than_the_bound_is_refused(tmp_path, monkeypatch):
     status, out, err = run_inline(["expand", "examples/fanuc_g75.nc", "--dialect", "fanuc", "--tool-width", "3",
                                    "--tool-table", str(path)])
     assert (status, out, err) == (2, "", "%s:0: the tool table is longer than 100 bytes\n" % path)
+
+
+# ---------------------------------------------------------------- words that once made internal errors
+
+
+@pytest.mark.parametrize("dialect", ["fanuc", "haas", "gsk"])
+def test_a_g_word_with_a_sign_is_refused_naming_it(tmp_path, dialect):
+    path = tmp_path / "g.nc"
+    path.write_text("G21 G98\nG-.5 X1.\nM30\n")
+    status, out, err = run_inline(["expand", str(path), "--dialect", dialect])
+    assert (status, out) == (2, "")
+    assert err == "%s:2: G-.5 is not a G code: a G word is a whole number, or one with a decimal such as G7.1\n" % path
+
+
+@pytest.mark.parametrize("dialect, block, message", [
+    ("fanuc", "M%s T0101", "M9999999999... is not supported (machine-specific M codes are not translated)"),
+    ("sinumerik", "T5 D1 M%s", "M9999999999... is not supported (machine-specific M codes are not translated)"),
+    # Milltronics reads T with M6 only: the M word is not M6
+    ("milltronics", "T1 M%s", "T1 without M6: a tool selected for a later change is not translated; program the "
+                              "tool change as T1 M6 in one block"),
+])
+def test_an_m_word_too_large_for_a_float_is_refused_in_one_line(tmp_path, dialect, block, message):
+    path = tmp_path / "m.nc"
+    path.write_text(("G21\n" if dialect != "sinumerik" else "") + block % ("9" * 400) + "\nM30\n")
+    tool = ["--tool-diameter", "1"] if dialect == "milltronics" else []
+    status, out, err = run_inline(["expand", str(path), "--dialect", dialect] + tool)
+    line = 1 if dialect == "sinumerik" else 2
+    assert (status, out, err) == (2, "", "%s:%d: %s\n" % (path, line, message))

@@ -268,7 +268,11 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         """The block's G codes by modal group, from the input control's table."""
         groups: Groups = {}
         for word in block.all("G"):
-            code = self.codes.get(g_code_key(word.text))
+            key = g_code_key(word.text)
+            if key is None:
+                self._fail("G%s is not a G code: a G word is a whole number, or one with a decimal such as G7.1"
+                           % word.text)
+            code = self.codes.get(key)
             if code is None:
                 self._fail("G%s is not supported in a %s program" % (word.text, self.dialect))
             if code.group == REFUSED:
