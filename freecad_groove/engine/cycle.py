@@ -22,7 +22,7 @@ from .moves import MachineState, Move
 from .settings import DEFAULT_SETTINGS, Settings
 from .warnings import CycleWarning
 
-__all__ = ["CALL", "FORMS", "G_WORD", "HOOKS", "REQUIRED_HOOKS", "Cycle", "Memory", "gives_hook"]
+__all__ = ["CALL", "FORMS", "G_WORD", "REQUIRED_HOOKS", "Cycle", "Memory", "gives_hook"]
 
 CALL = "call"  # FORM: the Siemens call syntax NAME(p1, p2, ...)
 G_WORD = "g-word"  # FORM: the G code NAME among letter-and-number words
@@ -115,10 +115,7 @@ class Cycle:
         return context
 
 
-# the hooks a cycle must give, and every hook, by name (register() checks the first)
-REQUIRED_HOOKS = ("parse", "emit", "expand")
-HOOKS = REQUIRED_HOOKS + ("validate", "warnings", "note", "with_earlier", "remembered", "region_ends",
-                          "check_region_block")
+REQUIRED_HOOKS = ("parse", "emit", "expand")  # the hooks a cycle must give (register() checks)
 
 
 def gives_hook(cycle: type, name: str) -> bool:
