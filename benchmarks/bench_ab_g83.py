@@ -17,7 +17,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 from freecad_groove.engine.cycles.ab_g83 import G83  # noqa: E402
 from freecad_groove.engine.moves import MachineState  # noqa: E402
-from freecad_groove.engine.targets import write_program  # noqa: E402
+from freecad_groove.engine.output.program import write_program  # noqa: E402
 
 
 def best_of(fn, rounds=3):

@@ -21,7 +21,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 from freecad_groove.engine import GroovingTool, MachineState, Settings  # noqa: E402
 from freecad_groove.engine.cycles.ab_g77 import G77  # noqa: E402
-from freecad_groove.engine.targets import write_moves  # noqa: E402
+from freecad_groove.engine.output.program import write_moves  # noqa: E402
 from freecad_groove.engine.translator import translate_program  # noqa: E402
 
 

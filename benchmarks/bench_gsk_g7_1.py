@@ -18,7 +18,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 from freecad_groove.engine.cycles.gsk_g7_1 import GskG7_1  # noqa: E402
 from freecad_groove.engine.moves import MachineState  # noqa: E402
-from freecad_groove.engine.targets import write_moves  # noqa: E402
+from freecad_groove.engine.output.program import write_moves  # noqa: E402
 
 
 def region(arcs: int, passes: int) -> GskG7_1:

@@ -17,8 +17,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 from freecad_groove.engine.cycles.milltronics import G33, G34  # noqa: E402
 from freecad_groove.engine.moves import MachineState  # noqa: E402
+from freecad_groove.engine.output.program import write_program  # noqa: E402
 from freecad_groove.engine.settings import Settings  # noqa: E402
-from freecad_groove.engine.targets import write_program  # noqa: E402
 
 
 def best_of(fn, rounds=3):

@@ -234,7 +234,7 @@ def written_moves(moves, metric=True):
     X and Z equal the previous ones is dropped (it does not move the tool), so
     the list compares one to one with rs274's canonical moves."""
     from freecad_groove.engine.moves import DWELL
-    from freecad_groove.engine.targets import Writer
+    from freecad_groove.engine.output.writer import Writer
 
     w = Writer("linuxcnc", metric)
     out, prev = [], None

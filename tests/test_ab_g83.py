@@ -335,8 +335,8 @@ M30
 def test_a_grinder_program_becomes_a_mill_program_for_linuxcnc():
     # Y1 -> 0.8: J 0.1 at the start, Q (= J) 0.1 at X50 reaching Y0.8, then one stroke back at depth.
     assert translate_program(SMALL, "ab9grind", target="linuxcnc").splitlines() == [
-        "G17 G21 G90 G91.1 G40",
         "(PROGRAM: ab9grind program, cycles expanded for linuxcnc-mill by freecad-groove)",
+        "G17 G21 G90 G91.1 G40",
         "G21 G94",
         "G0 X0. Y1. Z0.",
         "(G83.1 X50. Y0.8 J0.1 Z0. K1. F20. E3000. P7 D1)",
@@ -421,7 +421,7 @@ def test_emit_expand_writes_a_mill_program_from_the_start_x_y_z():
     assert proc.returncode == 0, proc.stderr
     lines = proc.stdout.decode().splitlines()
     # X4 is a plain coordinate (not a diameter): the J pick at X4, one stroke to X20 at depth
-    assert lines[0] == "G17 G21 G90 G91.1 G40 G94" and lines[2:] == ["G0 X4. Y0. Z0.", "G1 Y-0.1 F5.", "X20.", "M2"]
+    assert lines[1] == "G17 G21 G90 G91.1 G40 G94" and lines[2:] == ["G0 X4. Y0. Z0.", "G1 Y-0.1 F5.", "X20.", "M2"]
 
 
 def test_a_units_change_converts_the_y_position():

@@ -18,7 +18,7 @@ from freecad_groove import verify as sim
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.cycles.cycle93_constants import REENTRY_CLEARANCE_MM
-from freecad_groove.engine.targets import write_program
+from freecad_groove.engine.output.program import write_program
 
 SEED_CALL = "CYCLE93(35, 60, 30, 25, 12, 15, 16, 0, 0, -2, -2, 1, 1, 10, 1, 5, 0)"
 

@@ -65,7 +65,7 @@ def test_an_expanded_dress_is_refused_for_the_9_series():
 def test_plain_moves_are_written_as_they_are_and_linuxcnc_has_no_native_cycle():
     moves = PlainMoves("Profile", [Move(RAPID, 1.0, 2.0, y=30.0), Move(FEED, 4.0, 2.0, 50.0, y=30.0)])
     assert grind_program([moves], "linuxcnc", False, "Job").splitlines() == [
-        "G17 G21 G90 G91.1 G40 G94", "(Job)", "(Profile)", "G0 X1. Y30. Z2.", "G1 X4. F50.", "M2"]
+        "(Job)", "G17 G21 G90 G91.1 G40 G94", "(Profile)", "G0 X1. Y30. Z2.", "G1 X4. F50.", "M2"]
     with pytest.raises(ProgramError, match="linuxcnc has no G83 cycle"):
         grind_program([item()], "linuxcnc", True, "Job")
 
@@ -115,8 +115,8 @@ def test_rs274_runs_the_linuxcnc_program_with_its_tool_change_and_spindle():
 
 
 @pytest.mark.parametrize("wheel, target, message", [
-    (WheelChange("TC: Wheel", 3, 1500.5), "ab9grind", r"^TC: Wheel: spindle speed 1500.5: a 9/Series S word is a "
-                                                     r"whole number of rpm$"),
+    (WheelChange("TC: Wheel", 3, 1500.5), "ab9grind", r"^TC: Wheel: S1500.5: Allen-Bradley S words are whole "
+                                                     r"numbers \(rpm, or the surface speed\)$"),
     (WheelChange("TC: Wheel", 100, 1500.0), "ab9grind", r"^TC: Wheel: tool number 100 cannot be written \(1..99\)$"),
     (WheelChange("TC: Wheel", 0, 1500.0), "linuxcnc", r"^TC: Wheel: tool number 0 cannot be written \(1..99999\)$"),
     (WheelChange("TC: Wheel", 3, 1e6), "linuxcnc", r"^TC: Wheel: spindle speed 1000000.0 cannot be written$"),

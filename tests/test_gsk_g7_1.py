@@ -21,7 +21,8 @@ from freecad_groove.engine.cycles.gsk_g7_1 import GskG7_1, PathBlock, arc_points
 from freecad_groove.engine.errors import ProgramError
 from freecad_groove.engine.moves import MachineState
 from freecad_groove.engine.numbers import ARC_CHORD_TOLERANCE, format_decimal
-from freecad_groove.engine.targets import Writer, write_program
+from freecad_groove.engine.output.program import write_program
+from freecad_groove.engine.output.writer import Writer
 from freecad_groove.engine.translator import translate_program
 
 C_FEED = 100.0 * 180.0 / (math.pi * 20.0)
@@ -196,7 +197,7 @@ def test_linuxcnc_c_writes_the_region_and_rs274_runs_it_move_for_move():
     start = state(25.0, feed=50.0)
     moves = m.expand(start)
     text = write_program(moves, "linuxcnc-c", start, title="L slot")
-    assert text.startswith("G18 G7 G21 G90 G91.1 G40 G94\n")
+    assert text.startswith("(L slot)\nG18 G7 G21 G90 G91.1 G40 G94\n")
     # C modal like X and Z; F of the C move in degrees per minute
     assert "G1 X38.2 F50.\nZ-10. F100.\nC90. F286.478898\nG0 X42.\nZ0. C0.\n" in text
     canon = run_rs274(text, rotary=True)
@@ -227,7 +228,7 @@ def test_an_oblique_move_runs_the_developed_feed_on_both_c_targets():
 
 def test_a_lathe_target_refuses_c_and_names_the_targets_with_c():
     moves = region("G7.1 C20.").expand(state(18.0, feed=100.0))
-    with pytest.raises(ProgramError, match=r"no C axis \(targets with C: linuxcnc-c, fanuc-c\)"):
+    with pytest.raises(ProgramError, match=r"no C axis \(targets with C: gsk, linuxcnc-c, fanuc-c\)"):
         Writer("linuxcnc").write(moves)
 
 
@@ -290,7 +291,8 @@ def test_c_for_a_target_without_c_axis_is_one_error_line_on_the_command_line(tmp
     path.write_text(GSK_PROGRAM)
     status, out, err = run_inline(["expand", str(path), "--dialect", "gsk", "--to", "linuxcnc"])
     assert (status, out) == (2, "")
-    assert err.endswith("/slot.nc:4: C0.: the output linuxcnc has no C axis (targets with C: linuxcnc-c, fanuc-c)\n")
+    assert err.endswith("/slot.nc:4: C0.: the output linuxcnc has no C axis "
+                        "(targets with C: gsk, linuxcnc-c, fanuc-c)\n")
     assert err.count("\n") == 1
     status, out, err = run_inline(["expand", str(path), "--dialect", "gsk", "--to", "fanuc-c"])
     assert status == 0 and "G01 X38.2 F100.\nZ-10.\nC90. F286.478898\n" in out

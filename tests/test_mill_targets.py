@@ -7,13 +7,28 @@ from rs274 import require_rs274, run_rs274
 from freecad_groove.engine.cycles.ab_g83 import G83_1
 from freecad_groove.engine.errors import ProgramError
 from freecad_groove.engine.moves import DRESS, FEED, MachineState, Move
-from freecad_groove.engine.targets import Writer, mill_target, write_program
+from freecad_groove.engine.output.program import write_program
+from freecad_groove.engine.output.targets import program_target
+from freecad_groove.engine.output.writer import Writer
 
 
 def test_mill_twins_of_the_targets():
-    assert mill_target("linuxcnc") == "linuxcnc-mill"
-    assert mill_target("fanuc") == "fanuc-mill"
-    assert mill_target("fanuc-mill") == "fanuc-mill"
+    assert program_target("linuxcnc", mill=True).name == "linuxcnc-mill"
+    assert program_target("fanuc", mill=True).name == "fanuc-mill"
+    assert program_target("fanuc-mill", mill=True).name == "fanuc-mill"
+
+
+@pytest.mark.parametrize("name", ["sinumerik", "haas", "ab9", "gsk", "linuxcnc-c", "fanuc-c"])
+def test_a_lathe_target_without_a_mill_twin_refuses_a_mill_style_program_naming_the_targets_that_take_it(name):
+    with pytest.raises(ValueError, match=r"^%s is a lathe target: a mill-style program \(X/Y/Z\) cannot be written "
+                       r"for it \(targets for it: linuxcnc, fanuc, milltronics, ab9grind\)$" % name):
+        program_target(name, mill=True)
+
+
+@pytest.mark.parametrize("name", ["milltronics", "ab9grind", "linuxcnc-mill"])
+def test_a_mill_target_refuses_a_lathe_program(name):
+    with pytest.raises(ValueError, match=r"^%s is a mill target: a lathe program \(X/Z\) cannot" % name):
+        program_target(name, mill=False)
 
 
 def test_linuxcnc_mill_writes_g17_plain_x_y_and_the_dress_call():

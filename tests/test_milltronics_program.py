@@ -32,7 +32,7 @@ N9 M30
 
 def test_the_seed_program_expands_to_the_engine_moves_in_the_xy_plane():
     lines = translate_program(SEED, "milltronics", QUARTER, target="linuxcnc").splitlines()
-    assert lines[0] == "G17 G21 G90 G91.1 G40 G94"  # feed per minute: a mill's programs have no G94
+    assert lines[1] == "G17 G21 G90 G91.1 G40 G94"  # feed per minute: a mill's programs have no G94
     assert lines[2:9] == ["N1 G20", "N3 G0 X1. Y2. Z1.", "N4 F20.",
                           "N5 (P151=1: for the G33/G34 that follow)", "N6 (P152=3: for the G33/G34 that follow)",
                           "N7 (P155=.1: for the G33/G34 that follow)", "N8 (G33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5)"]

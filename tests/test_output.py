@@ -12,8 +12,8 @@ import stat
 
 import pytest
 
-from freecad_groove.engine import output
-from freecad_groove.engine.output import write_atomically
+from freecad_groove.engine.output import files as output
+from freecad_groove.engine.output.files import write_atomically
 
 TEMP_NAME = re.compile(r"^\.(?P<name>.+)\.[^.]+\.tmp\Z")
 

@@ -17,7 +17,8 @@ from freecad_groove.engine.reader import parse_block
 from freecad_groove.engine.settings import Settings
 from freecad_groove.engine.translator import Translator, translate_program
 
-LINUXCNC_HEAD = ["G18 G7 G21 G90 G91.1 G40", "(PROGRAM: %s program, cycles expanded for linuxcnc by freecad-groove)"]
+# the title first, then the setup line (every target's programs open so: output/writer.py Writer.header)
+LINUXCNC_HEAD = ["(PROGRAM: %s program, cycles expanded for linuxcnc by freecad-groove)", "G18 G7 G21 G90 G91.1 G40"]
 # The seed's blade (examples/tools.tbl, T5). CYCLE93 is refused without a blade, so the helpers below
 # translate with this one unless a test passes its own settings (tests/test_tool_table.py: the blade rules).
 BLADE = Settings(tool=GroovingTool(3.0, 0.2))
@@ -29,7 +30,7 @@ def body(text, dialect, **kw):
     """The translated lines after the LinuxCNC header and title."""
     kw.setdefault("settings", BLADE)
     lines = translate_program(text, dialect, **kw).splitlines()
-    assert lines[:2] == [LINUXCNC_HEAD[0], LINUXCNC_HEAD[1] % dialect]
+    assert lines[:2] == [LINUXCNC_HEAD[0] % dialect, LINUXCNC_HEAD[1]]
     return lines[2:]
 
 
@@ -229,7 +230,8 @@ def test_tool_words():
     assert body("T5", "sinumerik") == ["T5 M6 G43", "M2"]
     assert body("T5\nD0\nD1", "sinumerik") == ["T5 M6 G43", "G49", "G43", "M2"]
     fanuc = translate_program("T5 D1\nD0", "sinumerik", target="fanuc").splitlines()
-    assert fanuc[-4:] == ["T0501", "T0500", "M30", "%"]
+    # D1, the tool's own first edge: its own offset register (T0501 would apply register 1, another tool's)
+    assert fanuc[-4:] == ["T0505", "T0500", "M30", "%"]
     assert "T12: write the tool and offset" in str(error("T12", "fanuc"))
     assert "second cutting edge" in str(error("T5 D2", "sinumerik"))
     assert "M6 is added" in str(error("T0101 M06", "fanuc"))
@@ -276,7 +278,7 @@ def test_long_comments_fit_linuxcnc_blocks():
     from rs274 import require_rs274, run_rs274
 
     require_rs274()
-    run_rs274("\n".join([LINUXCNC_HEAD[0]] + lines) + "\n")
+    run_rs274("\n".join([LINUXCNC_HEAD[1]] + lines) + "\n")
 
 
 def test_o_numbers():
@@ -284,7 +286,7 @@ def test_o_numbers():
     assert out[:2] == ["%", "O1234 (PROGRAM: fanuc program O1234, cycles expanded for fanuc by freecad-groove)"]
     assert "(NAME)" in out
     out = translate_program("O1234\nM30", "haas").splitlines()
-    assert out[1] == "(PROGRAM: haas program O1234, cycles expanded for linuxcnc by freecad-groove)"
+    assert out[0] == "(PROGRAM: haas program O1234, cycles expanded for linuxcnc by freecad-groove)"
     assert out[2:] == ["M2"]
     e = error("O1\nG0 X1. Z1.\nO2", "fanuc")
     assert e.line == 3 and "second O" in str(e)
@@ -294,14 +296,14 @@ def test_spindle_speed_limit_and_css():
     text = "G50 S2500\nG96 S200 M3\nG97 S500\nG96 S180\nG50 S2000\nM30"
     assert body(text, "fanuc") == [
         "(G50 S2500: spindle limit for G96)",
-        "G96 S200 D2500 M3",
+        "G96 D2500 S200 M3",
         "G97 S500",
-        "G96 S180 D2500",
-        "G96 S180 D2000",
+        "G96 D2500 S180",
+        "G96 D2000 S180",
         "M2",
     ]
     assert body("G96 S200 LIMS=3000 M3\nLIMS=2000\nM30", "sinumerik") == [
-        "G96 S200 D3000 M3", "G96 S200 D2000", "M2",
+        "G96 D3000 S200 M3", "G96 D2000 S200", "M2",
     ]
     out = translate_program("G96 S200 LIMS=3000 M3\nM30", "sinumerik", target="fanuc").splitlines()
     assert out[-4:] == ["G50 S3000", "G96 S200 M03", "M30", "%"]
@@ -554,7 +556,7 @@ def test_fanuc_target():
 def test_start_modes():
     start = MachineState(diameter_mode=False, metric=False, feed_per_rev=True)
     out = translate_program("S500 M3\nG0 X1. Z0.\nG1 X0.5 F0.004\nM30", "ab9", start=start).splitlines()
-    assert out[0] == "G18 G7 G20 G90 G91.1 G40 G95"
+    assert out[1] == "G18 G7 G20 G90 G91.1 G40 G95"
     assert out[3:5] == ["G0 X2. Z0.", "G1 X1. F0.004"]
 
 

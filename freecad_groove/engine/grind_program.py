@@ -35,10 +35,11 @@ from typing import List, NamedTuple, Optional, Sequence, Union
 from .cycles.ab_g83 import G83
 from .errors import ProgramError
 from .moves import DRESS, RAPID, MachineState, Move
-from .targets import Writer, comment, format_number
+from .output.program import ProgramBuilder, Spindle
+from .output.targets import program_target
+from .output.writer import Writer
 
-NATIVE_TARGET = "ab9grind"
-TARGETS = {"ab9grind": "fanuc-mill", "linuxcnc": "linuxcnc-mill"}  # -> the writer of their moves
+TARGETS = ("ab9grind", "linuxcnc")  # the grinder posts' targets (linuxcnc: its mill twin)
 
 
 class GrindItem(NamedTuple):
@@ -69,106 +70,84 @@ class WheelChange(NamedTuple):
     clockwise: bool = True
 
 
-MAX_TOOL = {"ab9grind": 99, "linuxcnc": 99999}
 MAX_RPM = 99999
 Item = Union[GrindItem, PlainMoves, WheelChange]
 
 
-def _header(writer: Writer, target: str, title: str, number: int) -> List[str]:
-    if target == NATIVE_TARGET:
-        return ["%", "O%04d" % number, comment(title), "G90 G94 G21"]
-    return writer.header(title)
-
-
 def _retract(writer: Writer, safe: float) -> List[str]:
     """G0 Y to the safe plunge position, the other axes where they are (known to the output or not)."""
-    line = "%s Y%s" % (writer.spec.codes[RAPID], writer.z_word(safe))
+    line = "%s Y%s" % (writer.code(RAPID), writer.y_word(safe))
     writer.sync(None, None, None, RAPID, safe)  # X and Z: the next move writes them
     return [line]
 
 
-def _grind_lines(writer: Writer, item: GrindItem, native: bool, target: str) -> List[str]:
+def _grind_lines(writer: Writer, item: GrindItem, native: bool) -> List[str]:
     start = item.start
-    lines = [comment(item.label)] + _retract(writer, item.safe)
+    lines = [writer.comment(item.label)] + _retract(writer, item.safe)
     lines += writer.write([Move(RAPID, start.x, start.z, y=item.safe), Move(RAPID, start.x, start.z, y=start.y)])
     if native:
         return lines + [item.call.emit()] + _retract(writer, item.safe)  # the cycle moved the wheel
-    if target == NATIVE_TARGET and any(m.kind == DRESS for m in item.moves):
+    if not writer.target.dress_call and any(m.kind == DRESS for m in item.moves):
         raise ProgramError("%s: a dress (P%d) cannot be written expanded for the 9/Series: its subprogram call "
                            "is not in the manuals this post follows (write the cycle native, or DressCount 0 and "
                            "no G83.1)" % (item.label, item.call.P))
-    lines.append(comment(item.call.emit()))
+    lines.append(writer.comment(item.call.emit()))
     lines += writer.write(item.moves)
     return lines + _retract(writer, item.safe)
 
 
 class _Wheel:
-    """The tool and spindle in force in the program being written."""
+    """The tool in force in the program being written (the builder keeps the spindle)."""
 
-    def __init__(self, writer: Writer, target: str):
-        self.writer, self.target = writer, target
-        self.m_code = "M%02d" if target == NATIVE_TARGET else "M%d"
+    def __init__(self, program: ProgramBuilder):
+        self.program = program
         self.tool: Optional[int] = None
-        self.spindle: Optional[tuple] = None  # (rpm text, M code) in force; None: stopped or unknown
 
-    def change(self, item: WheelChange) -> List[str]:
-        """The lines of ``item``: the tool change if needed, then the spindle if not in force."""
-        if not (isinstance(item.tool, int) and 1 <= item.tool <= MAX_TOOL[self.target]):
+    def change(self, item: WheelChange) -> None:
+        """The tool change if needed, then the spindle if not in force."""
+        program, target = self.program, self.program.target
+        if not (isinstance(item.tool, int) and 1 <= item.tool <= target.max_tool):
             raise ProgramError("%s: tool number %r cannot be written (1..%d)" % (item.label, item.tool,
-                                                                                  MAX_TOOL[self.target]))
-        lines = []
+                                                                                  target.max_tool))
         if item.tool != self.tool:
-            lines += [comment("tool %d: %s" % (item.tool, item.label)),
-                      "T%02d M06" % item.tool if self.target == NATIVE_TARGET else "T%d M6 G43" % item.tool]
-            self.tool, self.spindle = item.tool, None
-            self.writer.sync(None, None, None, None, None)  # the change may move the axes: write them all
-        return lines + self.turn(item)
-
-    def turn(self, item: WheelChange) -> List[str]:
+            program.add([program.writer.comment("tool %d: %s" % (item.tool, item.label)),
+                         " ".join(program.writer.tool_change(item.tool, item.tool))])
+            self.tool = item.tool
+            program.spindle = None
+            program.spindle_on = True  # unknown after a change: a stop is written
+            program.writer.forget(motion=False, feed=False)  # the change may move the axes: write them all
         if not item.rpm > 0:
-            return self.stop()
+            if program.spindle_on:
+                program.stop_spindle()
+            return
         if not item.rpm <= MAX_RPM:
             raise ProgramError("%s: spindle speed %r cannot be written" % (item.label, item.rpm))
-        if self.target == NATIVE_TARGET and item.rpm != int(item.rpm):
-            raise ProgramError("%s: spindle speed %r: a 9/Series S word is a whole number of rpm"
-                               % (item.label, item.rpm))
-        text = "%d" % item.rpm if item.rpm == int(item.rpm) else format_number(item.rpm, 4)
-        spindle = (text, self.m_code % (3 if item.clockwise else 4))
-        if spindle == self.spindle:
-            return []
-        self.spindle = spindle
-        return ["S%s %s" % spindle]
-
-    def stop(self) -> List[str]:
-        """M05 when the spindle may be on (after a tool change its state is unknown); nothing otherwise."""
-        if self.spindle is None and self.tool is None:
-            return []
-        self.spindle = None
-        return [self.m_code % 5]
+        try:
+            program.start_spindle(Spindle(item.rpm, item.clockwise))
+        except ProgramError as exc:
+            raise ProgramError("%s: %s" % (item.label, exc)) from None
 
 
 def grind_program(items: Sequence[Item], target: str, native: bool, title: str, number: int = 1) -> str:
     """The whole program for ``items`` (see the module notes); ProgramError on what cannot be written."""
     if target not in TARGETS:
         raise ProgramError("unknown grinder target %r (known: %s)" % (target, ", ".join(TARGETS)))
-    if native and target != NATIVE_TARGET:
+    writer = Writer(program_target(target, True), True, False)
+    if native and not writer.target.native.grinds:
         raise ProgramError("%s has no G83 cycle: the cycles are expanded for it" % target)
-    writer = Writer(TARGETS[target], True, False)
-    lines = _header(writer, target, title, number)
-    m_code = "M%02d" if target == NATIVE_TARGET else "M%d"
-    wheel = _Wheel(writer, target)
+    program = ProgramBuilder(writer)
+    program.begin(title, number)
+    wheel = _Wheel(program)
     for item in items:
         if isinstance(item, WheelChange):
-            lines += wheel.change(item)
+            wheel.change(item)
             continue
         if isinstance(item, GrindItem):
-            body = _grind_lines(writer, item, native, target)
+            body = _grind_lines(writer, item, native)
         else:
-            body = [comment(item.label)] + writer.write(item.moves)
+            body = [writer.comment(item.label)] + writer.write(item.moves)
         if item.coolant:
-            body = body[:1] + [m_code % item.coolant] + body[1:] + [m_code % 9]
-        lines += body
-    if wheel.spindle is not None:
-        lines += wheel.stop()
-    lines += ["M30"] if target == NATIVE_TARGET else writer.footer()
-    return "\n".join(lines) + "\n"
+            body = body[:1] + [writer.m_code(item.coolant)] + body[1:] + [writer.m_code(9)]
+        program.add(body)
+    program.finish()
+    return program.text()

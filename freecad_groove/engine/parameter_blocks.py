@@ -42,5 +42,5 @@ def read_parameter_block(translator: CycleTranslation, block: Block) -> None:
     translator._not_ambiguous("cycle_memory", why="the parameters %s calls read" % readers[0].NAME)
     for memory in dict.fromkeys(cycle.MEMORY for cycle in readers):
         remember(translator, memory, dict(translator.state.cycle_memory.get(memory, {}), **{key: value}))
-    translator._emit(translator._words_line(block, [], "%s=%s: for the %s that follow" % (
-        key, text, "/".join(cycle.NAME for cycle in readers))))
+    translator._emit_line(block, [], "%s=%s: for the %s that follow" % (
+        key, text, "/".join(cycle.NAME for cycle in readers)))

@@ -59,7 +59,7 @@ class RetractBlock(BlockForm):
         translator._defined.add("retract_e")
         kinds = "/".join(other.name for other in translator.control.cycles() if other.retract_block)
         note = "%s %s%s: peck retract e for the next %s" % (entry.name, letter, words[0].text, kinds)
-        translator._emit(translator._words_line(block, [], note))
+        translator._emit_line(block, [], note)
 
     @staticmethod
     def _with_retract_block(translator: CycleTranslation, entry: CycleEntry, call: CycleCall) -> CycleCall:

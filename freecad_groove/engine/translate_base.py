@@ -14,9 +14,9 @@ from .input_controls import CYCLE, DIAMETER, DISTANCE, FEED_MODE, UNITS, InputCo
 from .mill_tool_table import MillToolTable
 from .modal import ModalState
 from .numbers import MAX_WORD, MM_PER_INCH
+from .output.writer import Writer
 from .reader import Block, Word
 from .settings import Settings
-from .targets import MAX_LINE, Writer, comment
 from .tool_table import ToolTable
 from .warnings import CycleWarning
 
@@ -45,10 +45,10 @@ class TranslatorBase:
     writer: Writer
     body: List[str]  # the translated blocks
     warnings: List[Tuple[int, CycleWarning]]  # (line, warning) of the cycles read so far
-    fanuc_output: bool  # the target writes Fanuc-style programs (TargetSpec.fanuc_style)
     _line: int  # the line being read
     _prefix: str  # "/" when the line is a block-delete line
     _defined: Set[str]  # the ModalState items the line sets for sure
+    _tool_changed: bool = False  # the line changed the tool (the spindle may need starting again)
 
     # -- errors and checks ------------------------------------------------------
 
@@ -97,31 +97,19 @@ class TranslatorBase:
     # -- output -------------------------------------------------------------------
 
     def _emit(self, text: str) -> None:
-        text = self._prefix + text
-        if len(text) > MAX_LINE:
-            self._fail("the translated block is longer than %d characters (LinuxCNC's limit)" % MAX_LINE)
-        self.body.append(text)
+        self.body.append(self.writer.line([text], prefix=self._prefix))
 
     def _emit_early(self, block: Block, early: List[str], more: object) -> None:
         """Blocks that must stand alone before the block (Fanuc G20/G21, G50 S): the
         block's N goes on the first of them when nothing else of the block is written."""
         for index, text in enumerate(early):
-            if index == 0 and not more and block.number is not None:
-                text = "N%d %s" % (block.number, text)
-            self._emit(text)
+            number = block.number if index == 0 and not more else None
+            self.body.append(self.writer.line([text], number, prefix=self._prefix))
 
-    def _words_line(self, block: Block, words: List[str], note: Optional[str] = None) -> str:
+    def _emit_line(self, block: Block, words: List[str], note: Optional[str] = None) -> None:
         """``N.. words (note ; comments)``, the comment cut to keep the block within MAX_LINE."""
-        parts = []
-        if block.number is not None:
-            parts.append("N%d" % block.number)
-        parts.extend(words)
-        line = " ".join(parts)
-        texts = ([note] if note else []) + [text.strip() for text in block.comments]
-        if texts:
-            room = MAX_LINE - len(self._prefix) - len(line) - 3
-            line = (line + " " if line else "") + comment(" ; ".join(texts), room)
-        return line
+        notes = ([note] if note else []) + [text.strip() for text in block.comments]
+        self.body.append(self.writer.line(words, block.number, notes, self._prefix))
 
     def _sync_writer(self) -> None:
         """Tell the writer what the output program has in force (the reader's state)."""
@@ -173,7 +161,7 @@ class TranslatorBase:
         self._defined |= {"metric", "siemens_g70"}
         state.siemens_g70 = units.feed_in_basic_system
         self.writer.set_units(units.metric)
-        (early if self.fanuc_output else output).append(self.writer.units_code(units.metric))
+        (early if self.writer.target.units_alone else output).append(self.writer.units_code(units.metric))
 
     def _feed_mode(self, per_rev: bool, output: List[str], own_feed: bool) -> None:
         """G94/G95 (G98/G99). A change forgets the feed, as the source controls do.
@@ -188,4 +176,4 @@ class TranslatorBase:
         output.append(self.writer.set_feed_mode(per_rev))
         if own_feed or state.feed is None or "feed" in state.ambiguous - self._defined:
             return
-        output.append("F" + self.writer.f_word(state.feed))
+        output.append(self.writer.feed_word(state.feed))

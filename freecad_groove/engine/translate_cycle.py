@@ -71,7 +71,7 @@ class CycleTranslation(TranslatorBase):
             self._collect_warnings(entry, model, start, settings)
         except CycleError as exc:
             self._fail(exc.message)
-        self._emit(self._words_line(block, [], label.replace("(", " ").replace(")", "")))
+        self._emit_line(block, [], label.replace("(", " ").replace(")", ""))
         try:
             lines = self.writer.write(moves, self._prefix)
         except ProgramError as exc:

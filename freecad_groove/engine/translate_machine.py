@@ -18,7 +18,6 @@ from .input_controls import (
 )
 from .numbers import MAX_DWELL_SECONDS, MAX_WORD
 from .reader import Block, Word
-from .targets import comment
 from .translate_base import Groups, TranslatorBase
 
 __all__ = ["MachineTranslation", "ToolSelection"]
@@ -87,25 +86,13 @@ class MachineTranslation(TranslatorBase):
         }
         selection = readers[self.control.tool_words](tool_word, edge_word)
         state = self.state
+        in_place = state.tool
         state.x = state.y = state.z = None
         self._defined |= {"x", "y", "z", "tool"}
         if selection.tool is not None:
             state.tool = selection.tool
-        if self.fanuc_output:
-            if state.tool is None:
-                self._fail("D%s: no tool selected before" % edge_word.text)
-            if state.tool > 99 or selection.offset > 99:
-                self._fail("T%d offset %d does not fit Fanuc's T<2 digits><2 digits>" % (state.tool, selection.offset))
-            output.append("T%02d%02d" % (state.tool, selection.offset))
-            return
-        if selection.tool is not None:
-            output.extend(["T%d" % selection.tool, "M6"])
-        if selection.offset == 0:
-            output.append("G49")
-        elif selection.own_entry:
-            output.append("G43")  # the tool's own tool-table entry
-        else:
-            output.extend(["G43", "H%d" % selection.offset])
+        output.extend(self.writer.tool_change(selection.tool, selection.offset, selection.own_entry, in_place))
+        self._tool_changed = selection.tool is not None
 
     def _mill_tool_change(self, block: Block, output: List[str]) -> None:
         """Milltronics ``T5 M6``: the change, written ``T5 M6`` (Fanuc ``T05 M06``); afterwards the position
@@ -122,7 +109,7 @@ class MachineTranslation(TranslatorBase):
         tool = self._integer(tool_word)
         if tool < 1:
             self._fail("T%s: the tool number must be 1 or more" % tool_word.text)
-        output.extend(["T%02d" % tool, "M06"] if self.fanuc_output else ["T%d" % tool, "M6"])
+        output.extend(self.writer.tool_change(tool))
         state = self.state
         state.x = state.y = state.z = None
         state.spindle_dir = None
@@ -137,11 +124,11 @@ class MachineTranslation(TranslatorBase):
         if on is None:
             return
         if not on:
-            output.append("G49")
+            output.extend(self.writer.length_offset(None))
             return
         if height_word is None:
             self._fail("G43 without H: program the tool length offset as G43 H<n>")
-        output.extend(["G43", "H%d" % self._integer(height_word)])
+        output.extend(self.writer.length_offset(self._integer(height_word)))
         self.state.z = None  # the offset moves the Z the program's words mean
         self._defined.add("z")
 
@@ -170,12 +157,13 @@ class MachineTranslation(TranslatorBase):
         """LinuxCNC's M6 stops the spindle; a lathe turret (and the 9/Series grinder's T) does not: start it
         again. Not after a Milltronics T M6: the program starts it itself (_mill_tool_change)."""
         state = self.state
-        if self.control.tool_words == DIAMETER_REGISTER or "M6" not in output or state.spindle_dir not in (3, 4):
+        changed, self._tool_changed = self._tool_changed, False
+        if not (changed and self.writer.target.tool_change_stops_spindle) or state.spindle_dir not in (3, 4):
             return
         if set(_SPINDLE_CODES) & {int(word.value) for word in block.all("M")}:
             return  # the block starts or stops it itself
         self._not_ambiguous("spindle_dir", why="restarting the spindle after the tool change")
-        output.append("M%d" % state.spindle_dir)
+        output.append(self.writer.m_code(state.spindle_dir))
 
     # -- spindle ----------------------------------------------------------------------
 
@@ -189,44 +177,50 @@ class MachineTranslation(TranslatorBase):
             if not 0 <= speed < MAX_WORD:
                 self._fail("S%s is out of range" % speed_word.text)
         if SPEED_LIMIT in groups:  # Fanuc/Haas G50 S: spindle speed limit
-            self._g50_limit(block, speed, output)
+            self._g50_limit(block, speed, output, early)
             return
         if limit_word is not None:
             if not 0 < limit_word.value < MAX_WORD:
                 self._fail("LIMS=%s is out of range" % limit_word.text)
             self.state.speed_limit = limit_word.value
             self._defined.add("speed_limit")
-            if self.fanuc_output:
-                early.append("G50 S" + self._s_text(limit_word.value))
         if CSS in groups:
-            self._css(groups[CSS].value, speed_word, output)
+            self._css(groups[CSS].value, speed_word, output, early, limit_word is not None)
             return
-        keep_css = limit_word is not None and self.state.css and not self.fanuc_output
         if speed_word is not None:
             self.state.spindle = speed
             self._defined.add("spindle")
-            output.extend(self._css_words(speed) if keep_css else ["S" + self._s_text(speed)])
-        elif keep_css:
-            if self.state.spindle is None:
-                self._fail("LIMS=: the surface speed in force is not known")
-            output.extend(self._css_words(self.state.spindle))
+        if limit_word is not None and self._limit(output, early, "LIMS="):
+            return
+        if speed_word is not None:
+            output.append(self.writer.speed_word(speed))
 
-    def _g50_limit(self, block: Block, speed: Optional[float], output: List[str]) -> None:
+    def _limit(self, output: List[str], early: List[str], what: str) -> bool:
+        """Write the speed limit in force, the target's way; True when that wrote
+        the spindle speed too (LinuxCNC: its G96 again, with the limit as D)."""
+        state = self.state
+        said = self.writer.limit_words(state.speed_limit)
+        if said is not None:
+            early.extend(said[0])
+            output.extend(said[1])
+            return False
+        if not state.css:
+            return False
+        if state.spindle is None:
+            self._fail("%s: the surface speed in force is not known" % what)
+        output.extend(self._css_words(state.spindle, True, early))
+        return True
+
+    def _g50_limit(self, block: Block, speed: Optional[float], output: List[str], early: List[str]) -> None:
         if speed is None or block.letters() - {"G", "S"} or len(block.all("G")) > 1:
             self._fail("G50 is supported only as the spindle speed limit, G50 S.. alone in its block")
-        state = self.state
-        state.speed_limit = speed
+        self.state.speed_limit = speed
         self._defined.add("speed_limit")
-        if self.fanuc_output:
-            output.append("G50 S" + self._s_text(speed))
-        elif state.css:
-            if state.spindle is None:
-                self._fail("G50 S: the surface speed in force is not known")
-            output.extend(self._css_words(state.spindle))
-        else:
-            output.append(comment("G50 S%s: spindle limit for G96" % self._s_text(speed)))
+        if not self._limit(output, early, "G50 S") and not (output or early):
+            output.append(self.writer.comment("G50 S%s: spindle limit for G96" % self.writer.speed_text(speed)))
 
-    def _css(self, on: bool, speed_word: Optional[Word], output: List[str]) -> None:
+    def _css(self, on: bool, speed_word: Optional[Word], output: List[str], early: List[str],
+             limit_changed: bool) -> None:
         """G96 (constant surface speed, S in the block) or G97."""
         state = self.state
         if on and speed_word is None:
@@ -239,24 +233,15 @@ class MachineTranslation(TranslatorBase):
             state.spindle = speed_word.value
             self._defined.add("spindle")
         if on:
-            output.extend(["G96", "S" + self._s_text(speed_word.value)])
-            if state.speed_limit is not None and not self.fanuc_output:
-                output.append("D" + self._s_text(state.speed_limit))
+            output.extend(self._css_words(speed_word.value, limit_changed, early))
             return
-        output.append("G97")
-        if speed_word is not None:
-            output.append("S" + self._s_text(speed_word.value))
+        output.extend(self.writer.rpm_words(None if speed_word is None else speed_word.value))
 
-    def _css_words(self, surface_speed: float) -> List[str]:
-        """LinuxCNC's G96 with the speed limit in force as its D word."""
-        return ["G96", "S" + self._s_text(surface_speed), "D" + self._s_text(self.state.speed_limit)]
-
-    def _s_text(self, value: float) -> str:
-        if value == int(value):
-            return "%d" % value
-        if self.fanuc_output:
-            self._fail("S%s: a Fanuc S word is a whole number" % value)
-        return self.writer.number(value, 4)
+    def _css_words(self, surface_speed: float, limit_changed: bool, early: List[str]) -> List[str]:
+        """G96 with the surface speed and the limit in force, where the target writes it with G96 (or it changed)."""
+        alone, words = self.writer.surface_speed(surface_speed, self.state.speed_limit, limit_changed)
+        early.extend(alone)
+        return words
 
     # -- M codes ------------------------------------------------------------------------
 
@@ -277,7 +262,7 @@ class MachineTranslation(TranslatorBase):
             in_group[group] = code
             (after if group in ("stop", "end") else modal).append(code)
         for code in modal:
-            output.append(self._m_text(code))
+            output.append(self.writer.m_code(code))
             if code in _SPINDLE_CODES:
                 self.state.spindle_dir = code
                 self._defined.add("spindle_dir")
@@ -288,15 +273,12 @@ class MachineTranslation(TranslatorBase):
         state = self.state
         for code in codes:
             if code not in _END_CODES:
-                output.append(self._m_text(code))
+                output.append(self.writer.m_code(code))
                 continue
-            output.append(self.writer.spec.end)
+            output.append(self.writer.target.end_code)
             state.ended = True
             state.spindle_dir = None
             state.x = state.y = state.z = None
-
-    def _m_text(self, code: int) -> str:
-        return ("M%02d" if self.fanuc_output else "M%d") % code
 
     # -- dwell ----------------------------------------------------------------------------
 
@@ -319,7 +301,7 @@ class MachineTranslation(TranslatorBase):
         seconds = self._dwell_seconds(reading, word)
         if not 0 <= seconds <= MAX_DWELL_SECONDS:
             self._fail("G4 %s%s: the dwell must be 0 to %g s" % (word.letter, word.text, MAX_DWELL_SECONDS))
-        self._emit(self._words_line(block, [self.writer.dwell(seconds)]))
+        self._emit_line(block, [self.writer.dwell(seconds)])
 
     def _dwell_seconds(self, reading: str, word: Word) -> float:
         readers = {

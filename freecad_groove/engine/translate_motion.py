@@ -5,10 +5,10 @@ import math
 from typing import List, NamedTuple, Optional, Set
 
 from .input_controls import MOTION
-from .moves import FEED, RAPID
+from .moves import ARCS, FEED, RAPID, Move
 from .numbers import ARC_IJK_TOLERANCE, ARC_R_TOLERANCE, MM_PER_INCH
+from .output.targets import TARGETS
 from .reader import Block, Word
-from .targets import TARGETS, target_spec
 from .translate_base import Groups, TranslatorBase
 
 __all__ = ["AxisTarget", "MotionTranslation"]
@@ -35,7 +35,6 @@ class MotionTranslation(TranslatorBase):
     def _motion(self, block: Block, groups: Groups, output: List[str]) -> None:
         """Apply the block's motion code and move; add the output words."""
         state = self.state
-        writer = self.writer
         explicit = groups.get(MOTION)
         if explicit is not None:
             state.motion = explicit.value
@@ -46,41 +45,34 @@ class MotionTranslation(TranslatorBase):
                 self._fail("%s without an end point" % "/".join(sorted(arc_letters)))
             return
         kind = self._motion_kind(arc_letters)
-        arc = self._arc_words(block, arc_letters) if kind in ("G2", "G3") else []
+        circle = self._arc_words(block, arc_letters) if kind in ARCS else {}
         if kind != RAPID:
             self._check_feed_move(block)
         target = self._axis_target(block)
-        if arc:
+        if circle:
             self._check_arc_start(block, target)
-        words = []
-        if explicit is not None or writer.motion != kind:
-            words.append(writer.code(kind))
-        if target.has_x:
-            words.append("X" + writer.x_word(target.x))
-        if target.has_y:
-            words.append("Y" + writer.z_word(target.y))
-        if target.has_z:
-            words.append("Z" + writer.z_word(target.z))
-        words.extend(arc)
-        if block.get("C") is not None:
-            words.append(self._c_word(block.get("C"), kind))
-        output.extend(words)
+            if "centre" in circle:  # I and K from the start
+                circle["centre"] = (state.x + circle["centre"][0], state.z + circle["centre"][1])
+        c = None if block.get("C") is None else self._c_value(block.get("C"), kind)
+        move = Move(kind, target.x if target.has_x else None, target.z if target.has_z else None,
+                    y=target.y if target.has_y else None, c=c, **circle)
+        output.extend(self.writer.programmed(move, explicit is not None))
         state.x, state.y, state.z = target.x, target.y, target.z
-        writer.motion = kind
+        self.writer.motion = kind
 
-    def _c_word(self, word: Word, kind: str) -> str:
+    def _c_value(self, word: Word, kind: str) -> float:
         """A C position outside a G7.1 region: rapid only, on a target that writes C."""
         if kind != RAPID:
             self._fail("C%s in a %s move: C is only fed inside a G7.1 region (position it with G0)"
                        % (word.text, kind))
-        spec = self.writer.spec
-        if not spec.c_feed:
+        target = self.writer.target
+        if not target.c_feed:
             self._fail("C%s: the output %s has no C axis (targets with C: %s)"
-                       % (word.text, spec.name, ", ".join(name for name in TARGETS if target_spec(name).c_feed)))
+                       % (word.text, target.name, ", ".join(name for name, t in TARGETS.items() if t.c_feed)))
         value = self._finite_length(word)
         self.state.c = value
         self._defined.add("c")
-        return "C" + self.writer.z_word(value)
+        return value
 
     def _motion_kind(self, arc_letters: Set[str]) -> str:
         """The motion mode in force for a block with axis words."""
@@ -92,25 +84,23 @@ class MotionTranslation(TranslatorBase):
             self._fail("%s is only read with G2/G3" % "/".join(sorted(arc_letters)))
         return kind
 
-    def _arc_words(self, block: Block, arc_letters: Set[str]) -> List[str]:
-        """The output words of the arc centre (I, K) or radius (R, CR=)."""
+    def _arc_words(self, block: Block, arc_letters: Set[str]) -> dict:
+        """The arc's circle as Move fields: its centre from the start (I, K:
+        incremental radius values; made absolute once the start is checked) or
+        its radius (R, CR=)."""
         has_centre = bool(arc_letters & {"I", "K"})
         has_radius = bool(arc_letters & {"R", "CR"})
         if has_centre == has_radius:
             self._fail("G2/G3 needs either I/K (centre) or the radius (%s)" % self.control.arc_radius_word)
-        words = []
-        for letter in ("I", "K"):
-            word = block.get(letter)
-            if word is not None:
-                words.append(letter + self.writer.length_word(self._finite_length(word)))
         radius_word = block.get("R") or block.get("CR")
         if radius_word is not None:
             radius = self._finite_length(radius_word)
             if not radius > 0:
                 self._fail("%s%s: the arc radius must be positive (arcs over 180 degrees are not translated)"
                            % (radius_word.letter, radius_word.text))
-            words.append("R" + self.writer.length_word(radius))
-        return words
+            return {"radius": radius}
+        return {"centre": tuple(0.0 if block.get(letter) is None else self._finite_length(block.get(letter))
+                                for letter in "IK")}
 
     def _finite_length(self, word: Word) -> float:
         value = self._length(word)
@@ -178,8 +168,8 @@ class MotionTranslation(TranslatorBase):
             self._fail("G2/G3 needs a known start point: program an absolute X and Z before the arc")
         self._not_ambiguous("x", "z", why="the start of the arc")
         # checked on the numbers as written: what the output control will compute with
-        self._check_arc(block, float(writer.x_word(state.x)) / 2.0, float(writer.z_word(state.z)),
-                        float(writer.x_word(target.x)) / 2.0, float(writer.z_word(target.z)))
+        self._check_arc(block, writer.written_x(state.x), float(writer.z_word(state.z)),
+                        writer.written_x(target.x), float(writer.z_word(target.z)))
 
     def _check_arc(self, block: Block, x0: float, z0: float, x1: float, z1: float) -> None:
         """Refuse an arc whose end point is not on its circle (LinuxCNC would refuse it too).

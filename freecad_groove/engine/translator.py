@@ -137,9 +137,10 @@ from .input_controls import (
 )
 from .modal import TRACKED, ModalState
 from .moves import MachineState
+from .output.targets import program_target, with_g07_meaning
+from .output.writer import MAX_LINE, Writer
 from .reader import Block, parse_block
 from .settings import DEFAULT_SETTINGS, Settings
-from .targets import MAX_LINE, Writer, comment, mill_target, target_spec
 from .translate_base import ActiveCode, Groups, Tools
 from .translate_cycle import CycleTranslation
 from .translate_machine import MachineTranslation
@@ -147,8 +148,6 @@ from .translate_motion import MotionTranslation
 from .warnings import CycleWarning
 
 __all__ = ["Translator", "iter_translation", "program_lines", "translate_program"]
-
-MAX_FANUC_BLOCK_NUMBER = 99999  # N of at most 5 digits
 
 
 class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
@@ -164,13 +163,12 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
                  source_name: str = "PROGRAM", start: Optional[MachineState] = None,
                  tools: Optional[Tools] = None) -> None:
         self.control = input_control(dialect)  # raises on an unknown dialect
-        if self.control.mill:  # a grinder program: its mill-style twin (G17, X/Y/Z)
-            target = mill_target(target)
-        self.fanuc_output = target_spec(target).fanuc_style  # target_spec raises on an unknown target
+        # a mill-style program (X/Y/Z) on a mill target or a lathe target's mill twin; raises when there is none
+        output_target = with_g07_meaning(program_target(target, self.control.mill), settings.ab_g07_is_diameter)
         self.dialect = dialect
         self.settings = settings
         self.tools = tools
-        self.target = target
+        self.target = output_target.name
         self.source_name = source_name
         self.codes = self.control.code_table()
         state = ModalState()
@@ -186,7 +184,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         self.state = state
         self.start_metric = state.metric
         self.start_feed_per_rev = state.feed_per_rev
-        self.writer = Writer(target, state.metric, state.feed_per_rev)
+        self.writer = Writer(output_target, state.metric, state.feed_per_rev)
         self.body: List[str] = []
         self.warnings: List[Tuple[int, CycleWarning]] = []
         self.program_number: Optional[int] = None
@@ -200,8 +198,10 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         self._line = number
         self.last_line = number
         block = parse_block(text, self.dialect, number)
-        if self.fanuc_output and block.number is not None and block.number > MAX_FANUC_BLOCK_NUMBER:
-            self._fail("N%d: a Fanuc block number has at most 5 digits" % block.number)
+        limit = self.writer.target.max_block_number
+        if block.number is not None and limit is not None and block.number > limit:
+            self._fail("N%d: a %s block number has at most %d digits" % (block.number, self.writer.target.maker,
+                                                                         len(str(limit))))
         self._prefix = "/" if block.delete else ""
         before = {name: getattr(self.state, name) for name in TRACKED} if block.delete else {}
         self._defined = set()
@@ -243,7 +243,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
             return
         if block.is_empty():
             for text in block.comments:
-                self._emit(comment(text, MAX_LINE - 3))
+                self._emit(self.writer.comment(text, MAX_LINE - 3))
             return
         letters = [word.letter for word in block.words]
         if "O" in letters:
@@ -287,7 +287,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
             self._fail("a second O program number: subprograms and several programs in a file are not supported")
         self.program_number = self._integer(block.words[0])
         for text in block.comments:
-            self._emit(comment(text, MAX_LINE - 3))
+            self._emit(self.writer.comment(text, MAX_LINE - 3))
 
     def _plain_block(self, block: Block, groups: Groups) -> None:
         """A block without a cycle or dwell: modes, tool, spindle, M codes, motion."""
@@ -300,14 +300,13 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         early: List[str] = []  # Fanuc output: blocks that must stand alone before this one
         output: List[str] = []
         self._modes(block, groups, output, early)
-        if PLANE in groups and not self.fanuc_output:  # Fanuc: G18 implied (plane selection is an option)
-            output.append("G18")
+        target = self.writer.target
+        if PLANE in groups and target.plane_code:  # Fanuc: G18 implied (plane selection is an option)
+            output.append(target.plane_code)
         if OFFSET in groups:
-            output.append(groups[OFFSET].value)
-            state.x = state.y = state.z = None
-            self._defined |= {"x", "y", "z"}
+            self._work_offset(groups[OFFSET], output)
         if COMPENSATION in groups:
-            output.append("G40")
+            output.append(target.compensation_off)
         feed_word = self._feed_word(block)
         self._tool(block, output)  # tool, then spindle speed / CSS / limit
         self._length_offset(block, groups, output)
@@ -316,13 +315,24 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
         stops_and_ends = self._m_codes(block, output)  # written after the motion
         self._motion(block, groups, output)
         if feed_word is not None:
-            output.append("F" + self.writer.f_word(state.feed))
+            output.append(self.writer.feed_word(state.feed))
         self._stops_and_ends(stops_and_ends, output)
         note = self._diameter_register(block) if self.control.tool_words == DIAMETER_REGISTER else None
         self._emit_early(block, early, output or block.comments or note)
         if output or block.comments or note:
-            self._emit(self._words_line(block, output, note))
+            self._emit_line(block, output, note)
         self._sync_writer()
+
+    def _work_offset(self, code: ActiveCode, output: List[str]) -> None:
+        """G54..G59: written as they are where the target has them; the position is unknown after."""
+        target = self.writer.target
+        number = int(code.value[1:])
+        if number > target.last_work_offset:
+            self._fail("%s: the %s output's settable work offsets are G54..G%d" % (code.value, target.name,
+                                                                                 target.last_work_offset))
+        output.append(code.value)
+        self.state.x = self.state.y = self.state.z = None
+        self._defined |= {"x", "y", "z"}
 
     def _check_plain_letters(self, block: Block) -> None:
         for word in block.words:
@@ -341,22 +351,20 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
 
     def header(self) -> List[str]:
         """The lines that open the translation (modes at the start, the title)."""
-        header_writer = Writer(self.target, self.start_metric, self.start_feed_per_rev)
+        header_writer = Writer(self.writer.target, self.start_metric, self.start_feed_per_rev)
         title = "%s: %s program%s, cycles expanded for %s by freecad-groove" % (
             self.source_name,
             self.dialect,
             " O%d" % self.program_number if self.program_number is not None else "",
             self.target,
         )
-        return header_writer.header(title, self.program_number if self.fanuc_output else None)
+        return header_writer.header(title, self.program_number)
 
     def footer(self) -> List[str]:
         """The lines that close the translation (the end when the program has none)."""
         self.check_blocks_closed()
-        lines = [] if self.state.ended else [self.writer.spec.end]
-        if self.fanuc_output:
-            lines.append("%")
-        return lines
+        lines = self.writer.footer()
+        return lines[1:] if self.state.ended else lines
 
     def result(self) -> str:
         """The translated program text (after ``line`` was called for every line)."""

@@ -39,6 +39,7 @@ from freecad_groove.engine.cycles.ab_g77 import G76, G77
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.cycles.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
 from freecad_groove.engine.moves import DWELL, FEED, RAPID
+from freecad_groove.engine.output.writer import Writer
 from freecad_groove.engine.translator import translate_program
 from freecad_groove.freecad import posts, registration
 from freecad_groove.freecad.groove_op import op_error
@@ -152,7 +153,7 @@ def positions(events):
 
 def writer(name, precision=None, diameter=True):
     c = posts.CONTROLS[name]
-    return posts.LatheWriter(c, c.digits if precision is None else precision, diameter)
+    return Writer(c.target, digits=c.digits if precision is None else precision, x_diameter=diameter)
 
 
 def expected_events(op, name, precision=None, diameter=True, shift=(0.0, 0.0)):

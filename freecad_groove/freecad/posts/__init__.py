@@ -89,7 +89,7 @@ a move the control cannot take, a bad option) raises :class:`PostError`,
 whose message starts with the op's Label and names the op property (and the
 cycle parameter); the message also goes to FreeCAD's report view. A file is
 written only when the whole text is built, by the engine's
-``write_atomically`` (engine/output.py): through a temporary file in the
+``write_atomically`` (engine/output/files.py): through a temporary file in the
 target's folder renamed over it, so a failed post leaves no file and an
 existing one untouched; a symbolic link is followed to the file it names; a
 directory, pipe, device or write-protected file is refused with a PostError
@@ -120,10 +120,9 @@ from .objects import groove_op_of, job_of, label_of
 from .options import Options, make_parser, parse_options, tooltip
 from .pecking import PECKING_PROPERTIES
 from .program import Program
-from .writer import LatheWriter
 
 __all__ = ["CONTROLS", "PostError", "export", "build", "parse_options", "make_parser", "tooltip", "groove_op_of",
-           "Control", "LatheWriter", "Options", "PECKING_PROPERTIES", "command_post_class"]
+           "Control", "Options", "PECKING_PROPERTIES", "command_post_class"]
 
 
 def build(name: str, objectslist: Optional[Iterable[Any]], options: Options) -> str:
@@ -131,14 +130,14 @@ def build(name: str, objectslist: Optional[Iterable[Any]], options: Options) -> 
     program = Program(control_named(name), options)
     objects = list(objectslist or [])
     job = job_of(objects)
-    program.begin(label_of(job) if job is not None else "FreeCAD")
+    program.start(label_of(job) if job is not None else "FreeCAD")
     for obj in objects:
         program.item(obj)
     program.finish()
     if program.missing_switches:  # machine codes the post could not write (posts/live_tool.py)
         FreeCAD.Console.PrintWarning("%s_post: no %s given: the program has a comment in place of each such switch"
                                      "\n" % (program.control.post, ", ".join(dict.fromkeys(program.missing_switches))))
-    return "\n".join(program.lines) + "\n"
+    return program.text()
 
 
 def export(name: str, objectslist: Optional[Iterable[Any]], filename: Optional[str],

@@ -1,21 +1,20 @@
-"""The lathe controls the posts write for: each one's syntax and habits.
+"""The lathe posts' controls: each one a target of the engine's output layer
+(``engine/output/targets.py``: its whole syntax) under the post's name.
 
-Every difference between the controls is a class attribute (data) or a
-method of its class here; the rest of the posts asks the control and never
-its name. The pecking controls name the engine's input control whose cycles
-they write (``cycle_control``) and the codes of those cycles; the classes
-themselves come from the engine's cycle registry.
+Nothing here writes a word: what a post says about itself (its tooltip, the
+help of its options, which options it takes) is derived from its target's
+table, and the program is written by the engine's writer and program builder.
+A post stub ``postprocessors/<name>_lathe_post.py`` names its target
+(``CONTROL = "<name>"``); any lathe target of the engine can have one.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Dict, List, Optional
+from typing import TYPE_CHECKING, Dict, Optional
 
-from ...engine import FEED, RAPID, ProgramError
-from ...engine.numbers import format_decimal
+from ...engine.output.syntax import Target
+from ...engine.output.targets import LATHE_TARGETS, TARGETS, with_g07_meaning
 from ...engine.registry import cycle_for
-from ...engine.targets import C_FEED_COMPOSITE, C_FEED_LINEAR
-from ...engine.targets import comment as paren_comment
 
 if TYPE_CHECKING:
     from .options import Options
@@ -24,96 +23,102 @@ if TYPE_CHECKING:
 NATIVE_CYCLE93 = "cycle93"  # Siemens CYCLE93, every groove
 NATIVE_PECKING = "pecking"  # a pecking cycle (G77/G76, G75/G74), plain grooves only
 
-DWELL_DIGITS = 3  # decimals of a dwell in seconds
-ONE_DIGIT_CODES = {RAPID: "G0", FEED: "G1", "G2": "G2", "G3": "G3"}
-TWO_DIGIT_CODES = {RAPID: "G00", FEED: "G01", "G2": "G02", "G3": "G03"}
+# The lathe posts: the stub's CONTROL -> its target (LinuxCNC's post writes the C axis of a Cylinder slot).
+LATHE_POSTS = {"sinumerik": "sinumerik", "ab9": "ab9", "fanuc": "fanuc", "haas": "haas", "gsk": "gsk",
+               "linuxcnc": "linuxcnc-c"}
 
 
 class Control:
-    """One lathe control's syntax (the defaults; each control overrides what differs)."""
+    """One lathe post's control: its target and what the post says of it."""
 
-    name = ""  # the post's CONTROL and the engine's input control of its programs
-    post = ""  # post name (without _post)
-    title = ""
-    codes: Dict[str, str] = ONE_DIGIT_CODES
-    digits = 3  # decimals of coordinates (--precision default)
-    native: Optional[str] = None  # NATIVE_CYCLE93, NATIVE_PECKING or None (always expanded)
-    x_mode_codes: Optional[str] = None  # what --x-mode switches ("DIAMON/DIAMOF"); None: no --x-mode
-    x_words = "a diameter"  # how the tooltip says X is written
-    expand_help_note = ""  # what --expand-cycles' help adds
-    g07_radius_option = False  # --g07-radius: G07 may select radius mode on this control
-    o_number_frame = False  # "%" lines around the program, an O number (--program-number)
-    max_tool_number = 9999
-    m6_stops_spindle = False  # a tool change stops the spindle
-    cr_arcs = False  # arcs with their radius CR= (Siemens) instead of I/K
-    c_feed: Optional[str] = None  # a C axis: how F of a move that turns C is read (targets.C_FEED_*); None: no C
-    native_slot = False  # a Cylinder slot op as a native GSK G7.1 Type II region (--native-cycles)
+    def __init__(self, name: str, target: Target) -> None:
+        self.target = target
+        self.name = name  # the post stub's CONTROL
+        self.post = name + "_lathe"  # post name (without _post)
+        self.title = target.title
+
+    @property
+    def native(self) -> Optional[str]:
+        """NATIVE_CYCLE93, NATIVE_PECKING or None (grooves always expanded)."""
+        return self.target.native.grooves or None
+
+    @property
+    def digits(self) -> int:
+        """Decimals of coordinates in mm (--precision's default; inch: one more)."""
+        return self.target.digits_mm
 
     @property
     def has_x_mode(self) -> bool:
         """Whether the post takes --x-mode (X words as diameters or radii)."""
-        return self.x_mode_codes is not None
+        return bool(self.target.x_mode_codes[0])
 
-    def grooves_summary(self) -> str:
-        """How the post writes grooves, for its tooltip."""
-        return "grooves expanded into G0/G1 moves"
+    @property
+    def x_mode_codes(self) -> str:
+        return "/".join(self.target.x_mode_codes)
 
-    def comment(self, text: str) -> str:
-        return paren_comment(text)
+    @property
+    def x_words(self) -> str:
+        """How the tooltip says X is written."""
+        code = self.target.x_mode_codes[0]
+        return "a diameter, %s" % code if code else "a diameter"
 
-    def dwell(self, seconds: float) -> str:
-        return "G4 P" + format_decimal(seconds, DWELL_DIGITS)
+    @property
+    def expand_help_note(self) -> str:
+        """What --expand-cycles' help adds."""
+        return "" if self.native else "; the default: %s has no grooving cycle" % self.target.maker
 
-    def setup(self, options: Options) -> List[str]:
-        """The lathe setup lines after the header."""
-        raise NotImplementedError
+    @property
+    def g07_radius_option(self) -> bool:
+        """--g07-radius: G07 may select radius mode on this control (Allen-Bradley)."""
+        return self.target.x_mode_codes == ("G07", "G08")
 
-    def tool_change(self, number: int) -> List[str]:
-        return ["T%02d%02d" % (number, number)]
+    @property
+    def o_number_frame(self) -> bool:
+        """"%" lines around the program and an O number (--program-number)."""
+        return bool(self.target.program_number)
 
-    def spindle(self, rpm: int, m_code: str) -> List[str]:
-        return ["G97 S%d %s" % (rpm, m_code)]
+    @property
+    def c_feed(self) -> Optional[str]:
+        """Whether (and how) the control writes the C axis of a Cylinder slot."""
+        return self.target.c_feed
 
-    feed_mode_codes = ("G94", "G95")  # (per minute, per revolution)
-    unit_codes = ("G21", "G20")  # (metric, inch: lengths and feeds)
+    @property
+    def native_slot(self) -> bool:
+        """A Cylinder slot op as a native GSK G7.1 Type II region (--native-cycles)."""
+        return self.target.native.slots
 
-    def feed_mode(self, per_rev: bool) -> str:
-        """The code of feed per minute or (``per_rev``) per revolution."""
-        return self.feed_mode_codes[1 if per_rev else 0]
+    # -- the pecking cycles
+    @property
+    def cycle_control(self) -> str:
+        """The engine's input control whose registered cycles the post writes."""
+        return self.target.native.dialect
 
-    def units(self, inches: bool) -> str:
-        """The code of metric or inch lengths and feeds."""
-        return self.unit_codes[1 if inches else 0]
+    @property
+    def longitudinal_cycle(self) -> str:
+        return self.target.native.longitudinal
 
-    def surface_speed(self, speed: int, limit: int, m_code: str) -> List[str]:
-        """Constant surface speed ``speed`` (m/min, ft/min in inch) with the spindle limited to ``limit`` rpm."""
-        raise NotImplementedError
+    @property
+    def face_cycle(self) -> str:
+        return self.target.native.face
 
-    def m_code(self, number: int) -> str:
-        return "M%02d" % number
+    @property
+    def retract_word(self) -> Optional[str]:
+        """The cycle word holding the peck retract e (Fanuc's first-block R), or None."""
+        return self.target.native.retract_word or None
 
-    def end(self, options: Options) -> List[str]:
-        """The lines that end the program."""
-        return [self.m_code(30)]
+    @property
+    def retract_setting(self) -> Optional[str]:
+        """Where the control keeps e otherwise (named in a comment), or None."""
+        return self.target.native.retract_setting or None
 
-    def work_offset_refusal(self, number: int) -> Optional[str]:
-        """Why work offset G``number`` (54..59) cannot be written, or None."""
-        return None
+    @property
+    def least_input_increment(self) -> float:
+        """mm: counted words (Fanuc P/Q) are whole multiples of it."""
+        return 10.0 ** -self.target.digits_mm
 
-
-class PeckingControl(Control):
-    """A control whose pecking cycles cut plain grooves natively."""
-
-    native = NATIVE_PECKING
-    codes = TWO_DIGIT_CODES
-    max_tool_number = 99
-    cycle_control = ""  # the engine's input control whose cycles the post writes
-    longitudinal_cycle = ""  # the code of its grooves along Z ("G77")
-    face_cycle = ""  # the code of its face grooves ("G76")
-    retract_word: Optional[str] = None  # the cycle word holding the peck retract e (Fanuc's first-block R)
-    retract_setting: Optional[str] = None  # where the control keeps e otherwise (named in a comment)
-    least_input_increment = 0.001  # mm: counted words (Fanuc P/Q) are whole multiples of it
-    least_input_increment_inch = 0.0001  # in: the same in inch programs
+    @property
+    def least_input_increment_inch(self) -> float:
+        return 10.0 ** -self.target.digits_inch
 
     @property
     def pecking_codes(self) -> str:
@@ -124,8 +129,14 @@ class PeckingControl(Control):
         """The engine's cycle class the post writes for a longitudinal or a face groove."""
         return cycle_for(self.cycle_control, self.longitudinal_cycle if longitudinal else self.face_cycle)
 
+    # -- help texts
     def grooves_summary(self) -> str:
-        return "plain grooves as native %s calls, others expanded" % self.pecking_codes
+        """How the post writes grooves, for its tooltip."""
+        if self.native == NATIVE_CYCLE93:
+            return "grooves as native CYCLE93 calls"
+        if self.native == NATIVE_PECKING:
+            return "plain grooves as native %s calls, others expanded" % self.pecking_codes
+        return "grooves expanded into G0/G1 moves"
 
     def retract_help(self) -> str:
         """How --retract reaches the control, for its help."""
@@ -133,139 +144,23 @@ class PeckingControl(Control):
             return "written as %s R(%s)" % (self.longitudinal_cycle, self.retract_word)
         return "a machine setting on this control, stated in a comment"
 
+    def units(self, inches: bool) -> str:
+        """The code of metric or inch lengths and feeds."""
+        return self.target.units_codes[1 if inches else 0]
 
-class Sinumerik(Control):
-    name, post, title = "sinumerik", "sinumerik_lathe", "Siemens Sinumerik 840D lathe (CYCLE93)"
-    native = NATIVE_CYCLE93
-    x_mode_codes = "DIAMON/DIAMOF"
-    cr_arcs = True
-    last_work_offset = 57
-
-    def grooves_summary(self) -> str:
-        return "grooves as native CYCLE93 calls"
-
-    def comment(self, text: str) -> str:
-        return "; " + paren_comment(text)[1:-1]
-
-    def dwell(self, seconds: float) -> str:
-        return "G4 F" + format_decimal(seconds, DWELL_DIGITS)
-
-    unit_codes = ("G71", "G700")  # G700: inch lengths and feeds (G70 keeps feeds in the basic system)
-
-    def setup(self, options: Options) -> List[str]:
-        return ["G18 %s G90 G40 G94 %s" % (self.units(options.inches), "DIAMON" if options.diameter else "DIAMOF")]
-
-    def surface_speed(self, speed: int, limit: int, m_code: str) -> List[str]:
-        return ["G96 S%d LIMS=%d %s" % (speed, limit, m_code)]
-
-    def tool_change(self, number: int) -> List[str]:
-        return ["T%d D1" % number]
-
-    def m_code(self, number: int) -> str:
-        return "M%d" % number
-
-    def work_offset_refusal(self, number: int) -> Optional[str]:
-        if number > self.last_work_offset:
-            return "Siemens' settable offsets are G54..G%d here" % self.last_work_offset
-        return None
+    def program_target(self, options: Options) -> Target:
+        """The target the program is written for with ``options``: the Allen-Bradley
+        G07/G08 swapped with --g07-radius."""
+        return with_g07_meaning(self.target, options.g07_is_diameter)
 
 
-class AllenBradley9(PeckingControl):
-    name, post, title = "ab9", "ab9_lathe", "Allen-Bradley 9/Series lathe (G77/G76)"
-    x_mode_codes = "G07/G08"
-    g07_radius_option = True
-    cycle_control, longitudinal_cycle, face_cycle = "ab9", "G77", "G76"
-    retract_setting = "AMP parameter"
-
-    def dwell(self, seconds: float) -> str:
-        raise ProgramError(
-            "a dwell (G4) cannot be written for the Allen-Bradley 9/Series: its dwell word is not documented "
-            "in the manuals this post follows (set the groove's Dwell to 0 or use another post)")
-
-    def setup(self, options: Options) -> List[str]:
-        diameter_code = "G07" if options.g07_is_diameter else "G08"
-        radius_code = "G08" if options.g07_is_diameter else "G07"
-        return ["G18 %s G90 G40 G94 %s" % (self.units(options.inches),
-                                          diameter_code if options.diameter else radius_code)]
-
-    def surface_speed(self, speed: int, limit: int, m_code: str) -> List[str]:
-        raise ProgramError(
-            "constant surface speed cannot be written for the Allen-Bradley 9/Series: its spindle limit word is "
-            "not documented in the manuals this post follows (set SurfaceSpeed to 0 and give SpindleSpeed)")
-
-
-class FanucFrame(PeckingControl):
-    """The program frame Fanuc and Haas share: "%" lines, an O number, G21 alone, G98."""
-
-    o_number_frame = True
-
-    feed_mode_codes = ("G98", "G99")
-
-    def setup(self, options: Options) -> List[str]:
-        return [self.units(options.inches), "G40 G98"]
-
-    def surface_speed(self, speed: int, limit: int, m_code: str) -> List[str]:
-        return ["G50 S%d" % limit, "G96 S%d %s" % (speed, m_code)]
-
-    def end(self, options: Options) -> List[str]:
-        return ["M30", "%"]
-
-
-class Fanuc(FanucFrame):
-    name, post, title = "fanuc", "fanuc_lathe", "Fanuc lathe, G code system A (two-block G75/G74)"
-    cycle_control, longitudinal_cycle, face_cycle = "fanuc", "G75", "G74"
-    retract_word = "e"
-
-    def dwell(self, seconds: float) -> str:
-        return "G04 P%d" % int(round(seconds * 1000.0))
-
-
-class Haas(FanucFrame):
-    name, post, title = "haas", "haas_lathe", "Haas lathe (one-block G75/G74)"
-    cycle_control, longitudinal_cycle, face_cycle = "haas", "G75", "G74"
-    retract_setting = "setting 22"
-
-    def dwell(self, seconds: float) -> str:
-        return "G04 P" + format_decimal(seconds, DWELL_DIGITS)
-
-
-class Gsk(Fanuc):
-    name, post, title = "gsk", "gsk_lathe", "GSK 980TDi lathe (G75/G74 two-block, G7.1 cylinder slots)"
-    cycle_control = "gsk"
-    c_feed = C_FEED_COMPOSITE  # Fanuc-like: F of a linear and rotary move along their composite path
-    native_slot = True
-
-
-class LinuxCNC(Control):
-    name, post, title = "linuxcnc", "linuxcnc_lathe", "LinuxCNC lathe (G7, grooves expanded)"
-    digits = 4
-    x_mode_codes = "G7/G8"
-    x_words = "a diameter, G7"
-    expand_help_note = "; the default: LinuxCNC has no grooving cycle"
-    m6_stops_spindle = True  # LinuxCNC's M6 stops the spindle
-    c_feed = C_FEED_LINEAR  # a lathe with a rotary C axis: F along X/Z when they move, else degrees/min
-
-    def setup(self, options: Options) -> List[str]:
-        return ["G18 %s %s G90 G91.1 G40 G94" % ("G7" if options.diameter else "G8", self.units(options.inches))]
-
-    def surface_speed(self, speed: int, limit: int, m_code: str) -> List[str]:
-        return ["G96 D%d S%d %s" % (limit, speed, m_code)]
-
-    def tool_change(self, number: int) -> List[str]:
-        return ["T%d M6 G43" % number]
-
-    def m_code(self, number: int) -> str:
-        return "M%d" % number
-
-    def end(self, options: Options) -> List[str]:
-        return ["M2"]
-
-
-CONTROLS: Dict[str, Control] = {c.name: c() for c in (Sinumerik, AllenBradley9, Fanuc, Haas, Gsk, LinuxCNC)}
+CONTROLS: Dict[str, Control] = {name: Control(name, TARGETS[target]) for name, target in LATHE_POSTS.items()}
 
 
 def control_named(name: str) -> Control:
-    """The control of post ``name`` (a key of CONTROLS); ValueError when unknown."""
+    """The control of post ``name`` (a key of CONTROLS, or any other lathe target); ValueError when unknown."""
+    if name not in CONTROLS and name in LATHE_TARGETS:
+        CONTROLS[name] = Control(name, TARGETS[name])
     try:
         return CONTROLS[name]
     except KeyError:

@@ -93,7 +93,7 @@ def _switch(program: Program, words: Optional[str], option: str, what: str, labe
                         "would not turn or C would not be an axis); give %s WORDS, or %s to write a comment in "
                         "its place and add the code by hand" % (what, option, option, BY_HAND), op=label)
     program.missing_switches.append(option)
-    program.add([program.control.comment("%s: no %s given, the post cannot write it" % (what, option))])
+    program.add([program.writer.comment("%s: no %s given, the post cannot write it" % (what, option))])
 
 
 def switch_on(program: Program, tool_controller: Any, label: str) -> None:

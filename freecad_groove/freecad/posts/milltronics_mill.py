@@ -34,19 +34,21 @@ one line, no file written.
 
 from typing import Any, Iterable, List, Optional, Sequence, Union
 
-from ...engine.numbers import MM_PER_INCH, format_decimal
+from ...engine.errors import ProgramError
+from ...engine.mill_program import MillMoves, MillNative, MillToolChange, milltronics_program
+from ...engine.moves import ARC_CCW, ARC_CW, FEED, RAPID, Move
 from ..units import SECONDS_PER_MINUTE
 from .command_post import each_part, post_class, reported, script_export
 from .errors import PostError
-from .milltronics_ops import DECIMALS, NativeOp, recognise
+from .milltronics_ops import NativeOp, recognise
 from .objects import is_fixture_block, is_job, is_tool_controller, job_of, label_of
 from .options import PostParser, split_arguments
 
 POST = "milltronics_mill"
 TITLE = "Milltronics mill (Face and Pocket Shape ops as the G33/G34 autoroutines, other ops as moves)"
-COOLANT_CODES = {"Flood": "M8", "Mist": "M7"}
-MOTION = {"G0": "G0", "G00": "G0", "G1": "G1", "G01": "G1", "G2": "G2", "G02": "G2", "G3": "G3", "G03": "G3"}
-WORDS = "XYZIJK"
+COOLANT_CODES = {"Flood": 8, "Mist": 7}
+MOTION = {"G0": RAPID, "G00": RAPID, "G1": FEED, "G01": FEED, "G2": ARC_CW, "G02": ARC_CW, "G3": ARC_CCW,
+          "G03": ARC_CCW}
 
 
 def make_parser() -> PostParser:
@@ -77,86 +79,68 @@ def _operations(objects: Iterable[Any]) -> List[Any]:
     return ops
 
 
-class _Output:
-    """The lines written so far, the tool in force and the number format."""
+def path_moves(op: Any) -> List[Move]:
+    """The op's own G0-G3 moves (mm, feeds per minute; an axis a command does not name is None; an arc's
+    centre from the position before it); PostError naming any other command."""
+    moves: List[Move] = []
+    where = {"X": None, "Y": None}
+    for index, command in enumerate(op.Path.Commands):
+        name = command.Name
+        if not name or name.startswith("("):
+            continue
+        if name not in MOTION:
+            raise PostError("%s (command %d) cannot be written by %s_post: G0 to G3 moves only"
+                            % (name, index + 1, POST), label_of(op))
+        params, kind = command.Parameters, MOTION[name]
+        centre = None
+        if kind in (ARC_CW, ARC_CCW):
+            if where["X"] is None or where["Y"] is None:
+                raise PostError("%s (command %d): an arc from an unknown X-Y position" % (name, index + 1),
+                                label_of(op))
+            centre = (where["X"] + params.get("I", 0.0), where["Y"] + params.get("J", 0.0))
+        f = params["F"] * SECONDS_PER_MINUTE if kind != RAPID and "F" in params else None
+        moves.append(Move(kind, params.get("X"), params.get("Z"), f, y=params.get("Y"), centre=centre))
+        where.update({axis: params[axis] for axis in "XY" if axis in params})
+    return moves
 
-    def __init__(self, inches: bool) -> None:
-        self.inches = inches
-        self.digits = DECIMALS[inches]
-        self.lines: List[str] = []
-        self.tool: Optional[Any] = None
-        self.feed: Optional[str] = None
 
-    def number(self, mm: float) -> str:
-        return format_decimal(mm / MM_PER_INCH if self.inches else mm, self.digits)
-
-    def tool_change(self, op: Any) -> None:
+def _items(objects: Iterable[Any], native: bool, inches: bool) -> list:
+    """The program's items for ``objects`` (engine/mill_program.py)."""
+    items: list = []
+    tool = None
+    for op in _operations(objects):
         controller = getattr(op, "ToolController", None)
-        if controller is None or controller is self.tool:
-            return
-        self.tool = controller
-        spin = "M4" if str(getattr(controller, "SpindleDir", "Forward")) == "Reverse" else "M3"
-        number = int(controller.ToolNumber)
-        # the seed's D1 G43 H1: the autoroutines' G41/G42 read the diameter register, every Z the length offset
-        self.lines += ["G32", "T%d M6" % number, "S%s %s" % (format_decimal(float(controller.SpindleSpeed), 3, False),
-                                                             spin), "D%d G43 H%d" % (number, number)]
-        self.feed = None
-
-    def path(self, op: Any) -> None:
-        """The op's own G0-G3 moves; PostError naming any other command."""
-        for index, command in enumerate(op.Path.Commands):
-            name = command.Name
-            if not name or name.startswith("("):
-                continue
-            if name not in MOTION:
-                raise PostError("%s (command %d) cannot be written by %s_post: G0 to G3 moves only"
-                                % (name, index + 1, POST), label_of(op))
-            params = command.Parameters
-            words = [MOTION[name]] + [axis + self.number(params[axis]) for axis in WORDS if axis in params]
-            if name not in ("G0", "G00") and "F" in params:
-                feed = self.number(params["F"] * SECONDS_PER_MINUTE)
-                if feed != self.feed:
-                    words.append("F" + feed)
-                    self.feed = feed
-            if len(words) > 1:
-                self.lines.append(" ".join(words))
-
-    def native(self, item: NativeOp) -> None:
-        digits = self.digits
-        title = item.call.NAME + ("; " + item.note if item.note else "")
-        self.lines += ["(%s: %s)" % (_comment_text(item.label), title), "G0 Z" + format_decimal(item.clearance, digits),
-                       "G0 X%s Y%s" % (format_decimal(item.x, digits), format_decimal(item.y, digits)),
-                       "F" + format_decimal(item.xy_feed, digits)]
-        self.lines += item.call.emit().split("\n") + ["G31"]
-        self.feed = None  # the call's F is the Z feed: the next feed move writes its own
+        if controller is not None and controller is not tool:
+            tool = controller
+            items.append(MillToolChange(label_of(controller), int(controller.ToolNumber),
+                                        float(controller.SpindleSpeed),
+                                        str(getattr(controller, "SpindleDir", "Forward")) != "Reverse"))
+        coolant = COOLANT_CODES.get(str(getattr(op, "CoolantMode", "None") or "None"))
+        found = recognise(op, inches) if native else "--expand-cycles"
+        if isinstance(found, NativeOp):
+            items.append(MillNative(_bracketed(found.label), found.call, found.note, found.x, found.y,
+                                    found.clearance, found.xy_feed, coolant))
+        else:
+            items.append(MillMoves(_bracketed(label_of(op)), _bracketed(found), path_moves(op), coolant))
+    return items
 
 
-def _comment_text(text: str) -> str:
+def _bracketed(text: str) -> str:
+    """A text for a comment, its parentheses as brackets (a comment cannot hold parentheses)."""
     return text.replace("(", "[").replace(")", "]")
 
 
-def milltronics_program(objects: Iterable[Any], native: bool, inches: bool) -> str:
+def milltronics_program_of(objects: Iterable[Any], native: bool, inches: bool) -> str:
     """The program for ``objects`` (see the module notes); PostError on what cannot be written."""
     objects = list(objects or [])
     job = job_of(objects)
-    out = _Output(inches)
-    out.lines += ["(%s: %s_post of freecad-groove)" % (_comment_text(label_of(job) if job else "FreeCAD"), POST),
-                  "%s G90 G40" % ("G20" if inches else "G21")]
-    for op in _operations(objects):
-        out.tool_change(op)
-        coolant = COOLANT_CODES.get(str(getattr(op, "CoolantMode", "None") or "None"))
-        if coolant:
-            out.lines.append(coolant)
-        item = recognise(op, inches) if native else "--expand-cycles"
-        if isinstance(item, NativeOp):
-            out.native(item)
-        else:
-            out.lines.append("(%s written as moves: %s)" % (_comment_text(label_of(op)), _comment_text(item)))
-            out.path(op)
-        if coolant:
-            out.lines.append("M9")
-    out.lines += ["M5", "M30"]
-    return "\n".join(out.lines) + "\n"
+    title = "%s: %s_post of freecad-groove" % (_bracketed(label_of(job)) if job else "FreeCAD", POST)
+    try:
+        return milltronics_program(_items(objects, native, inches), inches, title)
+    except PostError:
+        raise
+    except (ProgramError, ValueError) as exc:
+        raise PostError(str(exc)) from None
 
 
 def _program(objects: Iterable[Any], argstring: Union[None, str, Sequence[str]]) -> Optional[str]:
@@ -169,7 +153,7 @@ def _program(objects: Iterable[Any], argstring: Union[None, str, Sequence[str]])
         FreeCAD.Console.PrintMessage("%s_post --help: no program written; the options:\n%s\n"
                                      % (POST, parser.format_help().rstrip("\n")))
         return None
-    return milltronics_program(objects, options.native, options.inches)
+    return milltronics_program_of(objects, options.native, options.inches)
 
 
 def export(objectslist: Optional[Iterable[Any]], filename: Optional[str],

@@ -16,7 +16,10 @@ import re
 from typing import TYPE_CHECKING, Any, Callable, Dict, Iterable, NamedTuple, NoReturn, Optional, Tuple
 
 from ...engine import FEED, RAPID
+from ...engine.moves import ARC_CCW, ARC_CW, Move
 from ...engine.numbers import ARC_IJK_TOLERANCE, format_decimal
+from ...engine.output.program import Spindle, spindle_lines
+from ...engine.output.syntax import ARC_CR
 from ..units import feed_mm_per_min
 from .errors import PostError
 
@@ -119,7 +122,8 @@ class PathCommands:
         self.program.moved(x, z)
 
     def _arc(self, command: Command) -> None:
-        """G2, G3: an arc in the XZ plane with its centre I/K (Siemens: its radius CR=)."""
+        """G2, G3: an arc in the XZ plane with its centre I/K from the start (written the target's way:
+        I/K from the start as written, Siemens CR=)."""
         params, program = command.params, self.program
         if self.plane != "G18":
             self.refuse(command, "an arc in the %s plane; a lathe post writes arcs in the XZ plane (G18) only"
@@ -132,32 +136,18 @@ class PathCommands:
             self.refuse(command, "an arc from an unknown position: program X and Z before it")
         start = (program.x, program.z)
         end = (params.get("X", program.x), params.get("Z", program.z))
-        centre = (params.get("I", 0.0), params.get("K", 0.0))
-        f = feed_mm_per_min(params["F"]) if "F" in params else None
-        radius = self._signed_radius(command, start, end, centre) if program.control.cr_arcs else None
-        program.set_feed_mode(False)
-        program.add(program.writer.arc(command.code, end[0], end[1], centre[0], centre[1], f, radius))
-        program.moved(*end)
-
-    def _signed_radius(self, command: Command, start: Tuple[float, float], end: Tuple[float, float],
-                       offset: Tuple[float, float]) -> float:
-        """Siemens CR= of an arc from ``start`` to ``end`` (x, z) with the centre
-        ``offset`` (i, k) from the start: the radius, negative above 180 degrees."""
-        (x0, z0), (x1, z1), (i, k) = start, end, offset
-        cx, cz = x0 + i, z0 + k
-        r = math.hypot(i, k)
-        r1 = math.hypot(x1 - cx, z1 - cz)
-        if r < TOL or abs(r - r1) > ARC_IJK_TOLERANCE:
+        centre = (start[0] + params.get("I", 0.0), start[1] + params.get("K", 0.0))
+        radius, end_radius = math.dist(start, centre), math.dist(end, centre)
+        if radius < TOL or abs(radius - end_radius) > ARC_IJK_TOLERANCE:
             self.refuse(command, "the arc's end is not on its circle (radius %.4f at the start, %.4f at the end)"
-                        % (r, r1))
-        if math.hypot(x1 - x0, z1 - z0) < TOL:
+                        % (radius, end_radius))
+        if program.target.arc_form == ARC_CR and math.dist(start, end) < TOL:
             self.refuse(command, "a full circle cannot be written with CR=")
-        # sweep angle in the (z, x) plane seen from +Y: G2 clockwise
-        a0 = math.atan2(x0 - cx, z0 - cz)
-        a1 = math.atan2(x1 - cx, z1 - cz)
-        ccw = (a1 - a0) % (2 * math.pi)
-        sweep = ccw if command.code == "G3" else 2 * math.pi - ccw
-        return r if sweep <= math.pi + 1e-12 else -r
+        f = feed_mm_per_min(params["F"]) if "F" in params else None
+        program.set_feed_mode(False)
+        program.add(program.writer.programmed_line(Move(ARC_CW if command.code == "G2" else ARC_CCW, end[0], end[1], f,
+                                                        centre=centre), "arc"))
+        program.moved(*end)
 
     def _dwell(self, command: Command) -> None:
         params = command.params
@@ -168,9 +158,10 @@ class PathCommands:
         self.plane = command.code
 
     def _work_offset(self, command: Command) -> None:
-        why = self.program.control.work_offset_refusal(command.number)
-        if why:
-            self.refuse(command, "work offset %s: %s" % (command.code, why))
+        last = self.program.target.last_work_offset
+        if command.number > last:
+            self.refuse(command, "work offset %s: the %s output's settable offsets are G54..G%d here"
+                        % (command.code, self.program.target.maker, last))
         self.program.add([command.code])
         self.program.unknown_position()
 
@@ -191,10 +182,9 @@ class PathCommands:
         """M3, M4, with the speed S when the command has one."""
         program = self.program
         if "S" in command.params:
-            rpm = int(round(command.params["S"]))
-            m_code = program.control.m_code(command.number)
-            program.add(program.control.spindle(rpm, m_code))
-            program.spindle = ("rpm", rpm, m_code)
+            spindle = Spindle(int(round(command.params["S"])), command.number == 3)
+            program.add(spindle_lines(program.writer, spindle))
+            program.spindle = spindle
         else:
             program.m_code(command.number)
             program.spindle = None  # running, at a speed the post did not write
@@ -213,7 +203,7 @@ class PathCommands:
             self.refuse(command, "M6 without T")
         number = int(command.params["T"])
         self.program.change_tool(number, "tool %d" % number)
-        self.program.tool = None
+        self.program.tool_state = None
 
     # -- the tables: what each command is written by
     G_CODES: Dict[str, Handler] = {

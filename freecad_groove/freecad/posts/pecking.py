@@ -205,7 +205,7 @@ class PeckingCalls:
     def _read_back(self, value: float, x_axis: bool) -> float:
         """The value the control reads back from the written start word (a radius for X), in the output's units."""
         written = self.writer.x_word(value) if x_axis else self.writer.z_word(value)
-        return float(written) / (2.0 if (x_axis and self.writer.diameter) else 1.0)
+        return float(written) / (2.0 if (x_axis and self.writer.x_diameter) else 1.0)
 
     def _position_words(self, longitudinal: bool, bottom: Point, last: Optional[Point]) -> Dict[str, float]:
         """The groove bottom and the last groove's position (X and Z)."""

@@ -3,10 +3,13 @@ coolant, and every object of the post's list handed to the writer it needs
 (a Groove op to :class:`~.grooves.GrooveOutput`, any other Path to
 :class:`~.path_commands.PathCommands`)."""
 
-from typing import Any, Iterable, List, NamedTuple, Optional, Tuple
+from typing import Any, NamedTuple, Optional
 
 from ... import __version__
-from ...engine import RAPID, CycleError, ProgramError
+from ...engine import CycleError, ProgramError
+from ...engine.numbers import MM_PER_INCH
+from ...engine.output.program import ProgramBuilder, Spindle
+from ...engine.output.writer import Writer
 from .controls import Control
 from .errors import PostError, cycle_post_error
 from .grooves import GrooveOutput, groove_cutting
@@ -14,7 +17,6 @@ from .objects import groove_op_of, is_fixture_block, is_job, is_tool_controller,
 from .options import Options
 from .path_commands import PathCommands
 from .slots import SlotOutput, is_slot_op
-from .writer import LatheWriter
 
 MAX_RPM = 99999
 FT_MIN_PER_M_MIN = 1000.0 / 304.8  # surface speed in inch programs: ft/min
@@ -30,110 +32,31 @@ class ToolState(NamedTuple):
     direction: str
 
 
-class Program:
-    """Builds one program's text in ``lines``.
+class Program(ProgramBuilder):
+    """Builds one program's text in ``lines`` from a Job's objects: the engine's
+    program builder (output/program.py) with the post's control and options.
 
-    ``tool``: the ToolState in force (None: none yet, or an M6 of a Path
-    changed it); ``spindle_on``: the program started the spindle; ``spindle``:
-    the spindle command in force as written (("rpm", S, M) or ("css", S, limit,
-    M); None: off or unknown); ``per_rev``: feed per revolution in force (the
-    setup lines select feed per minute); ``x``, ``z``: the tool's model radius
-    and z when known (None after a tool change, a work offset)."""
+    ``tool_state``: the ToolState in force (None: none yet, or an M6 of a Path
+    changed it); ``missing_switches``: the options of live_tool.py the program
+    needed and did not get."""
 
     def __init__(self, control: Control, options: Options) -> None:
+        writer = Writer(control.program_target(options), not options.inches, False, digits=options.precision,
+                        x_diameter=options.diameter, scale=1.0 / MM_PER_INCH if options.inches else 1.0)
+        super().__init__(writer, comments=options.comments)
         self.control = control
         self.options = options
-        self.writer = LatheWriter(control, options.precision, options.diameter, options.inches)
-        self.lines: List[str] = []
-        self.tool: Optional[ToolState] = None
-        self.spindle_on = False
-        self.spindle: Optional[Tuple[Any, ...]] = None
-        self.per_rev = False
-        self.x: Optional[float] = None
-        self.z: Optional[float] = None
-        self.missing_switches: List[str] = []  # options of live_tool.py the program needed and did not get
-
-    # -- output helpers
-    def add(self, lines: Iterable[str]) -> None:
-        self.lines.extend(lines)
-
-    def note(self, text: str) -> None:
-        """A comment, unless --no-comments."""
-        if self.options.comments:
-            self.lines.append(self.control.comment(text))
-
-    def m_code(self, number: int) -> None:
-        self.lines.append(self.control.m_code(number))
-
-    def moved(self, x: Optional[float] = None, z: Optional[float] = None) -> None:
-        """The tool is now at radius ``x`` / ``z`` (None: that axis did not move)."""
-        if x is not None:
-            self.x = x
-        if z is not None:
-            self.z = z
-
-    def rapid(self, x: Optional[float] = None, z: Optional[float] = None, force: bool = False) -> None:
-        self.add(self.writer.move(RAPID, x, z, force=force))
-        self.moved(x, z)
-
-    def unknown_position(self) -> None:
-        self.x = self.z = None
-        self.writer.forget(position=True, motion=True, feed=False)
-
-    def change_tool(self, number: int, note: str) -> None:
-        """The tool change to tool ``number`` with a comment ``note``."""
-        self.note(note)
-        self.add(self.control.tool_change(number))
-        self.unknown_position()
-        if self.control.m6_stops_spindle:
-            self.spindle_on = False
-            self.spindle = None
-
-    def set_feed_mode(self, per_rev: bool) -> None:
-        """Feed per revolution or per minute from here on (the code only when it changes; F is written again)."""
-        if per_rev != self.per_rev:
-            self.add([self.control.feed_mode(per_rev)])
-            self.writer.forget(position=False, motion=False, feed=True)
-            self.per_rev = per_rev
-
-    def start_spindle(self, spindle: Tuple[Any, ...]) -> None:
-        """The spindle command ``spindle`` (see the class notes), unless it is in force."""
-        if spindle == self.spindle:
-            return
-        if spindle[0] == "css":
-            self.add(self.control.surface_speed(spindle[1], spindle[2], spindle[3]))
-        else:
-            self.add(self.control.spindle(spindle[1], spindle[2]))
-        self.spindle = spindle
-        self.spindle_on = True
-
-    def stop_spindle(self) -> None:
-        self.m_code(5)
-        self.spindle_on = False
-        self.spindle = None
+        self.tool_state: Optional[ToolState] = None
+        self.missing_switches: list = []
 
     # -- program frame
-    def begin(self, title: str) -> None:
+    def start(self, title: str) -> None:
         """The header and the control's setup lines."""
-        control, options = self.control, self.options
-        if control.o_number_frame:
-            self.lines.append("%")
-            if options.program_number is not None:
-                name = " " + control.comment(title) if (options.header and options.comments and title) else ""
-                self.lines.append("O%04d%s" % (options.program_number, name))
-        elif options.header and title:
-            self.note(title)
-        if options.header:
-            unit = "in" if options.inches else "mm"
-            self.note("post %s by freecad-groove %s; lengths %s, feeds %s/min or %s/rev"
-                      % (control.post, __version__, unit, unit, unit))
-        self.add(control.setup(options))
-
-    def finish(self) -> None:
-        """The spindle stop and the program end."""
-        if self.spindle_on:
-            self.stop_spindle()
-        self.add(self.control.end(self.options))
+        options = self.options
+        unit = "in" if options.inches else "mm"
+        notes = ["post %s by freecad-groove %s; lengths %s, feeds %s/min or %s/rev"
+                 % (self.control.post, __version__, unit, unit, unit)] if options.header else []
+        self.begin(title if options.header else None, options.program_number, notes)
 
     # -- tools, spindle
     def tool_controller(self, tc: Any, spindle: bool = True) -> None:
@@ -141,25 +64,25 @@ class Program:
         if tc is None:
             return
         state = ToolState(int(tc.ToolNumber), float(tc.SpindleSpeed), str(getattr(tc, "SpindleDir", "Forward")))
-        if state == self.tool:
+        if state == self.tool_state:
             return
-        if state.number < 0 or state.number > self.control.max_tool_number:
+        if state.number < 0 or state.number > self.target.max_tool:
             raise PostError("ToolNumber %d cannot be written as a tool number of this control" % state.number,
                             op=label_of(tc))
-        if self.tool is None or self.tool.number != state.number:
-            self.change_tool(state.number, "tool %d: %s" % (state.number, label_of(tc)))
-        self.tool = state
+        if self.tool_state is None or self.tool_state.number != state.number:
+            self.change_tool(state.number, "tool %d: %s" % (state.number, label_of(tc)), state.number)
+        self.tool_state = state
         if spindle:
             self.tool_spindle(tc)
 
     def tool_spindle(self, tc: Any) -> None:
         """The spindle the tool controller asks for, if not in force (a stop when it gives none)."""
-        state = self.tool
+        state = self.tool_state
         if state is not None and state.speed > 0 and state.direction in ("Forward", "Reverse"):
             rpm = int(round(state.speed))
             if rpm < 1 or rpm > MAX_RPM:
                 raise PostError("SpindleSpeed %g cannot be written" % state.speed, op=label_of(tc))
-            self.start_spindle(("rpm", rpm, self.control.m_code(3 if state.direction == "Forward" else 4)))
+            self.start_spindle(Spindle(rpm, state.direction == "Forward"))
         elif self.spindle_on:
             self.stop_spindle()
 
@@ -168,12 +91,12 @@ class Program:
         if cutting.direction not in ("Forward", "Reverse"):
             raise PostError("is %s: a groove is cut with the spindle turning (Forward or Reverse)"
                             % cutting.direction, op=label, parameter="ToolController SpindleDir")
-        m_code = self.control.m_code(3 if cutting.direction == "Forward" else 4)
+        clockwise = cutting.direction == "Forward"
         if cutting.surface_speed is not None:
             speed = cutting.surface_speed * (FT_MIN_PER_M_MIN if self.options.inches else 1.0)
-            self.start_spindle(("css", max(1, int(round(speed))), int(round(cutting.max_rpm)), m_code))
+            self.start_spindle(Spindle(max(1, int(round(speed))), clockwise, int(round(cutting.max_rpm))))
         else:
-            self.start_spindle(("rpm", max(1, int(round(cutting.rpm))), m_code))
+            self.start_spindle(Spindle(max(1, int(round(cutting.rpm))), clockwise))
 
     # -- objects
     def item(self, obj: Any) -> None:
@@ -211,7 +134,7 @@ class Program:
         try:
             if groove is not None:
                 self.groove_spindle(groove_cutting(groove), label)
-            elif self.tool is not None and op_property(obj, "ToolController") is not None and not is_slot_op(obj):
+            elif self.tool_state is not None and op_property(obj, "ToolController") is not None and not is_slot_op(obj):
                 self.tool_spindle(op_property(obj, "ToolController"))  # after a groove's own spindle
             if groove is not None and (obj is groove or self.options.native):
                 if obj is not groove:

@@ -1,8 +1,8 @@
 """Writing a posted program to the file the user chose: atomically
-(engine/output.py: the old file or the new one, never a torn one; links
+(engine/output/files.py: the old file or the new one, never a torn one; links
 followed, anything but a regular file refused), a refusal as PostError."""
 
-from ...engine.output import write_atomically
+from ...engine.output.files import write_atomically
 from .errors import PostError
 
 
