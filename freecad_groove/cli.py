@@ -233,7 +233,7 @@ def _emit(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]) ->
         if args.start_x is None or args.start_z is None:
             raise ProgramError("--expand needs the start point: --start-x (diameter) and --start-z")
         state = start_state(args, feed_default="rev")
-        mill = getattr(entry.cycle_class, "MILL", False)  # a grinder cycle: X/Y/Z, a mill-style program
+        mill = entry.cycle_class.MILL  # a grinder cycle: X/Y/Z, a mill-style program
         state.x = args.start_x if mill else args.start_x / 2.0
         state.z = args.start_z
         state.y = args.start_y if mill else None

@@ -31,8 +31,8 @@ expanded moves (no N numbers; each prefixed with ``/`` when the call was).
 
 Choices where the manuals are silent (each has a test)
 ------------------------------------------------------
-* Diameter programming at the start for every dialect (the seed example:
-  ``G00 X80 Z65`` before CYCLE93 with AXFA 35 as a radius); metric at the start;
+* Diameter programming at the start for every dialect (the Siemens manual's
+  example: ``G00 X80 Z65`` before CYCLE93 with AXFA 35 as a radius); metric at the start;
   the feed mode at the start is *unknown*: a feed move or a cycle before the
   program sets G94/G95 (G98/G99) is refused, because reading mm/rev as mm/min
   or the reverse is a crash or a scrapped part. ``start`` (a MachineState) may
@@ -96,7 +96,7 @@ Choices where the manuals are silent (each has a test)
   ``G96 ... D<limit>`` (Fanuc output: ``G50 S``).
 * Dwell: Siemens ``G4 F<s>``; Fanuc ``G04 X<s>``/``U<s>``/``P<ms>``; Haas ``G04 P``
   (seconds with a decimal point, milliseconds without). The 9/Series dwell
-  word is not documented in the seed: G04 is refused for "ab9".
+  word is not documented in the manual's grooving chapter: G04 is refused for "ab9".
 * Block delete: a ``/`` block whose effect changes a mode or the position makes
   that item *ambiguous* (it depends on the operator's switch). Using an
   ambiguous item (incremental move, X word under an ambiguous diameter mode,
@@ -234,8 +234,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
     def _block(self, block: Block) -> None:
         if block.percent:
             return
-        if self._region is not None and not block.is_empty():
-            self._region_block(block)
+        if self._open is not None and not block.is_empty():  # the blocks of a call over several (a region)
+            self._open_block(block)
             return
         if self.state.ended:
             if block.words or block.keywords or block.call or block.number is not None:
@@ -366,7 +366,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation):
 
     def footer(self) -> List[str]:
         """The lines that close the translation (the end when the program has none)."""
-        self.check_region_closed()
+        self.check_blocks_closed()
         lines = self.writer.footer()
         return lines[1:] if self.state.ended else lines
 

@@ -38,6 +38,7 @@ import math
 import re
 from typing import ClassVar, Dict, List, Optional, Sequence, Tuple
 
+from ..cycle import Cycle
 from ..errors import CycleError
 from ..moves import FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID, MachineState, Move
 from ..numbers import DIGITS_RULE, MAX_MOVES, format_decimal, format_given, shortened, too_many_digits
@@ -251,26 +252,24 @@ def peck_grooves(
 # ---------------------------------------------------------------- the shared cycle model
 
 
-class PeckingCycle:
+class PeckingCycle(Cycle):
     """Validation, expansion, emit and parse shared by the pecking cycles.
 
     A concrete cycle is a frozen dataclass whose fields are named after its
-    words, and which sets these class attributes:
+    words, and which sets the declaration of every cycle (cycle.Cycle: NAME,
+    COUNTED, ...) and these class attributes of the pecking cycles:
 
-    NAME      the G word ("G77").
     AXIS      plunge axis, "X" or "Z".
     WORDS     letters in the order emit() writes them.
     BOTTOM    the words that may give the groove bottom (("X",) or ("X", "U")).
     LAST      the words that may give the last groove position.
     PECK, PITCH, RELIEF   the letters of the peck depth, the groove spacing and
               the shift/relief at the bottom.
-    COUNTED   words that are integers in least input increments (Fanuc P, Q).
     SHIFT_D   True: RELIEF is Allen-Bradley's D: required, signed, done at every
               groove. False: Fanuc/Haas relief: optional, unsigned, toward the
               grooves already cut, not at the first.
     """
 
-    NAME: ClassVar[str]
     AXIS: ClassVar[str]
     WORDS: ClassVar[tuple]
     BOTTOM: ClassVar[tuple]
@@ -278,7 +277,6 @@ class PeckingCycle:
     PECK: ClassVar[str]
     PITCH: ClassVar[str]
     RELIEF: ClassVar[str]
-    COUNTED: ClassVar[tuple] = ()
     SHIFT_D: ClassVar[bool] = False
 
     # -- hooks a dialect may override
