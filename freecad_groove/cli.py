@@ -43,19 +43,26 @@ and tool table were opened.
 """
 
 import argparse
-import codecs
-import contextlib
-import io
 import os
 import re
-import shutil
 import signal
 import sys
-import tempfile
 import threading
 from typing import Callable, List, Tuple
 
 from . import __version__
+from .cli_io import (
+    Failure,
+    check_not_the_program,
+    open_program,
+    program_name,
+    quiet_stdout,
+    read_lines,
+    report,
+    tool_table,
+    write_chunks,
+    write_stdout,
+)
 from .cli_options import (
     add_settings_options,
     add_start_options,
@@ -72,14 +79,12 @@ from .cli_parameters import add_parameter_options, parameter_lines
 from .cli_verify import add_verify_parsers
 from .cli_verify import run as run_verify
 from .engine import registry
-from .engine.input_controls import DIALECTS, INPUT_CONTROLS
-from .engine.output.files import write_chunks_atomically
-from .engine.output.targets import TARGETS
+from .engine.input_controls import DIALECTS, INPUT_CONTROLS, input_control
+from .engine.output.targets import TARGETS, program_target
 from .engine.registry import CALL, CycleEntry, CycleWord
 from .engine.warnings import CycleWarning, cycle_warnings
 
 EXIT_ERROR = 2
-_CHUNK = 1 << 16  # characters or bytes read at a time
 
 DESCRIPTION = """\
 Expand the grooving cycles of a lathe program into plain G0/G1/G4 moves.
@@ -216,7 +221,6 @@ def _emit(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]) ->
     are appended to ``warnings`` (on line 1)."""
     from .engine.errors import CycleError, ProgramError
     from .engine.output.program import write_program
-    from .engine.output.targets import program_target
     from .engine.tool_table import BLADE_UNKNOWN
 
     entry = registry.entry(args.cycle_name)
@@ -232,7 +236,7 @@ def _emit(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]) ->
         if args.start_x is None or args.start_z is None:
             raise ProgramError("--expand needs the start point: --start-x (diameter) and --start-z")
         state = start_state(args, feed_default="rev")
-        mill = getattr(entry.cycle_class, "MILL", False)  # a grinder cycle: X/Y/Z, a mill-style program
+        mill = entry.cycle_class.MILL  # a grinder cycle: X/Y/Z, a mill-style program
         state.x = args.start_x if mill else args.start_x / 2.0
         state.z = args.start_z
         state.y = args.start_y if mill else None
@@ -250,9 +254,9 @@ def _emit(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]) ->
             call=call, note=note,
         )
     except CycleError as exc:
-        raise _Failure("emit %s" % args.cycle_name, 1, exc.message) from None
+        raise Failure("emit %s" % args.cycle_name, 1, exc.message) from None
     except ProgramError as exc:
-        raise _Failure("emit %s" % args.cycle_name, 1, str(exc)) from None
+        raise Failure("emit %s" % args.cycle_name, 1, str(exc)) from None
 
 
 def _native_call(args, model, state, settings, moves, target):
@@ -274,82 +278,25 @@ def _native_call(args, model, state, settings, moves, target):
 # ---------------------------------------------------------------- expand: a program
 
 
-class _Failure(Exception):
-    def __init__(self, name, line, message):
-        super().__init__(message)
-        self.name = name
-        self.line = line
-        self.message = message
-
-    @classmethod
-    def of_program_error(cls, name, exc):
-        """``NAME:LINE: message`` for an engine ProgramError (line 0 when it has none)."""
-        return cls(name, exc.line if exc.line is not None else 0, str(exc))
-
-
-def _program_name(path):
-    """How messages name a file given on the command line ("-": standard input)."""
-    return "<stdin>" if path == "-" else path
-
-
-def _one_line(text):
-    return " ".join(str(text).split())
-
-
-def _read_text(path, what):
-    """A small text file (the tool table) read whole: UTF-8, else Latin-1."""
-    name = _program_name(path)
-    try:
-        if path == "-":
-            data = sys.stdin.buffer.read()
-        else:
-            with open(path, "rb") as f:
-                data = f.read()
-    except OSError as exc:
-        raise _Failure(name, 0, "cannot read %s: %s" % (what, exc.strerror or exc)) from None
-    try:
-        return name, data.decode("utf-8")
-    except UnicodeDecodeError:
-        return name, data.decode("latin-1")
-
-
-def _tool_table(args):
-    """The --tool-table read (None without one); bad lines as TABLE:LINE: message."""
-    from .engine.errors import ProgramError
-    from .engine.mill_tool_table import read_mill_tool_table
-    from .engine.tool_table import read_tool_table
-
-    path = args.tool_table
-    if path is None:
-        return None
-    if args.tool_width is None and (args.tool_radius is not None or args.reference_corner is not None):
-        raise _Failure(path, 0, "--tool-radius and --reference-corner shape the --tool-width blade, which is not "
-                       "given: the table gives each tool's own; give --tool-width too for the tools it does not list")
-    if path == "-" and args.program == "-":
-        raise _Failure("<stdin>", 0, "the program and the tool table cannot both be read from standard input")
-    name, text = _read_text(path, "the tool table")
-    try:
-        if getattr(args, "dialect", None) == "milltronics":  # end mill diameters by D number
-            return read_mill_tool_table(text, name)
-        return read_tool_table(text, name)
-    except ProgramError as exc:
-        raise _Failure.of_program_error(name, exc) from None
-
-
 def _expand(args, warnings):
     """Translate the program to OUT (or stdout), streaming: the program is read
-    a line at a time (_open_program), each line's translation written as it is
-    made (_write_chunks). Everything the translation needs (modules, codecs) is
+    a line at a time (open_program), each line's translation written as it is
+    made (write_chunks). Everything the translation needs (modules, codecs) is
     loaded before OUT's temporary file is made, so that a signal there is never
     taken inside an import. The cycles' warnings are appended to ``warnings``."""
     from .engine.errors import ProgramError
     from .engine.translator import iter_translation
 
-    tools = _tool_table(args)
-    name = _program_name(args.program)
-    with _open_program(args.program, name) as text:
+    tools = tool_table(args)
+    name = program_name(args.program)
+    check_not_the_program(args.output, args.program)
+    try:  # a mill-style program for a lathe target, or the reverse: refused before anything is read
+        program_target(args.to, input_control(args.dialect).mill)
+    except ValueError as exc:
+        raise Failure(name, 0, "--to %s: %s" % (args.to, exc)) from None
+    with open_program(args.program, name) as text:
         chunks = iter_translation(
-            _read_lines(text, name),
+            read_lines(text, name),
             args.dialect,
             settings_from(args),
             target=args.to,
@@ -360,109 +307,9 @@ def _expand(args, warnings):
             native_cycles=args.native_cycles,
         )
         try:
-            _write_chunks(chunks, args.output)
+            write_chunks(chunks, args.output)
         except ProgramError as exc:
-            raise _Failure.of_program_error(name, exc) from None
-
-
-@contextlib.contextmanager
-def _open_program(path, name):
-    """The program as a text file to read line by line. Standard input (or a
-    pipe given by name) is first copied to an anonymous temporary file. The
-    text is UTF-8 when the whole file is valid UTF-8, else Latin-1, as when the
-    program was read whole: a first pass over the file decides, a chunk at a
-    time. Ends of line are kept for the engine (\\n, \\r\\n, \\r)."""
-    with contextlib.ExitStack() as stack:
-        try:
-            source = sys.stdin.buffer if path == "-" else stack.enter_context(open(path, "rb"))
-            if not source.seekable():
-                spool = stack.enter_context(tempfile.TemporaryFile())
-                shutil.copyfileobj(source, spool, _CHUNK)
-                spool.seek(0)
-                source = spool
-            begin = source.tell()  # standard input redirected from a file may be read from further on
-            encoding = _encoding(source)
-            source.seek(begin)
-        except OSError as exc:
-            raise _Failure(name, 0, "cannot read the program: %s" % (exc.strerror or exc)) from None
-        text = io.TextIOWrapper(source, encoding=encoding, newline="")
-        try:
-            yield text
-        finally:
-            text.detach()  # the file is closed by the stack (standard input is not closed)
-
-
-def _encoding(source):
-    """utf-8 when the whole binary file ``source`` decodes as UTF-8, else latin-1."""
-    decoder = codecs.getincrementaldecoder("utf-8")()
-    try:
-        for chunk in iter(lambda: source.read(_CHUNK), b""):
-            decoder.decode(chunk)
-        decoder.decode(b"", True)
-    except UnicodeDecodeError:
-        return "latin-1"
-    return "utf-8"
-
-
-def _read_lines(text, name):
-    """The lines of ``text`` one by one; a read error as a _Failure (not an
-    OSError, which the output would take for its own)."""
-    try:
-        for line in text:
-            yield line
-    except OSError as exc:
-        raise _Failure(name, 0, "cannot read the program: %s" % (exc.strerror or exc)) from None
-
-
-def _write_chunks(chunks, out):
-    """Write the chunks to ``out`` atomically ("-" or None: stdout). OUT: through
-    its temporary file, renamed over OUT after the last chunk. Stdout: through
-    an anonymous temporary file, copied to stdout after the last chunk, so that
-    a run that fails writes nothing there."""
-    if out not in (None, "-"):
-        try:
-            write_chunks_atomically(out, chunks, encoding="ascii", errors="replace")
-        except OSError as exc:
-            raise _Failure(out, 0, "cannot write the output: %s" % (exc.strerror or exc)) from None
-        return
-    try:
-        spool = tempfile.TemporaryFile("w+", encoding="utf-8", newline="")
-    except OSError as exc:
-        raise _Failure("<stdout>", 0, "cannot make the temporary file: %s" % (exc.strerror or exc)) from None
-    with spool:
-        try:
-            for chunk in chunks:
-                spool.write(chunk)
-            spool.seek(0)
-        except OSError as exc:
-            raise _Failure("<stdout>", 0, "cannot write the temporary file: %s" % (exc.strerror or exc)) from None
-        _write_stdout(iter(lambda: spool.read(_CHUNK), ""))
-
-
-def _write_stdout(chunks):
-    """Write the text ``chunks`` to standard output; a closed or failing stdout (not a
-    broken pipe, which main ends quietly) is a _Failure naming <stdout>."""
-    stream = sys.stdout
-    if stream is None:  # started with stdout closed (>&-)
-        raise _Failure("<stdout>", 0, "cannot write the output: standard output is closed")
-    try:
-        for chunk in chunks:
-            stream.write(chunk)
-        stream.flush()
-    except BrokenPipeError:
-        raise
-    except (OSError, ValueError) as exc:  # ValueError: a closed file object
-        _quiet_stdout()
-        raise _Failure("<stdout>", 0, "cannot write the output: %s" % (getattr(exc, "strerror", None) or exc)) from None
-
-
-def _quiet_stdout():
-    """Point sys.stdout at the null device, so that nothing is written (or
-    fails again) when Python flushes it on exit."""
-    try:
-        sys.stdout = open(os.devnull, "w")
-    except OSError:
-        pass
+            raise Failure.of_program_error(name, exc) from None
 
 
 # ---------------------------------------------------------------- signals
@@ -598,7 +445,7 @@ def main(argv=None):
         name = _run_name(args)
         return _run(args, name)
     except _Interrupted as exc:
-        _report(name, 0, "interrupted")
+        report(name, 0, "interrupted")
         return 128 + exc.signum
     finally:
         _restore_signals(previous)
@@ -607,7 +454,7 @@ def main(argv=None):
 def _run_name(args):
     """The name an error of this run starts with."""
     if args.command in ("expand", "verify", "plot"):
-        return _program_name(args.program)
+        return program_name(args.program)
     return "emit %s" % args.cycle_name
 
 
@@ -618,25 +465,22 @@ def _run(args, name):
         if args.command == "expand":
             _expand(args, warnings)
         elif args.command in ("verify", "plot"):
-            status = run_verify(args, warnings, _report)
+            status = run_verify(args, warnings, report)
         else:
-            _write_stdout((_emit(args, warnings),))
+            write_stdout((_emit(args, warnings),))
         for line, warning in warnings:  # after the output: a failed run reports its error alone
-            _report(name, line, "warning: " + warning.text)
+            report(name, line, "warning: " + warning.text)
         return status
-    except _Failure as exc:
-        _report(exc.name, exc.line, exc.message)
+    except Failure as exc:
+        report(exc.name, exc.line, exc.message)
     except BrokenPipeError:
-        _quiet_stdout()
+        quiet_stdout()
         return 1
     except Exception as exc:  # never a traceback: one line, status 2
-        _report(name, 0, "internal error (%s: %s)" % (type(exc).__name__, exc))
+        report(name, 0, "internal error (%s: %s)" % (type(exc).__name__, exc))
     return EXIT_ERROR
 
 
-def _report(name, line, message):
-    sys.stderr.write("%s:%s: %s\n" % (_one_line(name), line, _one_line(message)))
-    sys.stderr.flush()
 
 
 if __name__ == "__main__":

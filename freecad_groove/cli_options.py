@@ -105,7 +105,7 @@ def add_settings_options(parser: argparse.ArgumentParser) -> None:
         "--diameter-input",
         action="store_true",
         help="CYCLE93: read AXFA, DEPG, FAL1 and FAL2 as diameters (840D with DIAMON). Default: radius values, "
-        "as the seed manual says.",
+        "as the Siemens manual says.",
     )
     g.add_argument(
         "--g07-radius",

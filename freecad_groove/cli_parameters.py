@@ -22,7 +22,7 @@ PARAMETER_HELP = {
 
 def parameters_of(entry: CycleEntry) -> tuple:
     """The P parameters ``entry``'s cycle reads (none for most cycles)."""
-    return tuple(getattr(entry.cycle_class, "PARAMETERS", ()) or ())
+    return tuple(entry.cycle_class.PARAMETERS)
 
 
 def add_parameter_options(group: argparse._ArgumentGroup, entry: CycleEntry) -> None:

@@ -79,68 +79,70 @@ def _missing(exc: ImportError, packages: Tuple[str, ...]) -> None:
 
 
 def _check(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]):
-    """The ProgramCheck of the program the options name; _Failure on bad input."""
-    from .cli import _Failure, _program_name, _read_text, _tool_table
+    """The ProgramCheck of the program the options name; Failure on bad input."""
+    from .cli_io import MAX_PROGRAM_BYTES, Failure, check_line_lengths, program_name, read_text, tool_table
     from .cli_options import start_state
     from .engine.errors import ProgramError
 
-    name = _program_name(args.program)
+    name = program_name(args.program)
     if INPUT_CONTROLS[args.dialect].mill:  # a grinder's X/Y/Z: no turned section to check it on
-        raise _Failure(name, 0, "verify and plot check turning programs (the lathe's XZ section); %s programs "
+        raise Failure(name, 0, "verify and plot check turning programs (the lathe's XZ section); %s programs "
                                 "are mill-style (X/Y/Z)" % args.dialect)
     try:
         from .verify.program_check import StockSpec, check_program
         from .verify.program_record import record_program
     except ImportError as exc:
         _missing(exc, ("shapely", "numpy"))
-        raise _Failure(name, 0, SHAPELY_MISSING) from None
-    tools = _tool_table(args)
-    name, text = _read_text(args.program, "the program")
+        raise Failure(name, 0, SHAPELY_MISSING) from None
+    tools = tool_table(args)
+    name, text = read_text(args.program, "the program", MAX_PROGRAM_BYTES)
+    check_line_lengths(text, name)
     try:
         record = record_program(text, args.dialect, settings_from(args), start_state(args), tools)
         warnings.extend(record.warnings)
         spec = None if args.stock is None else StockSpec(*args.stock)
         return check_program(name, record, spec, args.rapid_rate)
     except ProgramError as exc:
-        raise _Failure.of_program_error(name, exc) from None
+        raise Failure.of_program_error(name, exc) from None
 
 
 def _drawer(args: argparse.Namespace):
     """plot's draw function, checked before the simulation: the picture's format and matplotlib."""
-    from .cli import _Failure
+    from .cli_io import Failure, check_not_the_program
 
     if not args.output.lower().endswith((".svg", ".png")):
-        raise _Failure(args.output, 0, "the picture's name must end in .svg or .png")
+        raise Failure(args.output, 0, "the picture's name must end in .svg or .png")
+    check_not_the_program(args.output, args.program)
     try:
         from .verify.plot import draw
     except ImportError as exc:
         _missing(exc, ("matplotlib",))
-        raise _Failure(args.output, 0, MATPLOTLIB_MISSING) from None
+        raise Failure(args.output, 0, MATPLOTLIB_MISSING) from None
     return draw
 
 
 def _plot(args: argparse.Namespace, draw, result) -> None:
-    from .cli import _Failure
+    from .cli_io import Failure
     from .engine.output.files import write_chunks_atomically
 
     data = draw(result, args.output.lower().rsplit(".", 1)[1])
     try:  # bytes through the text writer: Latin-1 maps each byte to one character and back
         write_chunks_atomically(args.output, [data.decode("latin-1")], encoding="latin-1")
     except OSError as exc:
-        raise _Failure(args.output, 0, "cannot write the picture: %s" % (exc.strerror or exc)) from None
+        raise Failure(args.output, 0, "cannot write the picture: %s" % (exc.strerror or exc)) from None
 
 
 def run(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]], report_line) -> int:
-    """verify or plot; returns 0 or 1 (findings); bad input raises cli._Failure."""
+    """verify or plot; returns 0 or 1 (findings); bad input raises cli.Failure."""
     draw = _drawer(args) if args.command == "plot" else None
     result = _check(args, warnings)
     if draw is not None:
         _plot(args, draw, result)
     else:
-        from .cli import _write_stdout
+        from .cli_io import write_stdout
         from .verify.program_check import report
 
-        _write_stdout((report(result),))
+        write_stdout((report(result),))
     for line, text in result.findings:
         report_line(result.name, line, text)
     return 1 if result.findings else 0

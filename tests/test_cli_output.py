@@ -4,7 +4,6 @@ runs (one line PROGRAM:0: interrupted, exit 128 + the signal, no temporary
 file), and words with more digits than a number may have."""
 
 import os
-import re
 import signal
 import stat
 import subprocess
@@ -15,9 +14,10 @@ import pytest
 from conftest import ROOT
 from test_cli import SEED, assert_one_error_line, only_warnings, run
 
+from freecad_groove.engine.output import files
+
 TOO_LONG = "1" * 4301  # one digit more than a number may have (numbers.MAX_DIGITS)
 SIGNALS = [(signal.SIGINT, 130), (signal.SIGTERM, 143), (signal.SIGHUP, 129)]
-TEMP_FILE = re.compile(r"^\..*\.tmp\Z")
 
 
 def expand_to(out):
@@ -124,12 +124,18 @@ def test_a_signal_while_reading_the_program(sig, status):
 
 
 # The command line in a child whose file writes pause after the temporary file
-# is written (os.fsync sleeps): the signal arrives while the output is written.
+# is written (os.fsync sleeps, after making the file PAUSED names): the signal
+# arrives while the output is written. NAMED=1: a named temporary file (as
+# where the system has no unnamed ones).
 PAUSED_WRITER = """
 import os, sys, time
+from freecad_groove.engine.output import files
+if os.environ.get("NAMED") == "1":
+    files._unnamed = lambda folder: None
 real_fsync = os.fsync
 def fsync(fd):
     real_fsync(fd)
+    open(os.environ["PAUSED"], "w").close()
     time.sleep(60)
 os.fsync = fsync
 from freecad_groove import cli
@@ -137,22 +143,46 @@ sys.exit(cli.main(sys.argv[1:]))
 """
 
 
-@pytest.mark.parametrize("sig, status", SIGNALS)
-def test_a_signal_while_writing_the_output_leaves_no_temporary_file(tmp_path, sig, status):
-    out = tmp_path / "part.ngc"
+def paused_writer(tmp_path, named):
+    """A child writing ``tmp_path``/out/part.ngc (over an old program), paused with the whole text in its
+    temporary file; (child, the output file)."""
+    folder = tmp_path / "out"
+    folder.mkdir()
+    out = folder / "part.ngc"
     out.write_text("old program\n")
+    paused = tmp_path / "paused"
+    env = dict(os.environ, PAUSED=str(paused), NAMED="1" if named else "0")
     child = subprocess.Popen([sys.executable, "-c", PAUSED_WRITER, "expand", SEED, "--dialect", "sinumerik",
                               "--tool-width", "3", "-o", str(out)], cwd=ROOT, stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE)
+                             stderr=subprocess.PIPE, env=env)
+    wait_for(paused.exists, child, "the paused write")
+    return child, out
+
+
+@pytest.mark.parametrize("named", [False, True], ids=["unnamed", "named"])
+@pytest.mark.parametrize("sig, status", SIGNALS)
+def test_a_signal_while_writing_the_output_leaves_no_temporary_file(tmp_path, sig, status, named):
+    child, out = paused_writer(tmp_path, named)
     try:
-        wait_for(lambda: any(TEMP_FILE.match(name) for name in os.listdir(tmp_path)), child, "the temporary file")
         child.send_signal(sig)
         _, err = child.communicate(timeout=60)
     finally:
         if child.poll() is None:
             child.kill()
     assert (child.returncode, err) == (status, ("%s:0: interrupted\n" % SEED).encode())
-    assert os.listdir(tmp_path) == ["part.ngc"] and out.read_text() == "old program\n"
+    assert os.listdir(out.parent) == ["part.ngc"] and out.read_text() == "old program\n"
+
+
+def test_a_kill_9_while_writing_the_output_leaves_no_temporary_file(tmp_path):
+    # the temporary file has no name while it is written (Linux O_TMPFILE): killed, it goes with the process
+    fd = files._unnamed(str(tmp_path))
+    if fd is None:
+        pytest.skip("this system or file system has no unnamed temporary files (O_TMPFILE)")
+    os.close(fd)
+    child, out = paused_writer(tmp_path, named=False)
+    child.kill()
+    child.communicate(timeout=60)
+    assert os.listdir(out.parent) == ["part.ngc"] and out.read_text() == "old program\n"
 
 
 # ---------------------------------------------------------------- numbers with too many digits

@@ -2,7 +2,10 @@
 command line's -o and the posts): the file the user meant (symbolic links
 followed, the link kept), nothing but a regular file or a new path written,
 write-protected files and folders refused (as root too), mode and owner kept,
-no temporary file left, even when a signal arrives while it is created."""
+no temporary file left, even when a signal arrives while it is created. The
+temporary file is unnamed while it is written where Linux allows it
+(O_TMPFILE), else named from the start: the tests marked with the
+``temporary`` fixture run both ways."""
 
 import os
 import re
@@ -31,6 +34,20 @@ def refused(path, fragment):
     return info.value.strerror
 
 
+@pytest.fixture(params=["unnamed", "named"])
+def temporary(request, monkeypatch, tmp_path):
+    """The kind of temporary file write_atomically uses: unnamed while written
+    (Linux O_TMPFILE), or named from the start (output._unnamed says none)."""
+    if request.param == "named":
+        monkeypatch.setattr(output, "_unnamed", lambda folder: None)
+    else:
+        fd = output._unnamed(str(tmp_path))
+        if fd is None:
+            pytest.skip("this system or file system has no unnamed temporary files (O_TMPFILE)")
+        os.close(fd)
+    return request.param
+
+
 @pytest.fixture
 def renames(monkeypatch):
     """Every (source, destination) os.replace is called with."""
@@ -48,7 +65,7 @@ def renames(monkeypatch):
 # ---------------------------------------------------------------- the file the user meant
 
 
-def test_a_new_file_and_a_replaced_one(tmp_path, renames):
+def test_a_new_file_and_a_replaced_one(tmp_path, temporary, renames):
     path = tmp_path / "prog.nc"
     write_atomically(str(path), "G0 X1.\n")
     assert path.read_text() == "G0 X1.\n" and listing(tmp_path) == ["prog.nc"]
@@ -66,7 +83,7 @@ def test_a_new_file_and_a_replaced_one(tmp_path, renames):
         assert TEMP_NAME.match(os.path.basename(src)).group("name") == "prog.nc"
 
 
-def test_a_symbolic_link_is_followed_and_stays_a_link(tmp_path, renames):
+def test_a_symbolic_link_is_followed_and_stays_a_link(tmp_path, temporary, renames):
     here, there = tmp_path / "here", tmp_path / "there"
     here.mkdir()
     there.mkdir()
@@ -209,8 +226,10 @@ def sigterm_raises():
 
 
 def test_a_signal_the_instant_the_temporary_file_is_made_still_removes_it(tmp_path, monkeypatch, sigterm_raises):
-    # The handler runs right after the file is made, before the call that made
-    # it returns: write_atomically must know the name already.
+    # A named temporary file (where there are no unnamed ones): the handler runs
+    # right after the file is made, before the call that made it returns:
+    # write_atomically must know the name already.
+    monkeypatch.setattr(output, "_unnamed", lambda folder: None)
     real = os.open
 
     def open_then_signal(path, flags, *args, **kwargs):
@@ -227,7 +246,7 @@ def test_a_signal_the_instant_the_temporary_file_is_made_still_removes_it(tmp_pa
     assert listing(tmp_path) == ["prog.nc"] and path.read_text() == "old\n"
 
 
-def test_a_free_temporary_name_is_found(tmp_path, monkeypatch, renames):
+def test_a_free_temporary_name_is_found(tmp_path, monkeypatch, temporary, renames):
     # The first name drawn is taken by another file, which is left alone.
     names = iter(["taken", "free"])
     monkeypatch.setattr(output.secrets, "token_hex", lambda n: next(names))
@@ -238,7 +257,7 @@ def test_a_free_temporary_name_is_found(tmp_path, monkeypatch, renames):
     assert renames == [(str(tmp_path / ".prog.nc.free.tmp"), str(tmp_path / "prog.nc"))]
 
 
-def test_an_exception_while_writing_removes_the_temporary_file(tmp_path, monkeypatch, sigterm_raises):
+def test_an_exception_while_writing_removes_the_temporary_file(tmp_path, monkeypatch, temporary, sigterm_raises):
     def fsync(fd):
         os.kill(os.getpid(), signal.SIGTERM)
 
@@ -247,3 +266,19 @@ def test_an_exception_while_writing_removes_the_temporary_file(tmp_path, monkeyp
     with pytest.raises(Stop):
         write_atomically(str(path), "new\n")
     assert listing(tmp_path) == []
+
+
+def test_a_signal_between_the_link_and_the_rename_removes_the_linked_name(tmp_path, monkeypatch, sigterm_raises):
+    # the one step where an unnamed temporary file has a name: a signal there still leaves nothing behind
+    if output._unnamed(str(tmp_path)) is None:
+        pytest.skip("this system or file system has no unnamed temporary files (O_TMPFILE)")
+
+    def replace(src, dst):
+        os.kill(os.getpid(), signal.SIGTERM)
+
+    monkeypatch.setattr(output.os, "replace", replace)
+    path = tmp_path / "prog.nc"
+    path.write_text("old\n")
+    with pytest.raises(Stop):
+        write_atomically(str(path), "new\n")
+    assert listing(tmp_path) == ["prog.nc"] and path.read_text() == "old\n"

@@ -230,7 +230,8 @@ def test_tool_words():
     assert body("T5", "sinumerik") == ["T5 M6 G43", "M2"]
     assert body("T5\nD0\nD1", "sinumerik") == ["T5 M6 G43", "G49", "G43", "M2"]
     fanuc = translate_program("T5 D1\nD0", "sinumerik", target="fanuc").splitlines()
-    assert fanuc[-4:] == ["T0501", "T0500", "M30", "%"]
+    # D1, the tool's own first edge: its own offset register (T0501 would apply register 1, another tool's)
+    assert fanuc[-4:] == ["T0505", "T0500", "M30", "%"]
     assert "T12: write the tool and offset" in str(error("T12", "fanuc"))
     assert "second cutting edge" in str(error("T5 D2", "sinumerik"))
     assert "M6 is added" in str(error("T0101 M06", "fanuc"))

@@ -14,7 +14,9 @@ import pytest
 
 from freecad_groove import cli
 from freecad_groove.engine import FEED, RAPID, CycleError, Move, ProgramError, registry
+from freecad_groove.engine.cycle import Cycle
 from freecad_groove.engine.cycles import cycle93
+from freecad_groove.engine.cycles.ab_g77 import G77
 from freecad_groove.engine.cycles.pecking import format_number, read_block
 from freecad_groove.engine.input_controls import DIALECTS
 from freecad_groove.engine.translator import translate_program
@@ -49,14 +51,13 @@ def test_the_word_help_covers_exactly_the_words_the_cycle_writes(entry):
     written = cycle93.PARAMS if entry.form == registry.CALL else cls.WORDS
     assert [word.name for word in entry.words] == list(written)
     assert all(word.help for word in entry.words)
-    assert {word.name for word in entry.words if word.counted} == set(getattr(cls, "COUNTED", ()))
+    assert {word.name for word in entry.words if word.counted} == set(cls.COUNTED)
 
 
 def test_a_cycle_registered_twice_under_another_class_is_refused(monkeypatch):
     monkeypatch.setattr(registry, "_ENTRIES", list(registry.cycles()))
     monkeypatch.setattr(registry, "_BY_KEY", dict(registry._BY_KEY))
-    clash = type("Clash", (), {"NAME": "G77", "KEY": "clash", "CONTROLS": ("ab9",), "TITLE": "t",
-                               "FORM": registry.G_WORD, "WORD_HELP": ()})
+    clash = type("Clash", (G77,), {"KEY": "clash", "ALIASES": (), "TITLE": "t"})  # another class called G77
     with pytest.raises(ValueError, match="G77 is registered twice for ab9"):
         registry.register(clash)
 
@@ -65,7 +66,7 @@ def test_a_cycle_registered_twice_under_another_class_is_refused(monkeypatch):
 
 
 @dataclass(frozen=True)
-class ToyPlunge:
+class ToyPlunge(Cycle):
     """``G79 X__ F__``: one straight plunge to X (a diameter) at F and a rapid
     back to the start: a cycle no control has, to show the seams."""
 

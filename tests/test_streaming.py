@@ -16,6 +16,7 @@ from test_cli import assert_one_error_line, run
 
 from freecad_groove.engine import GroovingTool, Settings
 from freecad_groove.engine.errors import ProgramError
+from freecad_groove.engine.output import files
 from freecad_groove.engine.output.files import write_chunks_atomically
 from freecad_groove.engine.translator import iter_translation, program_lines, translate_program
 
@@ -113,7 +114,16 @@ def test_an_error_comes_after_the_lines_before_it():
 # ---------------------------------------------------------------- write_chunks_atomically
 
 
-def test_chunks_go_to_the_temporary_file_and_the_target_waits(tmp_path):
+@pytest.mark.parametrize("named", [False, True], ids=["unnamed", "named"])
+def test_chunks_go_to_the_temporary_file_and_the_target_waits(tmp_path, monkeypatch, named):
+    # the temporary file has a name while it is written only where the system has no unnamed ones
+    if named:
+        monkeypatch.setattr(files, "_unnamed", lambda folder: None)
+    else:
+        fd = files._unnamed(str(tmp_path))
+        if fd is None:
+            pytest.skip("this system or file system has no unnamed temporary files (O_TMPFILE)")
+        os.close(fd)
     target = tmp_path / "part.ngc"
     target.write_text("old\n")
     seen = []
@@ -125,7 +135,7 @@ def test_chunks_go_to_the_temporary_file_and_the_target_waits(tmp_path):
 
     write_chunks_atomically(str(target), chunks())
     assert target.read_text() == "G0 X0.\nG0 X1.\nG0 X2.\n" and os.listdir(tmp_path) == ["part.ngc"]
-    assert all(old == "old\n" and len(names) == 2 for old, names in seen)
+    assert all(old == "old\n" and len(names) == (2 if named else 1) for old, names in seen)
 
 
 def test_an_error_from_the_chunks_leaves_the_target_and_no_temporary_file(tmp_path):

@@ -11,6 +11,7 @@ from freecad_groove.engine import GroovingTool, MachineState, Settings
 from freecad_groove.engine.cycles.ab_g77 import G77
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.cycles.fanuc_g75 import FanucG74, FanucG75, HaasG75
+from freecad_groove.engine.cycles.milltronics import G31
 from freecad_groove.engine.tool_table import read_tool_table
 from freecad_groove.engine.translator import Translator, translate_program
 from freecad_groove.engine.warnings import CycleWarning, cycle_warnings
@@ -58,7 +59,7 @@ def test_warning_text():
 
 
 def test_a_cycle_without_warnings_has_none():
-    assert cycle_warnings(object(), START, BLADE) == []
+    assert cycle_warnings(G31(), START, BLADE) == []  # G31 declares no warnings: Cycle's default
 
 
 # ---------------------------------------------------------------- CYCLE93 (item 8)

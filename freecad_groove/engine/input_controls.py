@@ -11,7 +11,7 @@ are added to the control's G-code table (``InputControl.code_table``).
 """
 
 from dataclasses import dataclass, field, replace
-from typing import Dict, FrozenSet, Mapping, NamedTuple, Tuple
+from typing import Dict, FrozenSet, Mapping, NamedTuple, Optional, Tuple
 
 from .moves import FEED, RAPID
 from .registry import CALL, G_WORD, CycleEntry, cycles_of
@@ -133,13 +133,16 @@ _SYSTEM_A_CODES = {
 }
 
 
-def g_code_key(text: str) -> str:
-    """The table key of a G number as written: "00" -> "0", "+1" -> "1", "91.1" stays."""
+def g_code_key(text: str) -> Optional[str]:
+    """The table key of a G number as written: "00" -> "0", "+1" -> "1", "91.1"
+    stays; None for what is not a G number (a sign other than +, no digits)."""
     key = text.lstrip("+")
-    if "." in key:  # "07.1" -> "7.1" (GSK G07.1); "91.1" stays
-        whole, fraction = key.split(".", 1)
+    whole, _point, fraction = key.partition(".")
+    if not (whole.isdigit() or (whole == "" and fraction)) or (fraction and not fraction.isdigit()):
+        return None
+    if fraction:  # "07.1" -> "7.1" (GSK G07.1); "91.1" stays
         return "%d.%s" % (int(whole) if whole else 0, fraction)
-    return str(int(key))
+    return str(int(whole))
 
 
 # M codes every control shares: code -> modal group
@@ -302,7 +305,7 @@ INPUT_CONTROLS: Dict[str, InputControl] = {
             g_codes=_MILLTRONICS_CODES,
             plain_letters=frozenset("XYZFSMGDTH"),
             tool_words=DIAMETER_REGISTER,
-            decimal_point=False,  # the seed writes X1 Y2 F20 for 1", 2", 20 in/min
+            decimal_point=False,  # the Milltronics manual writes X1 Y2 F20 for 1", 2", 20 in/min
             dwell_unsupported="G04: the Milltronics dwell word is not documented here; not translated",
             mill=True,
             parameter_assignments=True,

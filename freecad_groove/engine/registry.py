@@ -1,45 +1,30 @@
 """The cycle registry: every cycle the engine knows, declared once.
 
-A cycle class declares what the rest of the project needs to know about it as
-class attributes, and is registered with the ``@register`` decorator:
+A cycle class derives from ``cycle.Cycle``, which names everything the rest of
+the project reads of a cycle, with its default: the declaration (NAME, KEY,
+ALIASES, CONTROLS, TITLE, FORM, WORD_HELP, COUNTED, NEEDS_BLADE, MILL,
+Z_ONLY, BLOCKS, RETRACT_BLOCK, MEMORY, MEMORY_WHAT, PARAMETERS) and the hooks
+(parse, emit, validate, expand, warnings, note, the memory hooks
+with_earlier/remembered, the region hooks region_ends/check_region_block).
+It is registered with the ``@register`` decorator, which checks the
+declaration (:func:`declaration_errors`) and refuses a class that breaks it.
 
-    NAME       the code as the control writes it: "CYCLE93", "G77"
-    KEY        its name on the command line: "cycle93", "ab-g77"
-    ALIASES    other command-line names: ("g77",)
-    CONTROLS   the input controls whose programs use it: ("ab9",)
-    TITLE      one line for help texts
-    FORM       how a block is recognised: CALL (``NAME(p1, p2, ...)``, the
-               Siemens call syntax) or G_WORD (the G code ``NAME`` among
-               letter-and-number words)
-    WORD_HELP  ((word, help text), ...) in the order the cycle writes them
-    COUNTED    words that are integers in least input increments (Fanuc P, Q)
-    RETRACT_BLOCK  optional: the letter of a separate first block ``NAME R(e)``
-               that only sets the peck retract for the next cycle (Fanuc "R")
-    NEEDS_BLADE    optional, default False: True when the cycle's moves depend
-               on the blade (its width, corner radius, reference corner), as
-               CYCLE93's do; such a cycle is expanded only with a known blade
-               (``Settings.tool`` or a tool table's entry), never a guessed
-               one. Cycles that drive the programmed point (G77, G75...) leave
-               it False.
-
-and the methods ``parse(text)``, ``emit()``, ``validate(settings)`` and
-``expand(state, settings)``; optionally ``warnings(state, settings) ->
-List[warnings.CycleWarning]``: what the expansion from the same state cannot
-do as programmed but does anyway (CYCLE93 roughing on the final profile, a
-Fanuc relief into the wall between grooves). A cycle without it has none
-(``warnings.cycle_warnings``); the translator calls it after ``expand()`` and
-keeps the warnings with the line. The program reader, the command line (``expand``,
-``emit``, ``--help``) and the posts look cycles up here; adding a cycle is one
-new module in ``engine/cycles/`` whose classes carry ``@register``.
+The program reader, the translator (which hands a cycle's blocks to its block
+form, ``BLOCKS``), the command line (``expand``, ``emit``, ``--help``), the
+posts and verify look cycles up here; adding a cycle is one new module in
+``engine/cycles/`` whose classes carry ``@register`` (docs/architecture.md,
+"How to add a cycle").
 """
 
 import importlib
 from dataclasses import dataclass
-from typing import Dict, Tuple, Type
+from typing import Dict, List, Tuple, Type
 
-CALL = "call"
-G_WORD = "g-word"
-FORMS = (CALL, G_WORD)
+from .block_forms import BlockForm
+from .cycle import CALL, FORMS, G_WORD, REQUIRED_HOOKS, Cycle, gives_hook
+
+__all__ = ["CALL", "FORMS", "G_WORD", "CycleEntry", "CycleWord", "cycle_for", "cycles", "cycles_of",
+           "declaration_errors", "entry", "register"]
 
 
 @dataclass(frozen=True)
@@ -61,7 +46,7 @@ class CycleEntry:
     title: str
     form: str
     words: Tuple[CycleWord, ...]
-    cycle_class: type
+    cycle_class: Type[Cycle]
     aliases: Tuple[str, ...] = ()
     retract_block: str = ""  # the letter of a separate "NAME R(e)" first block; "" when none
     needs_blade: bool = False  # its moves depend on the blade: never expanded with an unknown one
@@ -71,9 +56,38 @@ _BY_KEY: Dict[str, CycleEntry] = {}
 _ENTRIES: list = []
 
 
-def register(cls: Type) -> Type:
-    """Class decorator: add a cycle class to the registry (see the module notes)."""
-    counted = tuple(getattr(cls, "COUNTED", ()))
+def declaration_errors(cls: type) -> List[str]:
+    """What is wrong with a cycle class's declaration (cycle.Cycle), [] when nothing."""
+    if not (isinstance(cls, type) and issubclass(cls, Cycle)):
+        return ["does not derive from engine.cycle.Cycle"]
+    errors = ["%s must be given" % name for name, value in (("NAME", cls.NAME), ("KEY", cls.KEY),
+                                                           ("CONTROLS", cls.CONTROLS), ("TITLE", cls.TITLE))
+              if not value]
+    if cls.FORM not in FORMS:
+        errors.append("FORM must be one of %s" % ", ".join(FORMS))
+    words = [word for word, _help in cls.WORD_HELP]
+    if len(set(words)) != len(words):
+        errors.append("WORD_HELP names a word twice")
+    errors += ["COUNTED %s is not one of its words" % word for word in cls.COUNTED if word not in words]
+    errors += ["%s must be given" % hook for hook in REQUIRED_HOOKS if not gives_hook(cls, hook)]
+    if not (isinstance(cls.BLOCKS, type) and issubclass(cls.BLOCKS, BlockForm)):
+        return errors + ["BLOCKS must be a block form (block_forms.BlockForm)"]
+    errors += cls.BLOCKS.declaration_errors(cls)
+    if cls.PARAMETERS and not cls.MEMORY:
+        errors.append("PARAMETERS are kept in a program memory: MEMORY must be given")
+    if cls.MEMORY:
+        errors += ["a cycle with a MEMORY gives %s" % hook for hook in ("with_earlier", "remembered")
+                   if not gives_hook(cls, hook)]
+    return errors
+
+
+def register(cls: Type[Cycle]) -> Type[Cycle]:
+    """Class decorator: add a cycle class to the registry (see the module notes);
+    ValueError when its declaration is wrong or it clashes with a registered one."""
+    errors = declaration_errors(cls)
+    if errors:
+        raise ValueError("cycle %s: %s" % (cls.__name__, "; ".join(errors)))
+    counted = tuple(cls.COUNTED)
     entry = CycleEntry(
         key=cls.KEY,
         name=cls.NAME,
@@ -82,12 +96,10 @@ def register(cls: Type) -> Type:
         form=cls.FORM,
         words=tuple(CycleWord(word, text, word in counted) for word, text in cls.WORD_HELP),
         cycle_class=cls,
-        aliases=tuple(getattr(cls, "ALIASES", ())),
-        retract_block=getattr(cls, "RETRACT_BLOCK", ""),
-        needs_blade=bool(getattr(cls, "NEEDS_BLADE", False)),
+        aliases=tuple(cls.ALIASES),
+        retract_block=cls.RETRACT_BLOCK,
+        needs_blade=cls.NEEDS_BLADE,
     )
-    if entry.form not in FORMS:
-        raise ValueError("%s: FORM must be one of %s" % (cls.__name__, ", ".join(FORMS)))
     for key in (entry.key,) + entry.aliases:
         known = _BY_KEY.get(key)
         if known is not None and known.cycle_class is not cls:
@@ -128,7 +140,7 @@ def entry(key: str) -> CycleEntry:
         raise ValueError("unknown cycle %r (known: %s)" % (key, ", ".join(sorted(_BY_KEY)))) from None
 
 
-def cycle_for(control: str, name: str) -> type:
+def cycle_for(control: str, name: str) -> Type[Cycle]:
     """The cycle class a ``control`` program calls as ``name`` ("CYCLE93", "G77");
     ValueError when that control has no such cycle."""
     for e in cycles_of(control):

@@ -28,11 +28,11 @@ class Settings:
     peck_retract: Optional[float] = None
 
     # CYCLE93: AXFA, DEPG, FAL1, FAL2 read as diameters (840D with DIAMON)
-    # instead of radius values (the seed manual).
+    # instead of radius values (the Siemens manual).
     cycle93_diameter_input: bool = False
 
     # CYCLE93: an optional shop limit on the contour's tilt (degrees away from
-    # the groove's own axis); None: the seed's whole ANGC range 0..180 (only a
+    # the groove's own axis); None: the Siemens manual's whole ANGC range 0..180 (only a
     # contour square to the groove's axis is refused, alarm 61603).
     cycle93_max_contour_tilt: Optional[float] = None
 
@@ -49,7 +49,7 @@ class Settings:
     mill_tool_diameter: Optional[float] = None
 
     # Milltronics G33/G34: how far the tool rises above the depth just cut
-    # before it goes to the next depth's start, in inches (the seed's 0.1";
+    # before it goes to the next depth's start, in inches (the Milltronics manual's 0.1";
     # 2.54 mm in a metric program).
     milltronics_lift_inch: float = 0.1
 

@@ -69,6 +69,13 @@ class TranslatorBase:
             self._fail("%s%s must be a whole number" % (word.letter, word.text))
         return int(word.text.lstrip("+"))
 
+    @staticmethod
+    def _m_numbers(block: Block) -> Set[int]:
+        """The numbers of the block's M words that are whole numbers (as written: a
+        huge one is not a float's infinity); the others are refused where M codes are read."""
+        texts = (word.text.lstrip("+") for word in block.all("M"))
+        return {int(text) for text in texts if text.isdigit()}
+
     def _check_finite(self, value: float, word: Word) -> None:
         if not abs(value) < MAX_WORD:
             self._fail("%s%s is out of range" % (word.letter, word.text))

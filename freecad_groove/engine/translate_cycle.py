@@ -1,15 +1,25 @@
 """Cycle blocks of the translator: a registered cycle's call read, checked
-against the modal state, expanded and written in place."""
+against the modal state, expanded and written in place.
+
+How a call is written over blocks is the cycle's block form (``BLOCKS``,
+block_forms.py): the block naming the cycle goes to the form, which runs the
+call here (``run_cycle``), keeps the block for a later call, or opens the
+blocks that follow (``open_blocks``: the translator hands them to it). A
+program memory (program_memory.py) and parameter blocks (parameter_blocks.py)
+are declared by the cycle beside its form."""
 
 from dataclasses import replace
-from typing import List, NamedTuple, Optional, Sequence
+from typing import List, Optional, Sequence
 
+from .block_forms import CycleCall, OpenBlocks
+from .cycle import Cycle
 from .errors import CycleError, ProgramError
 from .input_controls import CYCLE, CYCLE_OPTIONS, MODE_GROUPS
 from .mill_tool_table import MillToolTable, diameter_for
 from .moves import MachineState, Move
-from .numbers import MAX_WORD
-from .reader import Block, Word
+from .parameter_blocks import read_parameter_block
+from .program_memory import with_memory
+from .reader import Block
 from .registry import CycleEntry
 from .settings import Settings
 from .tool_table import ToolTable, blade_for
@@ -19,33 +29,13 @@ from .warnings import cycle_warnings
 __all__ = ["CycleCall", "CycleTranslation"]
 
 
-class CycleCall(NamedTuple):
-    """A cycle block as read: the cycle's name, its text for the cycle's parse(),
-    and its words (G-word cycles; empty for a ``NAME(...)`` call)."""
-
-    name: str
-    text: str
-    words: List[Word]
-
-
-class Region(NamedTuple):
-    """A cycle that spans blocks (GSK G7.1 up to G7.1 C0), while it is read: its
-    start block, entry and call, the path blocks' texts, the cycle's context."""
-
-    block: Block
-    entry: CycleEntry
-    call: CycleCall
-    texts: List[str]
-    context: object
-
-
 class CycleTranslation(TranslatorBase):
     """Siemens calls and G-word cycles (G77/G76, G75/G74, the G7.1 region), from the cycle registry."""
 
-    _region: Optional[Region] = None  # the region being read (REGION cycles), else None
+    _open: Optional[OpenBlocks] = None  # the blocks a call is reading (a region), else None
 
     def _cycle_block(self, block: Block, groups: Groups) -> None:
-        """A block with a cycle call: its mode codes, then the expanded moves."""
+        """A block with a cycle call: its mode codes, then the call to its block form."""
         call = self._cycle_call(block, groups)
         early: List[str] = []
         output: List[str] = []
@@ -55,33 +45,26 @@ class CycleTranslation(TranslatorBase):
             self._emit(" ".join(output))
             self._sync_writer()
         entry = self.control.cycle(call.name)
-        if entry.retract_block:
-            if self._is_retract_block(entry, call.words):
-                self._retract_block(block, entry, call.words)
-                return
-            call = self._with_retract_block(entry, call)
-        if getattr(entry.cycle_class, "REGION", False):
-            self._start_region(block, entry, call)
-            return
-        self._run_cycle(block, entry, call, " / ".join(call.text.split("\n")))
+        entry.cycle_class.BLOCKS.read_call(self, block, entry, call)
 
-    def _run_cycle(self, block: Block, entry: CycleEntry, call: CycleCall, label: str) -> None:
+    def run_cycle(self, block: Block, entry: CycleEntry, call: CycleCall, label: str) -> None:
         """Parse, check, expand and write a cycle call (``label``: its text for the comment)."""
+        cycle = entry.cycle_class
         try:  # the call itself first: its own errors are the most useful
-            model = entry.cycle_class.parse(call.text)
+            model = cycle.parse(call.text)
             settings = self._cycle_settings(entry)
             model.validate(settings)
         except CycleError as exc:
             self._fail(exc.message)
-        self._check_cycle_start(call.name, getattr(entry.cycle_class, "Z_ONLY", False))
+        self._check_cycle_start(call.name, cycle.Z_ONLY)
         start = self.state.machine_state()
-        memory_key = getattr(entry.cycle_class, "MEMORY", "")
         try:
-            if memory_key:
-                model = self._with_memory(memory_key, model, start)
+            if cycle.MEMORY:
+                model = with_memory(self, model, start)
             moves = model.expand(start, settings)
-            if hasattr(model, "note"):  # what the call did that its words do not say (G32: the Z used)
-                label = "%s: %s" % (label, model.note(start, settings))
+            note = model.note(start, settings)  # what the call did that its words do not say (G32: the Z used)
+            if note is not None:
+                label = "%s: %s" % (label, note)
             elif isinstance(self.tools, MillToolTable) and self.state.tool in self.tools:
                 label = "%s: tool diameter %s, D%d of %s" % (label, settings.mill_tool_diameter, self.state.tool,
                                                              self.tools.source)
@@ -95,6 +78,26 @@ class CycleTranslation(TranslatorBase):
             self._fail("%s: %s" % (call.name, exc))
         self.body.extend(lines)
         self._after_cycle(moves)
+
+    # -- the blocks a call reads after its own (block_forms.OpenBlocks) -------------------
+
+    def open_blocks(self, reading: Optional[OpenBlocks]) -> None:
+        """Hand the blocks that follow to ``reading`` (a region's start); None: read them as usual again."""
+        self._open = reading
+
+    def _open_block(self, block: Block) -> None:
+        """A block while a call reads the blocks after its own."""
+        self._open.read(self, block)
+
+    def check_blocks_closed(self) -> None:
+        """At the end of the program: blocks a call still reads (a region without its cancel block) are refused."""
+        if self._open is not None:
+            reading, self._open = self._open, None
+            reading.close(self)
+
+    def _parameter_block(self, block: Block) -> None:
+        """``P151=1``: see parameter_blocks.py."""
+        read_parameter_block(self, block)
 
     def _cycle_call(self, block: Block, groups: Groups) -> CycleCall:
         """The cycle's name, text and words; refuses what may not share its block."""
@@ -122,126 +125,11 @@ class CycleTranslation(TranslatorBase):
                 written += " G" + groups[group].word.text
         return CycleCall(name, " ".join([written] + ["%s%s" % (word.letter, word.text) for word in others]), others)
 
-    # -- parameter assignments (Milltronics "P151=1") ------------------------------------
-
-    def _parameter_block(self, block: Block) -> None:
-        """``P151=1``: a P parameter of the control's cycles (class PARAMETERS), kept
-        in the program's memory (class MEMORY) for the calls that follow."""
-        name, text = block.parameters[0]
-        if block.words or block.keywords or block.call or len(block.parameters) > 1:
-            self._fail("%s=%s: a parameter assignment stands alone in its block" % (name, text))
-        cycle = next((e.cycle_class for e in self.control.cycles() if getattr(e.cycle_class, "PARAMETERS", ())), None)
-        known = cycle.PARAMETERS if cycle is not None else ()
-        key = "P%d" % int(name[1:]) if name[1:].isdigit() else name
-        if key not in known:
-            self._fail("%s=%s: not a parameter of the %s cycles (%s)" % (name, text, self.control.maker,
-                                                                        ", ".join(known) or "none"))
-        value = float(text)
-        if not abs(value) < MAX_WORD:
-            self._fail("%s=%s: must be less than %g in magnitude" % (name, text, MAX_WORD))
-        self._not_ambiguous("cycle_memory", why="the parameters %s calls read" % cycle.NAME)
-        memory = dict(self.state.cycle_memory.get(cycle.MEMORY, {}), **{key: value})
-        self.state.cycle_memory = dict(self.state.cycle_memory, **{cycle.MEMORY: memory})
-        self._defined.add("cycle_memory")
-        self._emit_line(block, [], "%s=%s: for the %s that follow" % (
-            key, text, "/".join(e.name for e in self.control.cycles() if getattr(e.cycle_class, "PARAMETERS", ()))))
-
-    # -- a cycle over several blocks (GSK G7.1 ... G7.1 C0) ------------------------------
-
-    def _start_region(self, block: Block, entry: CycleEntry, call: CycleCall) -> None:
-        if block.delete:
-            self._fail("%s on a block-delete '/' line: a region is not translated there" % call.name)
-        try:
-            if entry.cycle_class.region_ends(call.text):
-                self._fail("%s cancels a region that was not started" % call.text)
-        except CycleError as exc:
-            self._fail(exc.message)
-        self._region = Region(block, entry, call, [], None)
-
-    def _region_block(self, block: Block) -> None:
-        """A block inside a region: a path block, checked now, or the block that ends it."""
-        region = self._region
-        if block.delete:
-            self._fail("a block-delete '/' line inside the %s region is not translated" % region.call.name)
-        if block.keywords or block.call:  # (comments on a path block are not written)
-            self._fail("%s inside the %s region: only its path blocks may be there"
-                       % ((block.keywords or [block.call])[0], region.call.name))
-        text = " ".join(word.letter + word.text for word in block.words)
-        cycle = region.entry.cycle_class
-        try:
-            if cycle.region_ends(text):
-                self._finish_region(text)
-                return
-            context = cycle.check_region_block(text, region.context)
-        except CycleError as exc:
-            self._fail(exc.message)
-        region.texts.append(text)
-        self._region = region._replace(context=context)
-
-    def _finish_region(self, cancel: str) -> None:
-        """The cancel block read: the whole region is one call, its errors on its first line."""
-        region, self._region = self._region, None
-        line, self._line = self._line, region.block.line
-        self._not_ambiguous("c", why=region.call.name)
-        text = "\n".join([region.call.text] + region.texts + [cancel])
-        label = "%s ... %s, %d path blocks" % (region.call.text, cancel, len(region.texts))
-        self._run_cycle(region.block, region.entry, region.call._replace(text=text), label)
-        self._line = line
-        self.state.motion = None  # the motion after the region is not the one before it
-        self._defined.add("motion")
-
-    def check_region_closed(self) -> None:
-        """At the end of the program: a region without its cancel block is refused."""
-        if self._region is not None:
-            region, self._region = self._region, None
-            raise ProgramError("the %s region is not closed: it ends with %s C0" % (region.call.text,
-                                                                                  region.call.name),
-                               region.block.line)
-
-    # -- the separate retract block (Fanuc "G75 R(e)") ---------------------------------
-
-    @staticmethod
-    def _is_retract_block(entry: CycleEntry, words: Sequence[Word]) -> bool:
-        """True when the block holds none of the cycle's words but the retract block's."""
-        cycle_words = {word.name for word in entry.words} - {entry.retract_block}
-        return not {word.letter for word in words} & cycle_words
-
-    def _retract_block(self, block: Block, entry: CycleEntry, words: Sequence[Word]) -> None:
-        """``G75 R(e)`` alone: it only stores e for the next cycle of its kind."""
-        letter = entry.retract_block
-        if len(words) != 1 or words[0].letter != letter:
-            self._fail("%s: the first block is %s %s(e) (the peck retract) alone" % (entry.name, entry.name, letter))
-        self._length(words[0])
-        self.state.retract_e = words[0]
-        self._defined.add("retract_e")
-        kinds = "/".join(other.name for other in self.control.cycles() if other.retract_block)
-        note = "%s %s%s: peck retract e for the next %s" % (entry.name, letter, words[0].text, kinds)
-        self._emit_line(block, [], note)
-
-    def _with_retract_block(self, entry: CycleEntry, call: CycleCall) -> CycleCall:
-        """The call with the retract block read before it, when there was one."""
-        retract = self.state.retract_e
-        if retract is None:
-            return call
-        self._not_ambiguous("retract_e", why="%s %s(e)" % (entry.name, entry.retract_block))
-        text = "%s %s%s\n%s" % (entry.name, retract.letter, retract.text, call.text)
-        return call._replace(text=text)
-
-    def _with_memory(self, key: str, model: object, start: MachineState) -> object:
-        """A cycle with a program memory (class MEMORY, G83): the words it omits
-        from the previous cycle of its kind; what it leaves for the next one."""
-        why = getattr(model, "MEMORY_WHAT", "the words %s takes from the cycle before") % model.NAME
-        self._not_ambiguous("cycle_memory", why=why)
-        model = model.with_earlier(self.state.cycle_memory.get(key, {}), start)
-        self.state.cycle_memory = dict(self.state.cycle_memory, **{key: model.remembered(start)})
-        self._defined.add("cycle_memory")
-        return model
-
     def _cycle_settings(self, entry: CycleEntry) -> Settings:
         """The settings the cycle runs with: one that NEEDS_BLADE gets the blade of
         the tool in force (tool_table.blade_for), or is refused; a Milltronics G33/G34
         with a mill tool table the diameter of the D in force (mill_tool_table.diameter_for)."""
-        if isinstance(self.tools, MillToolTable) and getattr(entry.cycle_class, "PARAMETERS", ()):
+        if isinstance(self.tools, MillToolTable) and entry.cycle_class.PARAMETERS:
             self._not_ambiguous("tool", why="the tool diameter of %s" % entry.name)
             try:
                 diameter = diameter_for(self.state.tool, self.tools, self.settings.mill_tool_diameter)
@@ -258,7 +146,7 @@ class CycleTranslation(TranslatorBase):
             self._fail("%s: %s" % (entry.name, exc))
         return replace(self.settings, tool=blade)
 
-    def _collect_warnings(self, entry: CycleEntry, model: object, start: MachineState, settings: Settings) -> None:
+    def _collect_warnings(self, entry: CycleEntry, model: Cycle, start: MachineState, settings: Settings) -> None:
         """The cycle's warnings, on this line. A cycle that needs no blade still
         gets the tool table's blade of the tool in force where there is one, for
         its warnings (a Fanuc relief is checked against the blade's width)."""

@@ -16,7 +16,7 @@ from .input_controls import (
     TOOL_AND_EDGE,
     TOOL_AND_OFFSET,
 )
-from .numbers import MAX_DWELL_SECONDS, MAX_WORD
+from .numbers import MAX_DWELL_SECONDS, MAX_WORD, shortened
 from .reader import Block, Word
 from .translate_base import Groups, TranslatorBase
 
@@ -78,7 +78,7 @@ class MachineTranslation(TranslatorBase):
         edge_word = block.get("D")
         if tool_word is None and edge_word is None:
             return
-        if "M" in block.letters() and 6 in [int(word.value) for word in block.all("M")]:
+        if 6 in self._m_numbers(block):
             self._fail("M6 is added by the translation; program the tool with T alone")
         readers: Dict[str, Callable[[Optional[Word], Optional[Word]], ToolSelection]] = {
             TOOL_AND_EDGE: self._tool_and_edge,
@@ -98,7 +98,7 @@ class MachineTranslation(TranslatorBase):
         """Milltronics ``T5 M6``: the change, written ``T5 M6`` (Fanuc ``T05 M06``); afterwards the position
         and the spindle (M6 stops it) are unknown. T without M6 and M6 without T are refused."""
         tool_word = block.get("T")
-        m6 = 6 in [int(word.value) for word in block.all("M")]
+        m6 = 6 in self._m_numbers(block)
         if tool_word is None and not m6:
             return
         if tool_word is None:
@@ -160,7 +160,7 @@ class MachineTranslation(TranslatorBase):
         changed, self._tool_changed = self._tool_changed, False
         if not (changed and self.writer.target.tool_change_stops_spindle) or state.spindle_dir not in (3, 4):
             return
-        if set(_SPINDLE_CODES) & {int(word.value) for word in block.all("M")}:
+        if set(_SPINDLE_CODES) & self._m_numbers(block):
             return  # the block starts or stops it itself
         self._not_ambiguous("spindle_dir", why="restarting the spindle after the tool change")
         output.append(self.writer.m_code(state.spindle_dir))
@@ -193,7 +193,7 @@ class MachineTranslation(TranslatorBase):
         if limit_word is not None and self._limit(output, early, "LIMS="):
             return
         if speed_word is not None:
-            output.append("S" + self.writer.speed_text(speed))
+            output.append(self.writer.speed_word(speed))
 
     def _limit(self, output: List[str], early: List[str], what: str) -> bool:
         """Write the speed limit in force, the target's way; True when that wrote
@@ -235,9 +235,7 @@ class MachineTranslation(TranslatorBase):
         if on:
             output.extend(self._css_words(speed_word.value, limit_changed, early))
             return
-        output.append("G97")
-        if speed_word is not None:
-            output.append("S" + self.writer.speed_text(speed_word.value))
+        output.extend(self.writer.rpm_words(None if speed_word is None else speed_word.value))
 
     def _css_words(self, surface_speed: float, limit_changed: bool, early: List[str]) -> List[str]:
         """G96 with the surface speed and the limit in force, where the target writes it with G96 (or it changed)."""
@@ -258,7 +256,8 @@ class MachineTranslation(TranslatorBase):
                 continue  # written by _mill_tool_change
             group = M_GROUPS.get(code)
             if group is None:
-                self._fail("M%s is not supported (machine-specific M codes are not translated)" % word.text)
+                text = word.text if len(word.text) <= 20 else shortened(word.text)
+                self._fail("M%s is not supported (machine-specific M codes are not translated)" % text)
             if group in in_group and not (group == "coolant" and {code, in_group[group]} == {7, 8}):
                 self._fail("M%d and M%d are in the same modal group" % (in_group[group], code))
             in_group[group] = code

@@ -34,8 +34,8 @@ moves.
 
 Choices where the manuals are silent (each has a test)
 ------------------------------------------------------
-* Diameter programming at the start for every dialect (the seed example:
-  ``G00 X80 Z65`` before CYCLE93 with AXFA 35 as a radius); metric at the start;
+* Diameter programming at the start for every dialect (the Siemens manual's
+  example: ``G00 X80 Z65`` before CYCLE93 with AXFA 35 as a radius); metric at the start;
   the feed mode at the start is *unknown*: a feed move or a cycle before the
   program sets G94/G95 (G98/G99) is refused, because reading mm/rev as mm/min
   or the reverse is a crash or a scrapped part. ``start`` (a MachineState) may
@@ -99,7 +99,7 @@ Choices where the manuals are silent (each has a test)
   ``G96 ... D<limit>`` (Fanuc output: ``G50 S``).
 * Dwell: Siemens ``G4 F<s>``; Fanuc ``G04 X<s>``/``U<s>``/``P<ms>``; Haas ``G04 P``
   (seconds with a decimal point, milliseconds without). The 9/Series dwell
-  word is not documented in the seed: G04 is refused for "ab9".
+  word is not documented in the manual's grooving chapter: G04 is refused for "ab9".
 * Block delete: a ``/`` block whose effect changes a mode or the position makes
   that item *ambiguous* (it depends on the operator's switch). Using an
   ambiguous item (incremental move, X word under an ambiguous diameter mode,
@@ -141,7 +141,7 @@ from .input_controls import (
 from .modal import TRACKED, ModalState
 from .moves import MachineState
 from .native import NativeOutput
-from .output.targets import program_target
+from .output.targets import program_target, with_g07_meaning
 from .output.writer import MAX_LINE, Writer
 from .reader import Block, parse_block
 from .settings import DEFAULT_SETTINGS, Settings
@@ -171,7 +171,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
                  tools: Optional[Tools] = None, native_cycles: bool = False) -> None:
         self.control = input_control(dialect)  # raises on an unknown dialect
         # a mill-style program (X/Y/Z) on a mill target or a lathe target's mill twin; raises when there is none
-        output_target = program_target(target, self.control.mill)
+        output_target = with_g07_meaning(program_target(target, self.control.mill), settings.ab_g07_is_diameter)
         self.dialect = dialect
         self.settings = settings
         self.tools = tools
@@ -242,8 +242,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
     def _block(self, block: Block) -> None:
         if block.percent:
             return
-        if self._region is not None and not block.is_empty():
-            self._region_block(block)
+        if self._open is not None and not block.is_empty():  # the blocks of a call over several (a region)
+            self._open_block(block)
             return
         if self.state.ended:
             if block.words or block.keywords or block.call or block.number is not None:
@@ -276,7 +276,11 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
         """The block's G codes by modal group, from the input control's table."""
         groups: Groups = {}
         for word in block.all("G"):
-            code = self.codes.get(g_code_key(word.text))
+            key = g_code_key(word.text)
+            if key is None:
+                self._fail("G%s is not a G code: a G word is a whole number, or one with a decimal such as G7.1"
+                           % word.text)
+            code = self.codes.get(key)
             if code is None:
                 self._fail("G%s is not supported in a %s program" % (word.text, self.dialect))
             if code.group == REFUSED:
@@ -323,7 +327,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
         stops_and_ends = self._m_codes(block, output)  # written after the motion
         self._motion(block, groups, output)
         if feed_word is not None:
-            output.append("F" + self.writer.f_word(state.feed))
+            output.append(self.writer.feed_word(state.feed))
         self._stops_and_ends(stops_and_ends, output)
         note = self._diameter_register(block) if self.control.tool_words == DIAMETER_REGISTER else None
         self._emit_early(block, early, output or block.comments or note)
@@ -371,7 +375,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
 
     def footer(self) -> List[str]:
         """The lines that close the translation (the end when the program has none)."""
-        self.check_region_closed()
+        self.check_blocks_closed()
         lines = self.writer.footer()
         return lines[1:] if self.state.ended else lines
 

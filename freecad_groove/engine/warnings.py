@@ -7,17 +7,20 @@ says so with a :class:`CycleWarning`. Errors stop the run (``CycleError``);
 warnings never change the moves.
 
 Each cycle class may define ``warnings(state, settings) -> List[CycleWarning]``
-beside ``expand()`` (see ``registry.py``); :func:`cycle_warnings` calls it, and
-gives no warnings for a cycle without one. The translator collects them per
+beside ``expand()`` (the hook of ``cycle.Cycle``, whose default is none);
+:func:`cycle_warnings` calls it. The translator collects them per
 line (``Translator.warnings``), the command line prints them on stderr as
 ``PROGRAM:LINE: warning: CYCLE93: ...`` and the FreeCAD op in its report view.
 """
 
 from dataclasses import dataclass
-from typing import List, Optional
+from typing import TYPE_CHECKING, List, Optional
 
 from .moves import MachineState
 from .settings import Settings
+
+if TYPE_CHECKING:  # cycle.py imports this module
+    from .cycle import Cycle
 
 __all__ = ["CycleWarning", "cycle_warnings"]
 
@@ -41,10 +44,6 @@ class CycleWarning:
         return "%s: %s" % (self.cycle, self.message)
 
 
-def cycle_warnings(model: object, state: MachineState, settings: Settings) -> List[CycleWarning]:
-    """The warnings of a cycle model (its ``warnings(state, settings)``), [] when
-    its class declares none."""
-    method = getattr(model, "warnings", None)
-    if method is None:
-        return []
-    return list(method(state, settings))
+def cycle_warnings(model: "Cycle", state: MachineState, settings: Settings) -> List[CycleWarning]:
+    """The warnings of a cycle model (its ``warnings(state, settings)``; Cycle's default: none)."""
+    return list(model.warnings(state, settings))

@@ -9,7 +9,7 @@ every saved document: it must never move.
 Base holds one cylindrical face about the Job's Z axis and the edges of the
 slot's centre line on it, in order (slot_path.py develops them into Z and C).
 The end mill's diameter is the slot's width: the op drives its centre along
-the path. The region (engine/cycles/gsk_g71.py) is built from the op:
+the path. The region (engine/cycles/gsk_g7_1.py) is built from the op:
 
     G7.1 C(radius) J(-2 Depth) R(2 Retract) K(2 Allowance) L(Passes)
     G1 Z.. C.. F(feed) ... (the developed path)   G7.1 C0
@@ -37,7 +37,7 @@ import Part
 import Path
 import PathScripts.PathUtils as PathUtils
 
-from ..engine.cycles.gsk_g71 import DECIMALS, GskG71, PathBlock
+from ..engine.cycles.gsk_g7_1 import DECIMALS, GskG7_1, PathBlock
 from ..engine.moves import FEED, RAPID, MachineState, Move
 from . import slot_reach
 from .addon_op import AddonOp, create_op, register_op_kind
@@ -72,7 +72,7 @@ class SlotPlan(NamedTuple):
     """What the op cuts: the region, where it starts, the safe radius and the moves."""
 
     cylinder: SlotCylinder
-    region: GskG71
+    region: GskG7_1
     start: MachineState
     safe_radius: float
     moves: List[Move]
@@ -195,7 +195,7 @@ class ObjectCylinderSlot(AddonOp):
                                    "milled at it along its developed path)" % feed, ("ToolController",))
         return feed
 
-    def region(self, obj: object, cylinder: SlotCylinder, points: list) -> GskG71:
+    def region(self, obj: object, cylinder: SlotCylinder, points: list) -> GskG7_1:
         depth, allowance, retract = (_number(obj, n) for n in ("Depth", "Allowance", "Retract"))
         if not depth > 0:
             raise GrooveInputError("Depth=%s: must be greater than 0" % depth, ("Depth",))
@@ -207,7 +207,7 @@ class ObjectCylinderSlot(AddonOp):
         if not 1 <= obj.Passes <= 9999:
             raise GrooveInputError("Passes=%s: must be from 1 to 9999" % obj.Passes, ("Passes",))
         blocks = region_blocks(points, self.feed_mm_per_min(obj))
-        return GskG71(C=_rounded(cylinder.radius), path=blocks, J=_rounded(-2.0 * depth), R=_rounded(2.0 * retract),
+        return GskG7_1(C=_rounded(cylinder.radius), path=blocks, J=_rounded(-2.0 * depth), R=_rounded(2.0 * retract),
                       K=_rounded(2.0 * allowance), L=int(obj.Passes))
 
     def plan(self, obj: object) -> SlotPlan:

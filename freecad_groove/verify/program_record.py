@@ -31,6 +31,8 @@ from typing import Optional
 
 from shapely.geometry import box
 
+from freecad_groove.engine.cycles.cycle93 import Cycle93
+from freecad_groove.engine.cycles.pecking import PeckingCycle
 from freecad_groove.engine.errors import ProgramError
 from freecad_groove.engine.moves import DWELL, FEED, MINUS_X, PLUS_X, RAPID, GroovingTool, Move
 from freecad_groove.engine.numbers import MM_PER_INCH
@@ -233,11 +235,11 @@ def declared_grooves(name: str, model, start, settings, blade: GroovingTool) -> 
     air already), (x, z) rings in the program's units. CYCLE93 takes the
     contour turned: the air above its contour line across the groove's
     window (GrooveGeometry.final_top's ends)."""
-    if hasattr(model, "AXIS"):  # the pecking cycles
+    if isinstance(model, PeckingCycle):  # G77/G76, G75/G74
         plunge = model.plunge_direction(start)
         bottom, p0, positions, _peck = model._grooves(start)
         return plunge, [_plunge_groove(model.AXIS, plunge, blade, p0, bottom, s) for s in positions], []
-    if hasattr(model, "geometry"):  # CYCLE93
+    if isinstance(model, Cycle93):
         geometry = model.geometry(replace(settings, tool=blade), start.metric)
         lo, hi, m = geometry.final_top[0][0], geometry.final_top[-1][0], geometry.slope
         above = [(lo, m * lo), (hi, m * hi), (hi, m * hi + CONTOUR_AIR), (lo, m * lo + CONTOUR_AIR)]

@@ -3,7 +3,7 @@
 An R20 cylinder (Z 0..50) turned about Z, with the slot's centre line a
 separate model object: a helix of one turn (pitch 20) from Z10, or a keyway
 line along Z at C90. The expected Paths are derived here by hand from the
-G7.1 Type II rules (gsk_g71's module notes): the rough passes at radius
+G7.1 Type II rules (gsk_g7_1's module notes): the rough passes at radius
 20 - (Depth - Allowance) * n / max(L, 2), the finish at 20 - Depth, the
 cycle start at 20 + Retract; each pass: G1 X in, G1 along the developed
 path, G0 X out, G0 Z C back.

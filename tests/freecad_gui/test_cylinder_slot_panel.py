@@ -4,7 +4,7 @@ What a user does: select the R20 shaft's cylinder and the helix on it (or a
 sketch of the developed surface), press the Cylinder slot command, type values
 into the panel, watch the developed path, press OK or Cancel. The helix: one
 turn (pitch 20) from Z10, i.e. on the developed surface a line from (Z10, s0)
-to (Z30, s = 40 pi). Pass radii by hand (gsk_g71's rule): rough passes at
+to (Z30, s = 40 pi). Pass radii by hand (gsk_g7_1's rule): rough passes at
 20 - (Depth - Allowance) * n / 2 (n = 1, 2), the finish at 20 - Depth.
 """
 

@@ -1,7 +1,7 @@
 """Allen-Bradley 9/Series lathe G77 (grooving / cut-off) and G76, its face twin,
 built on the shared pecking machinery (``pecking``).
 
-The manual (seed 000, 9/Series lathe manual chapter 23) says, for
+The 9/Series lathe manual (chapter 23) says, for
 ``G77 X__ Z__ I__ K__ F__ D__;``:
 
 * **X** - the bottom of the groove, reached from the X the tool held before the
@@ -75,7 +75,7 @@ class _AllenBradley(PeckingCycle):
 @register
 @dataclass(frozen=True)
 class G77(_AllenBradley):
-    """Allen-Bradley 9/Series ``G77 X__ Z__ I__ K__ F__ D__`` (seed 000).
+    """Allen-Bradley 9/Series ``G77 X__ Z__ I__ K__ F__ D__`` (9/Series lathe manual, chapter 23).
 
     X groove bottom (abs/inc per G90/G91, diameter per mode; required, must
     differ from the start X: below it = external/cut-off, MINUS_X; above = internal,

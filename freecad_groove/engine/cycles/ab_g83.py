@@ -1,8 +1,8 @@
-"""Allen-Bradley 9/Series grinder G83 / G83.1: plunge surface grinding (seed 003,
-9/Series grinder manual chapter 16, pages 16-9, 16-13, 16-16).
+"""Allen-Bradley 9/Series grinder G83 / G83.1: plunge surface grinding (the
+9/Series grinder manual, chapter 16, pages 16-9, 16-13, 16-16).
 
 ``G83 X__ I__ Y__ J__ Z__ K__ R__ Q__ L__ F__ E__ P__ D__;`` with the axes of
-the seed's format: X the reciprocating (non-plane) axis, Y the plunge axis
+the manual's format: X the reciprocating (non-plane) axis, Y the plunge axis
 (plane axis 1), Z the crossover axis (plane axis 2). Moves are mill-style:
 ``Move.x`` a plain X coordinate (not a radius), ``Move.y`` and ``Move.z``.
 
@@ -27,7 +27,7 @@ README row with a test):
 1. G83.1: the dress program P first, at the start point.
 2. The plunge pick J at F from the start (clipped to Y).
 3. Reciprocation: X feeds at E to the secondary reversal point I when the
-   start is not on it (the seed's step 3), then to the primary X, to I, and
+   start is not on it (the manual's step 3), then to the primary X, to I, and
    so on. At each reversal the crossover axis picks K (at X)
    or R (at I) at F toward the crossover end, the last pick clipped to it.
 4. At a reversal where the crossover end has been reached, the plunge pick Q
@@ -60,6 +60,7 @@ import math
 from dataclasses import dataclass, fields, replace
 from typing import ClassVar, Dict, List, NamedTuple, Optional
 
+from ..cycle import Cycle
 from ..errors import CycleError
 from ..moves import DRESS, FEED, MachineState, Move
 from ..numbers import MAX_MOVES
@@ -111,7 +112,7 @@ def _toward(value: float, target: float, step: float) -> float:
 
 @register
 @dataclass(frozen=True)
-class G83:
+class G83(Cycle):
     """Allen-Bradley 9/Series ``G83`` plunge surface grinding (see the module notes)."""
 
     NAME: ClassVar[str] = "G83"
@@ -362,7 +363,7 @@ def grind_moves(plan: GrindPlan, cycle: str = "G83") -> List[Move]:
         wheel.feed(plan.feed, y=depth_at_start)
     dresses = _dress_after(plan)
     passes_left = _passes_at_depth(plan) if wheel.y == plan.depth else None
-    # the seed's step 3: X moves to the secondary reversal point I first (when the start is not on it)
+    # the manual's step 3: X moves to the secondary reversal point I first (when the start is not on it)
     reversal = plan.secondary if abs(plan.x0 - plan.secondary) > TOLERANCE else plan.primary
     cross_to, plunge = plan.cross_end, 0
     while True:

@@ -6,11 +6,11 @@
 (Siemens' own names: SPD, SPL, WIDG, DIAG, STA1, ANG1, ANG2, RCO1, RCO2, RCI1,
 RCI2, FAL1, FAL2, IDEP, DTB, VARI, _VRT, _DN.)
 
-Geometry, as this module reads the seed manual (choices marked *):
+Geometry, as this module reads the Siemens manual (choices marked *):
 - The contour is the straight line through the start point (AXSA, AXFA) at
   ANGC to the longitudinal axis, ANGC measured counter-clockwise from +Z with
   X up (so ANGC = 12 on an external groove is a cone whose diameter grows
-  toward +Z)*. The seed example's approach point X80 Z65 clears it.
+  toward +Z)*. The approach point X80 Z65 of the manual's example clears it.
 - TYP units digit: 1 longitudinal/external/left, 2 face/external/left,
   3 longitudinal/internal/left, 4 face/internal/left, 5..8 the same "right".
   Longitudinal: external plunges -X, internal +X; "left" puts the start point
@@ -31,13 +31,13 @@ Geometry, as this module reads the seed manual (choices marked *):
 - AXFA, DEPG, FAL1 (longitudinal) and FAL2 (face) are radius values unless
   Settings.cycle93_diameter_input says the control reads them as diameters.
 
-Expansion (the seed's four steps), driving the tool's reference corner:
+Expansion (the manual's four steps), driving the tool's reference corner:
 1+2. Paraxial plunges across the opening, equally spaced at most 95 % of
   (tool width - 2 x corner radius) apart, from the start side*; each to the
   roughing profile (final profile less the allowances) in equal infeeds of at
   most IDEP, each followed by a rapid chip-breaking retract of VRT (0 = 1 mm)
   and a feed back in; a DWT dwell at the bottom of the plunges that reach the
-  base (seed: "dwell time at recess base"; not where a plunge stops on a flank
+  base (the manual: "dwell time at recess base"; not where a plunge stops on a flank
   or a base corner above the base); rapid retract to VRT above the contour.
   Traverses run VRT above the contour, parallel to it.
 3. When flanks are angled, base corners rounded or the contour oblique, a
@@ -65,6 +65,7 @@ from dataclasses import dataclass, fields
 from functools import lru_cache
 from typing import ClassVar, List, Optional, Tuple
 
+from ..cycle import Cycle
 from ..moves import MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, MachineState, Move
 from ..numbers import DIGITS_RULE, format_exact, shortened, too_many_digits
 from ..registry import CALL, register
@@ -89,7 +90,7 @@ from .cycle93_warnings import cycle93_warnings
 
 @register
 @dataclass(frozen=True)
-class Cycle93:
+class Cycle93(Cycle):
     """One CYCLE93 call, its parameters as programmed (None = left empty)."""
 
     NAME: ClassVar[str] = NAME

@@ -15,15 +15,15 @@ ALARM_TYP = 61002
 ALARM_WIDTH = 61602
 ALARM_FORM = 61603
 MAX_FLANK_ANGLE = 89.999
-WIDTH_STEP_FACTOR = 0.95  # seed: at most 95 % of (tool width - edge radii)
-DEFAULT_VRT_MM = 1.0  # seed: VRT = 0 means 1 mm
+WIDTH_STEP_FACTOR = 0.95  # Siemens manual: at most 95 % of (tool width - edge radii)
+DEFAULT_VRT_MM = 1.0  # Siemens manual: VRT = 0 means 1 mm
 DEFAULT_VRT_INCH = 0.04
 # After a chip-breaking retract the blade rapids back down its own slot to
 # this far above the depth it reached, then feeds on: only this gap is fed in
 # air, not VRT. Never more than VRT (with VRT below it, no rapid back down).
 REENTRY_CLEARANCE_MM = 0.1
 REENTRY_CLEARANCE_INCH = 0.004
-# Seed: "From the second cut along the groove width onwards, the tool will
+# The Siemens manual: "From the second cut along the groove width onwards, the tool will
 # retract by 1 mm before each retraction": at the bottom of every plunge after
 # the first the blade feeds this far along the groove's axis back toward the
 # previous plunge (never further than it), then rapids out.

@@ -1,7 +1,7 @@
 """Steps 1 and 2 of CYCLE93: the roughing plunges across the groove, with
 their chip-breaking retracts, the dwell at the base and the free-off.
 
-The seed: "From the second cut along the groove width onwards, the tool will
+The Siemens manual: "From the second cut along the groove width onwards, the tool will
 retract by 1 mm before each retraction." Read here as a free-off along the
 groove's axis (the frame's u): at the bottom of every plunge after the first,
 the blade feeds ``FREE_OFF_MM`` (``FREE_OFF_INCH``) back toward the previous

@@ -52,6 +52,7 @@ from typing import ClassVar, Optional
 
 from ..errors import CycleError
 from ..registry import G_WORD, register
+from ..retract_block import RetractBlock
 from ..settings import DEFAULT_SETTINGS, Settings
 from .pecking import PeckingCycle, check_number, format_number, read_block
 
@@ -67,7 +68,8 @@ class _Fanuc(PeckingCycle):
     WORDS = ("X", "U", "Z", "W", "P", "Q", "R", "F")
     COUNTED = ("P", "Q")
     RELIEF = "R"
-    RETRACT_BLOCK: ClassVar[str] = "R"  # "G75 R(e)" before the cycle block sets e
+    BLOCKS: ClassVar[type] = RetractBlock  # "G75 R(e)" before the cycle block sets e
+    RETRACT_BLOCK: ClassVar[str] = "R"
 
     e: Optional[float] = None
     X: Optional[float] = None

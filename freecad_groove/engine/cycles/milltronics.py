@@ -47,6 +47,7 @@ import re
 from dataclasses import dataclass, fields, replace
 from typing import ClassVar, Dict, List, NamedTuple, Optional, Tuple
 
+from ..cycle import Cycle
 from ..errors import CycleError
 from ..moves import FEED, RAPID, MachineState, Move
 from ..numbers import ARC_CHORD_TOLERANCE, MAX_MOVES, MM_PER_INCH
@@ -126,7 +127,7 @@ def _read_call(line: str, cls: type, values: Dict[str, object]) -> None:
 
 
 @dataclass(frozen=True)
-class MilltronicsCycle:
+class MilltronicsCycle(Cycle):
     """The words and P parameters shared by G33 and G34 (see the module notes)."""
 
     NAME: ClassVar[str] = ""

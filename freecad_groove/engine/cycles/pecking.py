@@ -36,8 +36,9 @@ Choices the manuals leave open (each a named constant here, each with a test):
 
 import math
 import re
-from typing import ClassVar, Dict, List, Optional, Sequence, Tuple
+from typing import ClassVar, Dict, List, NamedTuple, Optional, Sequence, Tuple
 
+from ..cycle import Cycle
 from ..errors import CycleError
 from ..moves import FEED, MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, RAPID, MachineState, Move
 from ..numbers import DIGITS_RULE, MAX_MOVES, format_decimal, format_given, shortened, too_many_digits
@@ -251,26 +252,56 @@ def peck_grooves(
 # ---------------------------------------------------------------- the shared cycle model
 
 
-class PeckingCycle:
+class PeckingLayout(NamedTuple):
+    """What a pecking call cuts, resolved against its start (lengths in the
+    program's units, X radii): ``longitudinal`` it plunges in X; ``bottom``
+    and ``plunge_start`` on the plunge axis; ``positions`` the grooves on the
+    other; ``pitch`` the spacing as programmed (None: one groove); ``peck``;
+    ``relief`` as the cycle moves it (signed; 0: none); ``relief_first`` it
+    is made at the first groove too (Allen-Bradley D); ``retract`` e; ``feed``
+    the call's F (None: the feed in force). engine/native rebuilds the call
+    for another control from it."""
+
+    longitudinal: bool
+    bottom: float
+    plunge_start: float
+    positions: List[float]
+    pitch: Optional[float]
+    peck: float
+    relief: float
+    relief_first: bool
+    retract: float
+    feed: Optional[float]
+
+    @property
+    def pecks(self) -> int:
+        """Infeeds per groove."""
+        return _count(abs(self.bottom - self.plunge_start), self.peck)
+
+    @property
+    def relief_made(self) -> bool:
+        """Whether the relief moves the blade at all."""
+        return bool(self.relief) and (self.relief_first or len(self.positions) > 1)
+
+
+class PeckingCycle(Cycle):
     """Validation, expansion, emit and parse shared by the pecking cycles.
 
     A concrete cycle is a frozen dataclass whose fields are named after its
-    words, and which sets these class attributes:
+    words, and which sets the declaration of every cycle (cycle.Cycle: NAME,
+    COUNTED, ...) and these class attributes of the pecking cycles:
 
-    NAME      the G word ("G77").
     AXIS      plunge axis, "X" or "Z".
     WORDS     letters in the order emit() writes them.
     BOTTOM    the words that may give the groove bottom (("X",) or ("X", "U")).
     LAST      the words that may give the last groove position.
     PECK, PITCH, RELIEF   the letters of the peck depth, the groove spacing and
               the shift/relief at the bottom.
-    COUNTED   words that are integers in least input increments (Fanuc P, Q).
     SHIFT_D   True: RELIEF is Allen-Bradley's D: required, signed, done at every
               groove. False: Fanuc/Haas relief: optional, unsigned, toward the
               grooves already cut, not at the first.
     """
 
-    NAME: ClassVar[str]
     AXIS: ClassVar[str]
     WORDS: ClassVar[tuple]
     BOTTOM: ClassVar[tuple]
@@ -278,7 +309,6 @@ class PeckingCycle:
     PECK: ClassVar[str]
     PITCH: ClassVar[str]
     RELIEF: ClassVar[str]
-    COUNTED: ClassVar[tuple] = ()
     SHIFT_D: ClassVar[bool] = False
 
     # -- hooks a dialect may override
@@ -423,6 +453,17 @@ class PeckingCycle:
             )
         positions = [s0] if grooves == 1 else _points(s0, last, pitch, grooves - 1)
         return bottom, p0, positions, peck
+
+    def layout(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> PeckingLayout:
+        """What the call cuts from ``state`` (validated), as expand() cuts it."""
+        self.validate(settings)
+        bottom, p0, positions, peck = self._grooves(state)
+        relief = float(getattr(self, self.RELIEF) or 0.0)
+        if not self.SHIFT_D:
+            relief = relief if positions[-1] < positions[0] else -relief  # back toward the grooves already cut
+        pitch = self._length(self.PITCH, state.metric) if len(positions) > 1 else None
+        return PeckingLayout(self.AXIS == "X", bottom, p0, positions, pitch, peck, relief, self.SHIFT_D,
+                             self._retract(settings, state.metric)[0], self.F)
 
     def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
         """The moves the control makes, from ``state`` (x radius, z)."""

@@ -23,12 +23,12 @@ P parameters and clearance plane R) is kept here, so a call that reads the
 control's memory (G31) is proven against what the output gave it.
 """
 
-from dataclasses import replace
+from dataclasses import asdict, replace
 from typing import Any, Dict, List, Optional, Tuple
 
 from ..cycles.ab_g83 import G83
 from ..cycles.cycle93 import Cycle93
-from ..cycles.gsk_g71 import GskG71
+from ..cycles.gsk_g7_1 import GskG7_1
 from ..cycles.milltronics import G31, G32, PARAMETERS, MilltronicsCycle
 from ..cycles.pecking import PeckingCycle
 from ..errors import CycleError
@@ -52,7 +52,7 @@ FAMILIES = {GROOVES: "grooving cycle", SLOTS: "G7.1 cylinder slot cycle", GRINDS
 
 def family_of(model: Any) -> str:
     """The family of a cycle model (FAMILIES); ValueError for one no target writes natively."""
-    for family, classes in ((GROOVES, (Cycle93, PeckingCycle)), (SLOTS, (GskG71,)), (GRINDS, (G83,)),
+    for family, classes in ((GROOVES, (Cycle93, PeckingCycle)), (SLOTS, (GskG7_1,)), (GRINDS, (G83,)),
                             (MILL, (MilltronicsCycle,))):
         if isinstance(model, classes):
             return family
@@ -158,7 +158,7 @@ class NativeOutput:
         written (with what the output's control remembers) cuts ``moves``;
         else NotNative (``why``, or where the moves differ)."""
         tstart = replace(self.written(start), feed=start.feed if feed is None else feed)
-        key = getattr(model, "MEMORY", "")
+        key = model.MEMORY
         read = model.with_earlier(self.memory.get(key, {}), tstart) if key else model
         try:
             got = read.expand(tstart, settings)
@@ -229,6 +229,6 @@ def grind_model(model: G83, start: MachineState, words: Words) -> G83:
 
 def mill_model(model: MilltronicsCycle, words: Words) -> MilltronicsCycle:
     """G33/G34 with its words and P parameters at the output's resolution."""
-    values = {key: words.length(getattr(model, key)) for key in ("R", "Z", "V", "Q") + PARAMETERS
-              if getattr(model, key) is not None}
+    values = {key: words.length(value) for key, value in asdict(model).items()
+              if key in ("R", "Z", "V", "Q") + PARAMETERS and value is not None}
     return replace(model, F=words.feed(model.F), **values)

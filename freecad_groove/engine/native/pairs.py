@@ -3,6 +3,7 @@ tables and the cycle registry: the command line's ``--native-cycles`` help."""
 
 from typing import Dict, List, Tuple
 
+from ..cycles.pecking import PeckingCycle
 from ..output.syntax import Target
 from ..output.targets import TARGETS
 from ..registry import cycles_of
@@ -14,7 +15,7 @@ PECKING_DIALECTS = ("ab9", "fanuc", "gsk", "haas")  # the input controls whose p
 
 def _pecking_codes(dialect: str) -> Tuple[str, Tuple[type, ...]]:
     """The pecking cycles of a dialect's programs: their codes ("G77/G76") and classes."""
-    entries = [e for e in cycles_of(dialect) if hasattr(e.cycle_class, "PECK")]
+    entries = [e for e in cycles_of(dialect) if issubclass(e.cycle_class, PeckingCycle)]
     return "/".join(e.name for e in entries), tuple(e.cycle_class for e in entries)
 
 

@@ -17,12 +17,11 @@ why, for the differences known to matter:
   a one-groove, one-peck call is the same cut.
 """
 
-import math
 from dataclasses import replace
-from typing import Any, Dict, List, NamedTuple, Optional
+from typing import Any, Dict, List, Optional
 
 from ..cycles.cycle93 import DEFAULT_VRT_INCH, DEFAULT_VRT_MM, Cycle93
-from ..cycles.pecking import F_DECIMALS, TOLERANCE
+from ..cycles.pecking import F_DECIMALS, PeckingLayout
 from ..errors import CycleError
 from ..moves import GroovingTool, MachineState, Move
 from ..output.syntax import Target
@@ -31,49 +30,7 @@ from .compare import difference, resolved
 from .cycle93_pecking import pecking_cycle
 from .result import NotNative
 
-__all__ = ["Layout", "layout_of", "pecking_model", "to_cycle93", "to_pecking"]
-
-
-class Layout(NamedTuple):
-    """What a pecking call cuts, resolved against its start (lengths in the
-    program's units, X radii): ``longitudinal`` it plunges in X; ``bottom``
-    and ``plunge_start`` on the plunge axis; ``positions`` the grooves on the
-    other; ``pitch`` the spacing as programmed (None: one groove); ``peck``;
-    ``relief`` as the cycle moves it (signed; 0: none); ``relief_first`` it
-    is made at the first groove too (Allen-Bradley D); ``retract`` e; ``feed``
-    the call's F (None: the feed in force)."""
-
-    longitudinal: bool
-    bottom: float
-    plunge_start: float
-    positions: List[float]
-    pitch: Optional[float]
-    peck: float
-    relief: float
-    relief_first: bool
-    retract: float
-    feed: Optional[float]
-
-    @property
-    def pecks(self) -> int:
-        """Infeeds per groove."""
-        return max(1, math.ceil((abs(self.bottom - self.plunge_start) - TOLERANCE) / self.peck))
-
-    @property
-    def relief_made(self) -> bool:
-        """Whether the relief moves the blade at all."""
-        return bool(self.relief) and (self.relief_first or len(self.positions) > 1)
-
-
-def layout_of(model: Any, start: MachineState, settings: Settings) -> Layout:
-    """The layout of a validated pecking call from ``start`` (its own reading of its words)."""
-    bottom, plunge_start, positions, peck = model._grooves(start)  # the layout expand() cuts
-    relief = float(getattr(model, model.RELIEF) or 0.0)
-    if not model.SHIFT_D:
-        relief = relief if positions[-1] < positions[0] else -relief  # back toward the grooves already cut
-    pitch = model._length(model.PITCH, start.metric) if len(positions) > 1 else None
-    return Layout(model.AXIS == "X", bottom, plunge_start, positions, pitch, peck, relief, model.SHIFT_D,
-                  model._retract(settings, start.metric)[0], model.F)
+__all__ = ["Words", "cycle93_model", "pecking_model", "to_cycle93", "to_pecking"]
 
 
 class Words:
@@ -98,7 +55,7 @@ class Words:
         return None if value is None else round(value, self.feed_digits) + 0.0
 
 
-def pecking_model(target: Target, layout: Layout, words: Words) -> Any:
+def pecking_model(target: Target, layout: PeckingLayout, words: Words) -> Any:
     """The target's pecking call cutting ``layout`` (its relief as near as the cycle has one)."""
     cycle = pecking_cycle(target, layout.longitudinal)
     values: Dict[str, Any] = {}
@@ -131,7 +88,7 @@ def _read(model: Any, start: MachineState, settings: Settings) -> List[Move]:
         raise NotNative("%s cannot cut it: %s" % (model.NAME, exc.message)) from None
 
 
-def _pecking_reason(source: Any, model: Any, layout: Layout, target: Target, settings: Settings,
+def _pecking_reason(source: Any, model: Any, layout: PeckingLayout, target: Target, settings: Settings,
                     metric: bool, tolerance: float) -> Optional[str]:
     """Why ``model`` cuts other moves than ``source``, where the reason is a known one."""
     if source.SHIFT_D != model.SHIFT_D and layout.relief_made:
@@ -158,7 +115,7 @@ def to_pecking(source: Any, start: MachineState, settings: Settings, moves: List
     """The target's pecking call for ``source`` (from ``start``, its ``moves``),
     read from ``tstart`` (the start as written); NotNative with the reason when
     it cuts other moves: (the model, its moves)."""
-    layout = layout_of(source, start, settings)
+    layout = source.layout(start, settings)
     model = pecking_model(target, layout, words)
     got = _read(model, tstart, settings)
     diff = difference(resolved(moves, start, tolerance), resolved(got, tstart, tolerance), tolerance)
@@ -168,7 +125,7 @@ def to_pecking(source: Any, start: MachineState, settings: Settings, moves: List
     raise NotNative(why or "%s cuts other moves: %s" % (model.NAME, diff))
 
 
-def _cycle93_reason(source: Any, layout: Layout, blade: Optional[GroovingTool]) -> Optional[str]:
+def _cycle93_reason(source: Any, layout: PeckingLayout, blade: Optional[GroovingTool]) -> Optional[str]:
     """Why CYCLE93 cannot cut what ``source`` cuts, known before building it."""
     if len(layout.positions) > 1:
         return "CYCLE93 cuts one groove a call, %s cuts %d" % (source.NAME, len(layout.positions))
@@ -182,7 +139,7 @@ def _cycle93_reason(source: Any, layout: Layout, blade: Optional[GroovingTool]) 
     return None
 
 
-def cycle93_model(layout: Layout, tstart: MachineState, blade: GroovingTool, settings: Settings,
+def cycle93_model(layout: PeckingLayout, tstart: MachineState, blade: GroovingTool, settings: Settings,
                   digits: int) -> Cycle93:
     """The CYCLE93 call whose one plunge is the layout's one peck from ``tstart``:
     a groove as wide as the blade, its contour (ANGC 90 for a face groove) VRT
@@ -214,7 +171,7 @@ def to_cycle93(source: Any, start: MachineState, settings: Settings, moves: List
     """CYCLE93 for the pecking call ``source`` (from ``start``, its ``moves``),
     read from ``tstart`` with ``blade``: (the model, its moves, the feed in
     force it cuts at); NotNative with the reason when it cuts other moves."""
-    layout = layout_of(source, start, settings)
+    layout = source.layout(start, settings)
     why = _cycle93_reason(source, layout, blade)
     if why:
         raise NotNative(why)

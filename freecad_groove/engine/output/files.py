@@ -13,20 +13,27 @@ nothing else is ever destroyed (the command line's ``-o`` and the posts).
   protected from the command line as from an editor;
 * the folder must exist and be writable by the same rules (the new text goes
   through a temporary file there);
-* the new text goes to a temporary file ``.NAME.XXXXXXXXXX.tmp`` next to the
-  target (chunk by chunk: nothing reaches the target before the last chunk),
-  is flushed to disk, gets the target's mode (and owner and group
-  where the user may set them: root always) and is renamed over the target:
-  the file is either the old one or the whole new one, never a mix. A file
-  with other hard links is replaced at this name only.
+* the new text goes to a temporary file in the target's folder (chunk by
+  chunk: nothing reaches the target before the last chunk), is flushed to
+  disk, gets the target's mode (and owner and group where the user may set
+  them: root always) and is renamed over the target: the file is either the
+  old one or the whole new one, never a mix. A file with other hard links is
+  replaced at this name only. On Linux the temporary file has no name while
+  it is written (``O_TMPFILE``): it is linked as ``.NAME.XXXXXXXXXX.tmp`` only
+  when whole, and renamed over the target at once; where the system or the
+  file system has no unnamed files, it is ``.NAME.XXXXXXXXXX.tmp`` from the
+  start.
 
 A refused path raises :class:`OutputRefused`, an ``OSError`` whose
 ``strerror`` says why in one line; other ``OSError`` propagate. The temporary
 file is removed on any error or exception, a ``KeyboardInterrupt`` or a signal
 handler's exception included, and an exception raised by the iterable of
-chunks (a translation error on a late line) too: its name is chosen before the file is made
-(``O_EXCL``), so an exception raised the instant after still finds it. Only a
-kill -9 or a crash during the final write can leave a ``.NAME.*.tmp`` behind.
+chunks (a translation error on a late line) too: a named one's name is chosen
+before the file is made (``O_EXCL``), so an exception raised the instant after
+still finds it. A kill -9 or a crash leaves a ``.NAME.*.tmp`` behind only
+between its link and its rename (an unnamed file, whatever it held, goes with
+the process), or, where there are no unnamed files, at any time while it is
+written.
 """
 
 import codecs
@@ -120,10 +127,10 @@ def _create(path: str) -> int:
     return os.open(path, flags, 0o600)
 
 
-def _fill(fd: int, tmp: str, chunks: Iterable[str], encoder: codecs.IncrementalEncoder,
-          old: Optional[os.stat_result]) -> None:
-    """Write the encoded ``chunks`` to the temporary file and give it the old file's owner and mode."""
-    with os.fdopen(fd, "wb", buffering=_BUFFER) as f:
+def _fill(fd: int, chunks: Iterable[str], encoder: codecs.IncrementalEncoder, old: Optional[os.stat_result]) -> None:
+    """Write the encoded ``chunks`` to the temporary file ``fd`` (left open) and give it the old file's owner
+    and mode (a new file: 0666 less the umask)."""
+    with os.fdopen(fd, "wb", buffering=_BUFFER, closefd=False) as f:
         for chunk in chunks:
             f.write(encoder.encode(chunk))
         f.write(encoder.encode("", True))
@@ -132,17 +139,53 @@ def _fill(fd: int, tmp: str, chunks: Iterable[str], encoder: codecs.IncrementalE
     if old is None:
         umask = os.umask(0)
         os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
+        os.fchmod(fd, 0o666 & ~umask)
         return
-    if hasattr(os, "chown"):
+    if hasattr(os, "fchown"):
         try:
-            os.chown(tmp, old.st_uid, old.st_gid)
+            os.fchown(fd, old.st_uid, old.st_gid)
         except OSError:
             try:
-                os.chown(tmp, -1, old.st_gid)  # the group alone, where the user belongs to it
+                os.fchown(fd, -1, old.st_gid)  # the group alone, where the user belongs to it
             except OSError:
                 pass
-    os.chmod(tmp, stat.S_IMODE(old.st_mode))  # after chown, which clears set-id bits
+    os.fchmod(fd, stat.S_IMODE(old.st_mode))  # after chown, which clears set-id bits
+
+
+def _unnamed(folder: str) -> Optional[int]:
+    """An unnamed temporary file in ``folder`` (Linux O_TMPFILE, linked into place
+    through /proc only when whole), or None where the system or the file system
+    has none: then a named one is used."""
+    flag = getattr(os, "O_TMPFILE", None)
+    if flag is None or not os.path.isdir("/proc/self/fd"):
+        return None
+    try:
+        return os.open(folder, flag | os.O_WRONLY, 0o600)
+    except OSError:
+        return None
+
+
+def _link_into_place(fd: int, target: str) -> None:
+    """Give the unnamed file ``fd`` a fresh name next to ``target`` and rename it over
+    ``target``: a kill can leave a temporary file only between these two steps."""
+    proc = os.open("/proc", os.O_RDONLY)
+    try:
+        for _attempt in range(100):
+            tmp = _temp_name(target)
+            try:  # linkat(AT_SYMLINK_FOLLOW) of /proc/self/fd/N: Python calls linkat only with a directory fd
+                os.link("self/fd/%d" % fd, tmp, src_dir_fd=proc, follow_symlinks=True)
+                break
+            except FileExistsError:
+                continue
+        else:
+            raise FileExistsError(errno.EEXIST, "no free name for the temporary file", target)
+    finally:
+        os.close(proc)
+    try:
+        os.replace(tmp, target)
+    except BaseException:
+        _remove(tmp)
+        raise
 
 
 def _remove(path: str) -> None:
@@ -166,6 +209,31 @@ def _sync_folder(folder: str) -> None:
         os.close(fd)
 
 
+def _write_named(target: str, chunks: Iterable[str], encoder: codecs.IncrementalEncoder,
+                 old: Optional[os.stat_result]) -> None:
+    """The text through a named temporary file next to ``target``, renamed over it."""
+    tmp = None
+    try:
+        for _attempt in range(100):
+            tmp = _temp_name(target)  # known before the file exists: any exception from here on removes it
+            try:
+                fd = _create(tmp)
+                break
+            except FileExistsError:
+                tmp = None  # another file's name: not ours to remove
+        else:
+            raise FileExistsError(errno.EEXIST, "no free name for the temporary file", target)
+        try:
+            _fill(fd, chunks, encoder, old)
+        finally:
+            os.close(fd)
+        os.replace(tmp, target)
+    except BaseException:
+        if tmp is not None:
+            _remove(tmp)
+        raise
+
+
 def write_atomically(filename: str, text: str, encoding: str = "utf-8", errors: str = "strict") -> None:
     """Write ``text`` to the file ``filename`` means (see the module): the old
     file or the whole new one, nothing else touched, no temporary file left.
@@ -183,21 +251,13 @@ def write_chunks_atomically(filename: str, chunks: Iterable[str], encoding: str 
     temporary file and propagates unchanged."""
     target, old = _resolve(filename)
     encoder = codecs.getincrementalencoder(encoding)(errors)
-    tmp = None
-    try:
-        for _attempt in range(100):
-            tmp = _temp_name(target)  # known before the file exists: any exception from here on removes it
-            try:
-                fd = _create(tmp)
-                break
-            except FileExistsError:
-                tmp = None  # another file's name: not ours to remove
-        else:
-            raise FileExistsError(errno.EEXIST, "no free name for the temporary file", target)
-        _fill(fd, tmp, chunks, encoder, old)
-        os.replace(tmp, target)
-    except BaseException:
-        if tmp is not None:
-            _remove(tmp)
-        raise
+    fd = _unnamed(os.path.dirname(target))
+    if fd is not None:
+        try:
+            _fill(fd, chunks, encoder, old)
+            _link_into_place(fd, target)
+        finally:
+            os.close(fd)
+    else:
+        _write_named(target, chunks, encoder, old)
     _sync_folder(os.path.dirname(target))

@@ -44,8 +44,9 @@ def spindle_lines(writer: Writer, spindle: Spindle) -> List[str]:
     if spindle.css:
         alone, words = writer.surface_speed(spindle.speed, spindle.limit)
         return alone + [" ".join(words + [m_code])]
-    words = ["S" + writer.speed_text(spindle.speed), m_code]
-    return [" ".join((["G97"] if writer.target.machine == LATHE else []) + words)]
+    if writer.target.machine == LATHE:
+        return [" ".join(writer.rpm_words(spindle.speed) + [m_code])]
+    return [" ".join([writer.speed_word(spindle.speed), m_code])]
 
 
 class ProgramBuilder:

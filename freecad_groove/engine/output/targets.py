@@ -30,7 +30,7 @@ from .syntax import (
     Target,
 )
 
-__all__ = ["LATHE_TARGETS", "MILL_TARGETS", "TARGETS", "program_target", "target_named"]
+__all__ = ["LATHE_TARGETS", "MILL_TARGETS", "TARGETS", "program_target", "target_named", "with_g07_meaning"]
 
 # LinuxCNC in lathe use: G18, X words diameters (G7), absolute, incremental arc centres (G91.1), no nose
 # radius compensation; G4 P seconds; M2; its M6 stops the spindle.
@@ -161,6 +161,15 @@ def program_target(name: str, mill: bool) -> Target:
     raise ValueError("%s is a %s target: a %s program (%s) cannot be written for it (targets for it: %s)" % (
         name, "mill" if target.mill else "lathe", "mill-style" if mill else "lathe",
         "X/Y/Z" if mill else "X/Z", ", ".join(takes)))
+
+
+def with_g07_meaning(target: Target, g07_is_diameter: bool) -> Target:
+    """The target with the machine's G07/G08 meaning: on an Allen-Bradley 9/Series
+    G07 may select radius mode and G08 diameter mode (a setting of the machine,
+    Settings.ab_g07_is_diameter, the posts' --g07-radius)."""
+    if target.x_mode_codes != ("G07", "G08") or g07_is_diameter:
+        return target
+    return replace(target, x_mode_codes=("G08", "G07"))
 
 
 _TWINS = frozenset(t.mill_twin for t in TARGETS.values() if t.mill_twin)

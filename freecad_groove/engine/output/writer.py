@@ -42,56 +42,21 @@ Choices (the manuals leave them open):
 """
 
 import math
-import re
-from typing import Iterable, List, Optional, Sequence, Union
+from typing import Iterable, List, Optional, Union
 
 from ..errors import ProgramError
-from ..moves import ARC_CCW, ARCS, DRESS, DWELL, FEED, RAPID, MachineState, Move
-from ..numbers import ARC_IJK_TOLERANCE, MAX_DWELL_SECONDS, MAX_WORD, MM_PER_INCH, format_decimal
-from .syntax import (
-    ARC_CR,
-    C_FEED_COMPOSITE,
-    CSS_D_WORD,
-    CSS_G50_ALONE,
-    CSS_LIMS,
-    SEMICOLON,
-    TOOL_EDGE,
-    TOOL_M6,
-    Target,
-)
+from ..moves import ARCS, DRESS, DWELL, FEED, RAPID, MachineState, Move
+from ..numbers import ARC_IJK_TOLERANCE, MAX_WORD, MM_PER_INCH, format_decimal
+from .arcs import centre_of, signed_radius
+from .machine_words import MachineWords
+from .syntax import ARC_CR, C_FEED_COMPOSITE, Target
 from .targets import TARGETS, target_named
+from .words import MAX_COMMENT, MAX_LINE, comment_text, format_number
 
 __all__ = ["MAX_COMMENT", "MAX_LINE", "Writer", "comment_text", "format_number"]
 
-MAX_COMMENT = 140
-MAX_LINE = 250  # LinuxCNC refuses blocks longer than 252 characters ("Command too long")
-DWELL_DIGITS = 3  # decimals of a dwell in seconds
 
-
-def format_number(value: float, digits: int) -> str:
-    """``value`` with at most ``digits`` decimals, a decimal point always, no ``-0``;
-    ProgramError for magnitudes of MAX_WORD and above and NaN."""
-    if not -MAX_WORD < value < MAX_WORD:  # also refuses NaN
-        raise ProgramError("value %r cannot be written (not a number below %g in magnitude)" % (value, MAX_WORD))
-    return format_decimal(value, digits)
-
-
-_ACTIVE_COMMENT = re.compile(r"(?i)\s*(?:[a-z_]+\s*,|logclose|logopen|logappend|probeopen|probeclose|py\b|abort\b)")
-_NOT_PRINTABLE = re.compile(r"[^\x20-\x7e]")
-
-
-def comment_text(text: str, limit: int = MAX_COMMENT) -> str:
-    """The text of a comment made safe (see the module notes), cut to ``limit``
-    characters (ending in ``...``)."""
-    text = _NOT_PRINTABLE.sub("?", text.replace("(", "").replace(")", "")).strip()
-    if _ACTIVE_COMMENT.match(text):
-        text = "- " + text
-    if len(text) > limit:
-        text = text[: max(0, limit - 3)] + "..."
-    return text
-
-
-class Writer:
+class Writer(MachineWords):
     """Writes moves and machine functions for one target, remembering what is
     modal in the output.
 
@@ -196,172 +161,6 @@ class Writer:
         if code is None:
             raise ProgramError("move kind %r cannot be written" % (kind,))
         return code
-
-    def m_code(self, number: int) -> str:
-        """``M3`` or ``M03``: an M code the target's way."""
-        return self.target.m_code % number
-
-    def units_code(self, metric: Optional[bool] = None) -> str:
-        """The code of metric or inch lengths (default: the writer's units)."""
-        return self.target.units_codes[0 if (self.metric if metric is None else metric) else 1]
-
-    def feed_mode_code(self, feed_per_rev: bool) -> str:
-        """The code of feed per minute or per revolution."""
-        return self.target.feed_mode_codes[1 if feed_per_rev else 0]
-
-    def set_feed_mode(self, feed_per_rev: bool) -> str:
-        """The feed-mode code a block writes; the F in force is forgotten, since
-        LinuxCNC sets F to 0 on every G93/G94/G95, even the active one (a block
-        that keeps feeding writes F again)."""
-        self.feed_per_rev = bool(feed_per_rev)
-        self.f_text = None
-        return self.feed_mode_code(feed_per_rev)
-
-    def x_mode_code(self, diameter: Optional[bool] = None) -> str:
-        """The code of X as a diameter or a radius ("" when it is a machine parameter)."""
-        return self.target.x_mode_codes[0 if (self.x_diameter if diameter is None else diameter) else 1]
-
-    # -- lines ------------------------------------------------------------------
-
-    def comment(self, text: str, limit: int = MAX_COMMENT) -> str:
-        """A comment line (or a block's trailing comment) the target's way."""
-        body = comment_text(text, limit)
-        return "; " + body if self.target.comments == SEMICOLON else "(" + body + ")"
-
-    def dwell(self, seconds: float) -> str:
-        """The dwell block for ``seconds``."""
-        target = self.target
-        if target.dwell_refusal:
-            raise ProgramError(target.dwell_refusal)
-        if not 0 <= seconds <= MAX_DWELL_SECONDS:
-            raise ProgramError("dwell of %r s cannot be written (0 to %g s)" % (seconds, MAX_DWELL_SECONDS))
-        if target.dwell_milliseconds:
-            return "%s %s%d" % (target.dwell_code, target.dwell_word, int(round(seconds * 1000.0)))
-        return "%s %s%s" % (target.dwell_code, target.dwell_word, format_number(seconds, DWELL_DIGITS))
-
-    def line(self, words: Sequence[str], number: Optional[int] = None, notes: Sequence[str] = (),
-             prefix: str = "") -> str:
-        """One block: ``N..``, the words and a comment holding ``notes`` (joined
-        with `` ; ``), the comment cut to keep the block within MAX_LINE;
-        ProgramError when the block is longer even so, or N beyond the target's."""
-        limit = self.target.max_block_number
-        if number is not None and limit is not None and number > limit:
-            raise ProgramError("N%d: a %s block number has at most %d digits" % (number, self.target.name,
-                                                                                len(str(limit))))
-        parts = ([] if number is None else ["N%d" % number]) + list(words)
-        text = " ".join(parts)
-        if notes:
-            room = MAX_LINE - len(prefix) - len(text) - 3
-            text = (text + " " if text else "") + self.comment(" ; ".join(notes), room)
-        if len(prefix) + len(text) > MAX_LINE:
-            raise ProgramError("the translated block is longer than %d characters (LinuxCNC's limit)" % MAX_LINE)
-        return prefix + text
-
-    def header(self, title: Optional[str] = None, program_number: Optional[int] = None,
-               notes: Sequence[str] = ()) -> List[str]:
-        """The lines that open a program: the frame (``%``, the O number), the
-        title and ``notes`` as comments, the target's setup lines (units,
-        feed mode when known, X mode)."""
-        target = self.target
-        out = ["%"] if target.percent_start else []
-        titles = [title] if title else []
-        if target.program_number and program_number is not None:
-            number = target.program_number % int(program_number)
-            if titles and target.title_on_number_line:
-                number += " " + self.comment(titles.pop())
-            out.append(number)
-        out += [self.comment(text) for text in titles + list(notes)]
-        modes = {"units": self.units_code(),
-                 "feed_mode": "" if self.feed_per_rev is None else self.feed_mode_code(self.feed_per_rev),
-                 "x_mode": self.x_mode_code()}
-        out += [" ".join(template.format(**modes).split()) for template in target.setup]
-        return out
-
-    def footer(self) -> List[str]:
-        """The lines that end a program."""
-        return [self.target.end_code] + (["%"] if self.target.percent_end else [])
-
-    # -- machine functions ---------------------------------------------------------
-
-    def tool_change(self, tool: Optional[int], offset: Optional[int] = None, own: bool = True,
-                    in_place: Optional[int] = None) -> List[str]:
-        """The words of a tool change to ``tool`` (None: the tool in place,
-        ``in_place`` when known, only its offset changes) with length offset
-        ``offset`` (``own``: the tool's own entry; 0: cancelled; None: not said)."""
-        target = self.target
-        if target.tool_form == TOOL_EDGE:
-            if offset and not own:
-                raise ProgramError("T%s with the offset of tool %d: a Siemens D number is a cutting edge of the "
-                                   "tool itself" % ("" if tool is None else tool, offset))
-            edge = "D%d" % (0 if offset == 0 else 1)
-            return [edge] if tool is None else self._checked_tool(tool, "T%d" % tool) + [edge]
-        if target.tool_form == TOOL_M6:
-            words = [] if tool is None else self._checked_tool(tool, target.tool_number % tool) + [self.m_code(6)]
-            if offset is not None and target.tool_length_offset:
-                words += ["G49"] if offset == 0 else ["G43"] if own else ["G43", "H%d" % offset]
-            return words
-        tool = in_place if tool is None else tool
-        if tool is None:
-            raise ProgramError("D%s: no tool selected before (the %s tool word holds the tool and its offset)"
-                               % (offset, target.maker))
-        offset = tool if offset is None else offset
-        if tool > 99 or offset > 99:
-            raise ProgramError("T%d offset %d does not fit Fanuc's T<2 digits><2 digits>" % (tool, offset))
-        return ["T%02d%02d" % (tool, offset)]
-
-    def length_offset(self, register: Optional[int]) -> List[str]:
-        """The words of a tool length offset: ``G43 H<register>``, ``G49`` for None."""
-        return ["G49"] if register is None else ["G43", "H%d" % register]
-
-    def _checked_tool(self, tool: int, word: str) -> List[str]:
-        if not 0 <= tool <= self.target.max_tool:
-            raise ProgramError("tool number %d cannot be written for %s (0 to %d)"
-                               % (tool, self.target.name, self.target.max_tool))
-        return [word]
-
-    def speed_text(self, value: float) -> str:
-        """The text of an S word (rpm or surface speed); ProgramError where the
-        target takes whole numbers only, or where it would read as 0."""
-        if not 0 <= value < MAX_WORD:
-            raise ProgramError("spindle speed %r cannot be written" % (value,))
-        if value == int(value):
-            return "%d" % value
-        if self.target.whole_speed:
-            raise ProgramError("S%s: %s S words are whole numbers (rpm, or the surface speed)"
-                               % (format_decimal(value, 6, False), self.target.maker))
-        text = format_number(value, 4)
-        if float(text) == 0:
-            raise ProgramError("S%s rounds to 0 in the output (4 decimals): the spindle would not turn"
-                               % format_decimal(value, 10, False))
-        return text
-
-    def limit_words(self, limit: float) -> Optional[tuple]:
-        """(lines standing alone before, words) that set the spindle limit
-        ``limit`` on its own; None where the limit is a word of G96 (LinuxCNC's D)."""
-        target = self.target
-        text = self.speed_text(limit)
-        if target.css_form == CSS_G50_ALONE:
-            return ["G50 S" + text], []
-        if target.css_form == CSS_LIMS:
-            return [], ["LIMS=" + text]
-        return ([], []) if target.css_refusal else None
-
-    def surface_speed(self, speed: float, limit: Optional[float], limit_changed: bool = True) -> tuple:
-        """(lines standing alone before, words) of constant surface speed
-        ``speed`` with the spindle limited to ``limit`` rpm (None: not known):
-        the limit with G96 where the target needs it there (LinuxCNC's D),
-        else where it changed (``limit_changed``)."""
-        target = self.target
-        if target.css_refusal:
-            raise ProgramError(target.css_refusal)
-        s_word = "S" + self.speed_text(speed)
-        limit_text = None if limit is None else self.speed_text(limit)
-        if target.css_form == CSS_D_WORD:
-            return [], ["G96"] + ([] if limit_text is None else ["D" + limit_text]) + [s_word]
-        said = limit_text is not None and limit_changed
-        if target.css_form == CSS_G50_ALONE:
-            return (["G50 S" + limit_text] if said else []), ["G96", s_word]
-        return [], ["G96", s_word] + (["LIMS=" + limit_text] if said else [])
 
     # -- moves --------------------------------------------------------------------
 
@@ -468,9 +267,9 @@ class Writer:
         if move.radius is not None and target.arc_radius_word:
             return [target.arc_radius_word + format_number(move.radius, self.digits)]
         mill = target.mill
-        centre = move.centre if move.centre is not None else _centre_of(move, start, end, mill)
+        centre = move.centre if move.centre is not None else centre_of(move, start, end, mill)
         if target.arc_form == ARC_CR:
-            return [target.arc_radius_word + format_number(_signed_radius(move, start, end, centre, mill),
+            return [target.arc_radius_word + format_number(signed_radius(move, start, end, centre, mill),
                                                            self.digits)]
         offsets = (format_number(centre[0] - start[0], self.digits), format_number(centre[1] - start[1], self.digits))
         written = (start[0] + float(offsets[0]), start[1] + float(offsets[1]))
@@ -618,32 +417,3 @@ class Writer:
         return call
 
 
-def _view(point: tuple, mill: bool) -> tuple:
-    """A point of the arc's plane as (horizontal, vertical) seen from the plane's
-    normal, where G3 turns counter-clockwise: G18 (z, x) from +Y, G17 (x, y) from +Z."""
-    return point if mill else (point[1], point[0])
-
-
-def _centre_of(move: Move, start: tuple, end: tuple, mill: bool) -> tuple:
-    """The centre (the plane's coordinates) of an arc given by its radius
-    (negative: more than 180 degrees): left of the chord for G3 with a
-    positive radius, right for G2."""
-    radius = move.radius
-    (h0, v0), (h1, v1) = _view(start, mill), _view(end, mill)
-    half = math.hypot(h1 - h0, v1 - v0) / 2.0
-    if half == 0 or half - abs(radius) > 1e-9 * max(1.0, abs(radius)):
-        raise ProgramError("%s R%s: the radius does not reach the end point" % (move.kind, radius))
-    height = math.sqrt(max(radius * radius - half * half, 0.0))
-    side = height if (move.kind == ARC_CCW) == (radius > 0) else -height
-    left = (-(v1 - v0) / (2 * half), (h1 - h0) / (2 * half))
-    centre = ((h0 + h1) / 2.0 + side * left[0], (v0 + v1) / 2.0 + side * left[1])
-    return _view(centre, mill)
-
-
-def _signed_radius(move: Move, start: tuple, end: tuple, centre: tuple, mill: bool) -> float:
-    """Siemens CR= of an arc: its radius, negative above 180 degrees."""
-    (h0, v0), (h1, v1), (hc, vc) = _view(start, mill), _view(end, mill), _view(centre, mill)
-    ccw = (math.atan2(v1 - vc, h1 - hc) - math.atan2(v0 - vc, h0 - hc)) % (2 * math.pi)
-    sweep = ccw if move.kind == ARC_CCW else 2 * math.pi - ccw
-    radius = math.hypot(h0 - hc, v0 - vc)
-    return radius if sweep <= math.pi + 1e-12 else -radius

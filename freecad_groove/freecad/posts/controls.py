@@ -10,11 +10,10 @@ A post stub ``postprocessors/<name>_lathe_post.py`` names its target
 
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import TYPE_CHECKING, Dict, Optional
 
 from ...engine.output.syntax import Target
-from ...engine.output.targets import LATHE_TARGETS, TARGETS
+from ...engine.output.targets import LATHE_TARGETS, TARGETS, with_g07_meaning
 from ...engine.registry import cycle_for
 
 if TYPE_CHECKING:
@@ -152,9 +151,7 @@ class Control:
     def program_target(self, options: Options) -> Target:
         """The target the program is written for with ``options``: the Allen-Bradley
         G07/G08 swapped with --g07-radius."""
-        if self.g07_radius_option and not options.g07_is_diameter:
-            return replace(self.target, x_mode_codes=tuple(reversed(self.target.x_mode_codes)))
-        return self.target
+        return with_g07_meaning(self.target, options.g07_is_diameter)
 
 
 CONTROLS: Dict[str, Control] = {name: Control(name, TARGETS[target]) for name, target in LATHE_POSTS.items()}

@@ -1,7 +1,7 @@
 """A Cylinder slot op (cylinder_slot_op.py) in a program: its X/Z/C moves, or
 on a control with ``native_slot`` (GSK) its G7.1 region: with
 ``--native-cycles`` the Type II region as the op built it (engine/cycles/
-gsk_g71.py ``GskG71.emit``); expanded, every pass written out: G1 X in, the
+gsk_g7_1.py ``GskG7_1.emit``); expanded, every pass written out: G1 X in, the
 path as a Type I region (cylindrical interpolation at that X), G0 X out, G0 Z
 C back. GSK programs feed C only inside a G7.1 region (the GSK reader's rule:
 the manual documents no G1 with C outside it), so its expanded form keeps
@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from ...engine.cycles.gsk_g71 import GskG71
+from ...engine.cycles.gsk_g7_1 import GskG7_1
 from ...engine.moves import FEED, RAPID, Move
 from . import live_tool
 from .controls import CONTROLS
@@ -74,7 +74,7 @@ class SlotOutput:
         self._moves([Move(RAPID, plan.safe_radius, start.z)])
         live_tool.switch_off(program, self.label)
 
-    def _region(self, region: GskG71, end: tuple) -> None:
+    def _region(self, region: GskG7_1, end: tuple) -> None:
         """The region's blocks; the output then knows it stands at ``end`` (x, z, c) with no motion in force."""
         writer = self.program.writer
         self.program.add(region.emit().split("\n"))
@@ -86,7 +86,7 @@ class SlotOutput:
     def _type_i_passes(self, plan: object) -> None:
         """Each pass of the Type II region written out, its path a Type I region."""
         region, start = plan.region, plan.start
-        path = GskG71(C=region.C, path=region.path, code=region.code)
+        path = GskG7_1(C=region.C, path=region.path, code=region.code)
         end = plan.moves[-3]  # the last pass's last path move (then E and G rapids)
         infeed = start.feed
         for radius in region.pass_radii(start):

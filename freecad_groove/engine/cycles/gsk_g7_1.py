@@ -1,6 +1,6 @@
 """GSK 980TDi ``G7.1``: cylindrical interpolation (Type I) and its roughing cycle (Type II).
 
-A *region*, not one block (seed 002, notes/other-cycles.md)::
+A *region*, not one block (the GSK 980TDi manual, chapter 3; notes/other-cycles.md)::
 
     G7.1 C(c) [J(di) R(dd) K(du) L(d)]   start: c = the cylinder's radius
     G1 Z.. C.. F..                        the path on the developed surface:
@@ -48,13 +48,15 @@ import re
 from dataclasses import dataclass
 from typing import ClassVar, Dict, List, NamedTuple, Optional, Tuple
 
+from ..cycle import Cycle
 from ..errors import CycleError
 from ..moves import FEED, RAPID, MachineState, Move
 from ..numbers import ARC_CHORD_TOLERANCE, ARC_R_TOLERANCE, MAX_MOVES, MM_PER_INCH, format_decimal
+from ..region_blocks import RegionBlocks
 from ..registry import G_WORD, register
 from ..settings import DEFAULT_SETTINGS, Settings
 
-__all__ = ["GskG71", "PathBlock", "SPELLINGS"]
+__all__ = ["GskG7_1", "PathBlock", "SPELLINGS"]
 
 NAME = "G7.1"
 SPELLINGS = ("G7.1", "G07.1", "G107")
@@ -191,7 +193,7 @@ def read_start_block(text: str) -> Tuple[str, Dict[str, float]]:
         raise _fail("G", code, "a G7.1 region starts with G7.1 (G07.1, G107) C(radius)")
     values: Dict[str, float] = {}
     for letter, number in words:
-        if letter not in GskG71.WORDS:
+        if letter not in GskG7_1.WORDS:
             raise _fail(letter, float(number), "only C, J, R, K, L may share the %s block" % code)
         if letter == "L":
             if "." in number or number.startswith("-"):
@@ -284,7 +286,7 @@ def path_segments(radius: float, start: Tuple[float, float], blocks: Tuple[PathB
 
 @register
 @dataclass(frozen=True)
-class GskG71:
+class GskG7_1(Cycle):
     """GSK ``G7.1 C(c) [J R K L]`` ... path ... ``G7.1 C0``: cylindrical interpolation
     (Type I) and its roughing cycle (Type II); see the module notes."""
 
@@ -294,7 +296,7 @@ class GskG71:
     CONTROLS: ClassVar[tuple] = ("gsk",)
     TITLE: ClassVar[str] = "GSK G7.1 cylindrical interpolation and its roughing cycle (a region up to G7.1 C0)"
     FORM: ClassVar[str] = G_WORD
-    REGION: ClassVar[bool] = True  # the blocks up to the cancel block belong to the call
+    BLOCKS: ClassVar[type] = RegionBlocks  # the blocks up to the cancel block belong to the call
     WORDS: ClassVar[tuple] = ("C", "J", "R", "K", "L")
     TYPE_II: ClassVar[tuple] = ("J", "R", "K", "L")
     WORD_HELP: ClassVar[tuple] = (
@@ -319,7 +321,7 @@ class GskG71:
 
     # -- validation -------------------------------------------------------------------
 
-    def validate(self, settings: Settings = DEFAULT_SETTINGS) -> "GskG71":
+    def validate(self, settings: Settings = DEFAULT_SETTINGS) -> "GskG7_1":
         """CycleError on the first rule the region breaks; returns self."""
         if self.code not in SPELLINGS:
             raise _fail("G", self.code, "must be one of %s" % ", ".join(SPELLINGS))
@@ -457,7 +459,7 @@ class GskG71:
         return read_path_block(text, context).motion
 
     @classmethod
-    def parse(cls, text: str) -> "GskG71":
+    def parse(cls, text: str) -> "GskG7_1":
         """A whole region: blocks on lines or separated by ``;``."""
         blocks = [block for block in text.replace(";", "\n").split("\n") if block.strip()]
         if not blocks:

@@ -1,6 +1,6 @@
 """GSK G7.1 benchmark: prints figures, asserts nothing.
 
-    python3 benchmarks/bench_gsk_g71.py
+    python3 benchmarks/bench_gsk_g7_1.py
 
 A Type II region on an R20 cylinder whose path is a barrel-cam track of N
 arcs (R10, a quarter circle each on the developed surface, 56 segments
@@ -16,12 +16,12 @@ import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
-from freecad_groove.engine.cycles.gsk_g71 import GskG71  # noqa: E402
+from freecad_groove.engine.cycles.gsk_g7_1 import GskG7_1  # noqa: E402
 from freecad_groove.engine.moves import MachineState  # noqa: E402
 from freecad_groove.engine.output.program import write_moves  # noqa: E402
 
 
-def region(arcs: int, passes: int) -> GskG71:
+def region(arcs: int, passes: int) -> GskG7_1:
     to_s = 20.0 * math.pi / 180.0
     lines = ["G7.1 C20. J-4. R2. K0.2 L%d" % passes]
     z = s = 0.0
@@ -30,7 +30,7 @@ def region(arcs: int, passes: int) -> GskG71:
         s += 10.0
         lines.append("%s Z%.4f C%.4f R10.%s" % ("G2" if k % 2 else "G3", z, s / to_s, " F100." if k == 0 else ""))
     lines.append("G7.1 C0")
-    return GskG71.parse("\n".join(lines))
+    return GskG7_1.parse("\n".join(lines))
 
 
 def main() -> None:

@@ -1,6 +1,6 @@
 """GSK G7.1: cylindrical interpolation (Type I) and its roughing cycle (Type II).
 
-Move lists are derived by hand from the module notes of cycles/gsk_g71.py: an
+Move lists are derived by hand from the module notes of cycles/gsk_g7_1.py: an
 L-shaped slot on an R20 cylinder (C20.): from Z0 C0, G1 Z-10. (10 mm along the
 axis), then G1 C90. (a quarter turn: 20*pi/2 = 31.4159 mm on the developed
 surface). F100 along the developed path: the Z move writes F100, the C move
@@ -17,7 +17,7 @@ from pecking_helpers import F, R, raises
 from rs274 import require_rs274, run_rs274
 from test_cli import run_inline
 
-from freecad_groove.engine.cycles.gsk_g71 import GskG71, PathBlock, arc_points
+from freecad_groove.engine.cycles.gsk_g7_1 import GskG7_1, PathBlock, arc_points
 from freecad_groove.engine.errors import ProgramError
 from freecad_groove.engine.moves import MachineState
 from freecad_groove.engine.numbers import ARC_CHORD_TOLERANCE, format_decimal
@@ -39,12 +39,12 @@ def moves_of(moves):
 
 
 def region(start, path=L_SLOT, cancel="G7.1 C0"):
-    return GskG71.parse("\n".join([start, path, cancel]))
+    return GskG7_1.parse("\n".join([start, path, cancel]))
 
 
 def test_type_i_runs_the_path_once_at_the_start_x():
     m = region("G7.1 C20.")
-    assert m == GskG71(C=20.0, path=(PathBlock("G1", z=-10.0, f=100.0), PathBlock("G1", c=90.0)))
+    assert m == GskG7_1(C=20.0, path=(PathBlock("G1", z=-10.0, f=100.0), PathBlock("G1", c=90.0)))
     assert moves_of(m.expand(state(18.0))) == [
         (F, 18.0, -10.0, 100.0, 0.0),
         (F, 18.0, -10.0, round(C_FEED, 6), 90.0),
@@ -136,7 +136,7 @@ def test_arc_points_g3_goes_the_other_way():
     ("G7.1 C20.\nG1 Z-1.\nG7.1 C0 J1.", ["J: the cancel block G7.1 C0 holds nothing else"]),
 ])
 def test_each_validation_rule_has_its_message(text, fragments):
-    raises(lambda: GskG71.parse(text), "G7.1 ", *fragments)
+    raises(lambda: GskG7_1.parse(text), "G7.1 ", *fragments)
 
 
 @pytest.mark.parametrize("path, start, fragments", [
@@ -157,10 +157,10 @@ def test_type_ii_start_inside_the_cycle_start_x_is_refused():
 
 
 def test_spellings_and_modal_motion_are_read():
-    m = GskG71.parse("N10 G07.1 C20.;G1 Z-1. F80.;C10.;G3 Z-2. C12. R3.;G07.1 C0;")
+    m = GskG7_1.parse("N10 G07.1 C20.;G1 Z-1. F80.;C10.;G3 Z-2. C12. R3.;G07.1 C0;")
     assert m.code == "G07.1"
     assert [b.motion for b in m.path] == ["G1", "G1", "G3"]
-    assert GskG71.parse(m.emit()) == m
+    assert GskG7_1.parse(m.emit()) == m
 
 
 _number = st.integers(-999999, 999999).map(lambda n: n / 1000.0)
@@ -184,8 +184,8 @@ _blocks = st.lists(
 def test_parse_emit_roundtrip(radius, path, type_ii, code, passes):
     words = dict(J=-radius, R=1.5, K=radius / 2.0 if radius / 2.0 == round(radius / 2.0, 4) else 0.0,
                  L=passes) if type_ii else {}
-    m = GskG71(C=radius, path=tuple(path), code=code, **words).validate()
-    assert GskG71.parse(m.emit()) == m
+    m = GskG7_1(C=radius, path=tuple(path), code=code, **words).validate()
+    assert GskG7_1.parse(m.emit()) == m
 
 
 # ---------------------------------------------------------------- output with C
@@ -252,7 +252,7 @@ M30
 def test_a_gsk_program_is_translated_for_linuxcnc_c_and_rs274_runs_it():
     text = translate_program(GSK_PROGRAM, "gsk", target="linuxcnc-c", source_name="slot")
     assert "G0 X50. Z5. C0.\nZ0.\n(G07.1 C20. J-4. R2. K0.4 L2 ... G07.1 C0, 2 path blocks)\nX42.\n" in text
-    moves = GskG71.parse("G7.1 C20. J-4. R2. K0.4 L2\nG1 Z-10. F100.\nC90.\nG7.1 C0").expand(state(25.0))
+    moves = GskG7_1.parse("G7.1 C20. J-4. R2. K0.4 L2\nG1 Z-10. F100.\nC90.\nG7.1 C0").expand(state(25.0))
     require_rs274()
     canon = run_rs274(text, rotary=True)
     assert [(c[0], round(c[1], 4), round(c[2], 4), round(c[5], 4)) for c in canon[2:-1]] == [
@@ -324,7 +324,7 @@ def test_rs274_runs_every_region_move_for_move(blocks, type_ii):
         "42." if type_ii else "38.", start, path[0], "\n".join(path[1:]))
     text = translate_program(program, "gsk", target="linuxcnc-c")
     region_text = "\n".join([start, path[0] + " F200."] + path[1:] + ["G7.1 C0"])
-    moves = GskG71.parse(region_text).expand(state(21.0 if type_ii else 19.0, feed=None))
+    moves = GskG7_1.parse(region_text).expand(state(21.0 if type_ii else 19.0, feed=None))
     canon = run_rs274(text, rotary=True)[1:]
     assert [move[0] for move in canon] == [mv.kind for mv in moves]
     for (_, x, zz, _, _, cc), mv in zip(canon, moves):  # rs274 prints 4 decimals of the written 4
