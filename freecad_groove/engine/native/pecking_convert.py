@@ -24,6 +24,7 @@ from ..cycles.cycle93 import DEFAULT_VRT_INCH, DEFAULT_VRT_MM, Cycle93
 from ..cycles.pecking import F_DECIMALS, PeckingLayout
 from ..errors import CycleError
 from ..moves import GroovingTool, MachineState, Move
+from ..numbers import format_decimal
 from ..output.syntax import Target
 from ..settings import Settings
 from .compare import difference, resolved
@@ -107,7 +108,7 @@ def _pecking_reason(source: Any, model: Any, layout: PeckingLayout, target: Targ
 
 
 def _number(value: float) -> str:
-    return ("%.4f" % value).rstrip("0").rstrip(".")
+    return format_decimal(value, 4, point=False)
 
 
 def to_pecking(source: Any, start: MachineState, settings: Settings, moves: List[Move], target: Target,
