@@ -1,19 +1,29 @@
 """Documents in FreeCAD (1.1 and 1.0; run by tests/freecad/run_suite.py):
-an op saved and opened again, one whose document lacks newer properties, and
-the demo document saved by the previous release (commit bfb45ff), whose ops
-name the class ``freecad_groove.freecad.groove_op.ObjectGroove``.
+an op saved and opened again, one whose document lacks newer properties, the
+demo document saved by the previous release (commit bfb45ff), whose ops name
+the class ``freecad_groove.freecad.groove_op.ObjectGroove``, and a Groove, a
+Cylinder slot and a Plunge grind saved by commit 3d18f68, before the ops
+moved into freecad_groove/ops/ (data/make_saved_documents.py), whose stored
+class paths the old modules keep as shims.
 """
 
+import json
 import os
+import re
+import zipfile
 
+import FreeCAD
 import pytest
 import test_groove_op as tg
 from documents import DATA, opened, path_commands, reopened
+from saved_programs import op_paths, programs
 
 from freecad_groove import make_groove
-from freecad_groove.freecad import groove_op
+from freecad_groove.freecad import groove_op, toolbit, wheel_toolbit
 from freecad_groove.freecad.api import snake_case
-from freecad_groove.freecad.groove_op import op_error
+from freecad_groove.freecad.cylinder_slot_op import ObjectCylinderSlot
+from freecad_groove.freecad.groove_op import ObjectGroove, op_error
+from freecad_groove.freecad.plunge_grind_op import ObjectPlungeGrind
 
 # The Groove op tests' document and shop fixtures, and their groove maker.
 doc, shop, groove = tg.doc, tg.shop, tg.groove
@@ -120,3 +130,82 @@ def test_the_previous_releases_demo_recomputes_to_what_a_new_op_makes(demo_at_bf
         # the same after each op's own label comment
         assert path_commands(again)[1:] == path_commands(op)[1:], op.Label
         assert len(again.Proxy.plan(again)) == len(op.Proxy.plan(op)), op.Label
+
+
+# ------------------------------------------------------------------ the ops as commit 3d18f68 saved them
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+OPS_AT_3D18F68 = os.path.join(DATA, "ops_saved_at_3d18f68.FCStd")
+# What 3d18f68 posted from it, opened and recomputed, in each FreeCAD (data/post_saved_documents.py).
+PROGRAMS_AT_3D18F68 = os.path.join(DATA, "ops_saved_at_3d18f68.programs.json")
+# op -> (the proxy's class path the document stores, the class it must open as now)
+STORED_OPS = {
+    "Groove": ("freecad_groove.freecad.groove_op.ObjectGroove", ObjectGroove),
+    "CylinderSlot": ("freecad_groove.freecad.cylinder_slot_op.ObjectCylinderSlot", ObjectCylinderSlot),
+    "PlungeGrind": ("freecad_groove.freecad.plunge_grind_op.ObjectPlungeGrind", ObjectPlungeGrind),
+}
+# tool controller -> (the class path its tool bit's proxy was saved with, its module, the class's name there):
+# FreeCAD 1.1's asset tool bits; 1.0 has no such class
+STORED_BITS = {"TC__Grooving_blade": ("freecad_groove.freecad.toolbit.ToolBitGrooving", toolbit, "ToolBitGrooving"),
+               "TC__Grinding_wheel": ("freecad_groove.freecad.wheel_toolbit.ToolBitGrindingWheel", wheel_toolbit,
+                                      "ToolBitGrindingWheel")}
+
+
+def stored_classes(path, member="Document.xml"):
+    """{object name: "module.Class"} of the Python proxies a saved document's ``member`` stores."""
+    with zipfile.ZipFile(path) as saved:
+        xml = saved.read(member).decode()
+    found = {}
+    for name, body in re.findall(r'<Object name="([^"]+)"[^>]*>(.*?)</Object>', xml, re.S):
+        proxy = re.search(r'<Python [^>]*module="([^"]+)" class="([^"]+)"', body)
+        if proxy:
+            found[name] = "%s.%s" % proxy.groups()
+    return found
+
+
+@pytest.fixture
+def ops_at_3d18f68():
+    with opened(OPS_AT_3D18F68) as doc:
+        yield doc
+
+
+def test_the_ops_saved_before_the_move_open_as_this_codes_classes(ops_at_3d18f68):
+    stored = stored_classes(OPS_AT_3D18F68)
+    for name, (path, cls) in STORED_OPS.items():
+        assert stored[name] == path
+        op = ops_at_3d18f68.getObject(name)
+        assert type(op.Proxy) is cls, name
+        assert op.Path.Commands, name
+    for tc_name, (path, module, cls) in STORED_BITS.items():
+        bit = ops_at_3d18f68.getObject(tc_name).Tool
+        assert stored[bit.Name] == path
+        if module.NEW_TOOLBITS:
+            assert type(bit.Proxy) is getattr(module, cls), tc_name
+        else:  # FreeCAD 1.0 has no asset tool bits: the bit comes back without a proxy, its sizes kept
+            assert getattr(bit, "Proxy", None) is None
+        assert bit.Width.Value > 0
+
+
+def _recomputed_and_recorded(doc):
+    """The document's ops recomputed by this code; what 3d18f68 recorded in this FreeCAD after doing the same."""
+    for name in STORED_OPS:
+        doc.getObject(name).touch()
+    doc.recompute()
+    with open(PROGRAMS_AT_3D18F68) as f:
+        return json.load(f)[".".join(FreeCAD.Version()[:2])]
+
+
+def test_the_ops_saved_before_the_move_recompute_to_the_paths_3d18f68_made(ops_at_3d18f68):
+    recorded = _recomputed_and_recorded(ops_at_3d18f68)["paths"]
+    now = op_paths(ops_at_3d18f68, STORED_OPS)
+    for name in STORED_OPS:
+        assert op_error(ops_at_3d18f68.getObject(name)) is None, name
+        assert now[name] == recorded[name], name
+
+
+def test_the_ops_saved_before_the_move_post_the_programs_3d18f68_posted(ops_at_3d18f68):
+    recorded = _recomputed_and_recorded(ops_at_3d18f68)["programs"]
+    posted = programs(ROOT, ops_at_3d18f68)
+    assert sorted(posted) == sorted(recorded)
+    for key, program in posted.items():
+        assert program == recorded[key], key
