@@ -9,21 +9,21 @@ class paths the old modules keep as shims.
 
 import json
 import os
-import re
-import zipfile
 
 import FreeCAD
 import pytest
 import test_groove_op as tg
-from documents import DATA, opened, path_commands, reopened
+from documents import DATA, opened, path_commands, reopened, stored_classes
 from saved_programs import op_paths, programs
 
 from freecad_groove import make_groove
-from freecad_groove.freecad import groove_op, toolbit, wheel_toolbit
-from freecad_groove.freecad.api import snake_case
-from freecad_groove.freecad.cylinder_slot_op import ObjectCylinderSlot
-from freecad_groove.freecad.groove_op import ObjectGroove, op_error
-from freecad_groove.freecad.plunge_grind_op import ObjectPlungeGrind
+from freecad_groove.freecad import toolbit, wheel_toolbit
+from freecad_groove.freecad.addon_op import op_error
+from freecad_groove.freecad.scripting import snake_case
+from freecad_groove.ops.grind.op import ObjectPlungeGrind
+from freecad_groove.ops.groove import properties
+from freecad_groove.ops.groove.op import ObjectGroove
+from freecad_groove.ops.slot.op import ObjectCylinderSlot
 
 # The Groove op tests' document and shop fixtures, and their groove maker.
 doc, shop, groove = tg.doc, tg.shop, tg.groove
@@ -31,12 +31,12 @@ doc, shop, groove = tg.doc, tg.shop, tg.groove
 # scripts/demo's document (freecad_groove/demo.py) as commit bfb45ff saved it from FreeCAD 1.1.
 DEMO_AT_BFB45FF = os.path.join(DATA, "demo_part_saved_at_bfb45ff.FCStd")
 DEMO_OPS = ["External grooves", "Face groove", "Bore groove", "Cone groove", "Cut-off"]
-SETTABLE = [name for name in groove_op.PROPERTY_NAMES if name not in groove_op.DERIVED] + ["Comment"]
+SETTABLE = [name for name in properties.PROPERTY_NAMES if name not in properties.DERIVED] + ["Comment"]
 
 
 def _values(op):
     values = {}
-    for name in groove_op.PROPERTY_NAMES:
+    for name in properties.PROPERTY_NAMES:
         value = getattr(op, name)
         values[name] = round(value.Value, 9) if hasattr(value, "Value") else value
     return values
@@ -51,7 +51,7 @@ def test_save_and_reopen(shop, tmp_path):
     with reopened(doc, tmp_path / "groove.FCStd") as doc2:
         op2 = doc2.getObject(name)
         assert op2 is not None
-        assert isinstance(op2.Proxy, groove_op.ObjectGroove)
+        assert isinstance(op2.Proxy, ObjectGroove)
         assert _values(op2) == values
         assert path_commands(op2) == commands
         assert op2.getEditorMode("AXFA") == ["ReadOnly"]
@@ -108,7 +108,7 @@ def test_the_previous_releases_demo_opens_with_its_ops(demo_at_bfb45ff):
     ops = _groove_ops(demo_at_bfb45ff)
     assert [op.Label for op in ops] == DEMO_OPS
     for op in ops:
-        assert isinstance(op.Proxy, groove_op.ObjectGroove)
+        assert isinstance(op.Proxy, ObjectGroove)
         assert op.Path.Commands, op.Label
         assert op.getEditorMode("AXFA") == ["ReadOnly"]  # opOnDocumentRestored ran
 
@@ -151,18 +151,6 @@ STORED_BITS = {"TC__Grooving_blade": ("freecad_groove.freecad.toolbit.ToolBitGro
                                       "ToolBitGrindingWheel")}
 
 
-def stored_classes(path, member="Document.xml"):
-    """{object name: "module.Class"} of the Python proxies a saved document's ``member`` stores."""
-    with zipfile.ZipFile(path) as saved:
-        xml = saved.read(member).decode()
-    found = {}
-    for name, body in re.findall(r'<Object name="([^"]+)"[^>]*>(.*?)</Object>', xml, re.S):
-        proxy = re.search(r'<Python [^>]*module="([^"]+)" class="([^"]+)"', body)
-        if proxy:
-            found[name] = "%s.%s" % proxy.groups()
-    return found
-
-
 @pytest.fixture
 def ops_at_3d18f68():
     with opened(OPS_AT_3D18F68) as doc:
@@ -193,6 +181,15 @@ def _recomputed_and_recorded(doc):
     doc.recompute()
     with open(PROGRAMS_AT_3D18F68) as f:
         return json.load(f)[".".join(FreeCAD.Version()[:2])]
+
+
+def test_the_ops_saved_before_the_move_are_saved_again_with_their_class_paths_now(ops_at_3d18f68, tmp_path):
+    again = tmp_path / "again.FCStd"
+    ops_at_3d18f68.saveAs(str(again))
+    stored = stored_classes(str(again))
+    for name, (_before, cls) in STORED_OPS.items():
+        assert stored[name] == "%s.%s" % (cls.__module__, cls.__name__)
+        assert stored[name].startswith("freecad_groove.ops.")
 
 
 def test_the_ops_saved_before_the_move_recompute_to_the_paths_3d18f68_made(ops_at_3d18f68):

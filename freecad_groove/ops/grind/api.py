@@ -1,10 +1,10 @@
-"""Scripting entry point: make_plunge_grind()."""
+"""Scripting entry point: make_plunge_grind() (freecad_groove.make_plunge_grind)."""
 
 import FreeCAD
 
-from . import plunge_grind_op
-from .api import _faces, nothing_left_behind, set_keyword_values, snake_case
-from .plunge_grind_properties import DERIVED, PROPERTY_NAMES
+from ...freecad.scripting import nothing_left_behind, picked_faces, set_keyword_values, snake_case
+from .op import Create
+from .properties import DERIVED, PROPERTY_NAMES
 
 SETTABLE = tuple(n for n in PROPERTY_NAMES if n not in DERIVED) + ("CoolantMode", "Comment")
 KEYWORDS = {snake_case(n): n for n in SETTABLE}
@@ -31,7 +31,7 @@ def make_plunge_grind(job, face, name="PlungeGrind", tool_controller=None, recom
     crossover). ``tool_controller``: default the job's first (a job without
     one gets "TC: Grinding wheel"). ``recompute``: recompute at the end (a
     grind that cannot be made then reports its error, see
-    plunge_grind_op.op_error, instead of raising).
+    op.op_error, instead of raising).
 
     Keywords (op properties in snake_case; lengths in mm or quantity strings,
     feeds as quantity strings such as "300 mm/min" or numbers in mm/s):
@@ -54,10 +54,7 @@ def make_plunge_grind(job, face, name="PlungeGrind", tool_controller=None, recom
     if unknown:
         raise TypeError("make_plunge_grind() got unknown keyword(s) %s; valid: %s"
                         % (", ".join(unknown), ", ".join(sorted(KEYWORDS))))
-    try:
-        faces = _faces(job, face)
-    except ValueError as e:  # api.py's checks name make_groove
-        raise ValueError(str(e).replace("make_groove()", "make_plunge_grind()", 1)) from None
+    faces = picked_faces("make_plunge_grind", job, face)
     if sum(len(subs) for _model, subs in faces) != 1:
         raise ValueError("make_plunge_grind(): face=%r: give one (part, \"FaceN\")" % (face,))
     doc = job.Document
@@ -65,7 +62,7 @@ def make_plunge_grind(job, face, name="PlungeGrind", tool_controller=None, recom
         FreeCAD.setActiveDocument(doc.Name)
     with nothing_left_behind(doc):
         tc = tool_controller or _tool_controller(job)
-        obj = plunge_grind_op.Create(name, parentJob=job, tool_controller=tc)
+        obj = Create(name, parentJob=job, tool_controller=tc)
         obj.ToolController = tc
         for model, subs in faces:
             for sub in subs:

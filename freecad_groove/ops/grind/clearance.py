@@ -1,6 +1,6 @@
 """Where the Plunge grind op's wheel goes, checked against the Job's model:
 its body above the lowest point of its periphery (which the op's Path
-drives; plunge_grind_op.check_clear checks that point's own sweep).
+drives; op.py's check_clear checks that point's own sweep).
 
 The wheel is a disc of radius R = diameter / 2 turning about an axis along
 the crossover, its lowest point on the Path. What it sweeps, in the plane of
@@ -27,7 +27,7 @@ from typing import List, Optional
 import FreeCAD
 import Part
 
-from .plunge_grind_properties import GrindInputError
+from .properties import GrindInputError
 
 CLEAR_ABOVE_MM = 1e-3  # model material this far into the wheel's sweep and more is in its way
 MIN_VOLUME_MM3 = 1e-6  # a common volume below this is a touch, not a collision

@@ -2,8 +2,10 @@
 surface grind of one flat face.
 
 Headless layer: FreeCAD, Part and Path only. The class path
-``freecad_groove.freecad.plunge_grind_op.ObjectPlungeGrind`` is stored in
-saved documents: it must never move.
+``freecad_groove.ops.grind.op.ObjectPlungeGrind`` is stored in every document
+saved since the ops moved here; documents saved before store
+``freecad_groove.freecad.plunge_grind_op.ObjectPlungeGrind``, which that
+module keeps as a shim. Neither may move.
 
 Axes (README "Plunge grind"): the face is planar and looks up (+Z); the
 wheel reciprocates along FreeCAD X (ReciprocationAxis, or Y), crosses over
@@ -20,103 +22,40 @@ across it (start) to flush with its high edge (Z);
 a face narrower than the wheel gets no crossover (the wheel centred on it).
 The start height is the face + Allowance + StartClearance; Y = the face.
 J, Q, K, R, L, F, E, P, D and G83.1 come from the properties
-(plunge_grind_properties.py).
+(properties.py).
 
 The model must not rise above the face where the wheel's lowest point passes
 (between the reversal points, over the crossover and its half width, up to
 the safe height), nor enter what the wheel's body sweeps above that point
-(grind_clearance.py: a wall beside the face within the wheel's radius of a
+(clearance.py: a wall beside the face within the wheel's radius of a
 reversal point): the op refuses such a face (naming Base and Overtravel).
 The body is checked with the tool bit's Diameter (a grinding wheel bit: one
 with a Width), else WheelDiameter; with neither it is not checked, and the
 plan says so in a warning (the report view, the task panel).
 
-The Path: G17, a comment with the call, G0 to the safe height (the top of
-the stock and model + Retract), G0 over the start, G0 down to it, the
-engine's expansion (G1 X Y Z at the move's feed in mm/s; a dress call as the
-comment "(DRESS P<n>)"), G0 back to the safe height.
+The Path (path.py): G17, a comment with the call, down from the safe height
+to the start, the engine's expansion, back up to the safe height.
 
-Errors never escape execute (as in groove_op.py): one line "<Label>: <message>"
+Errors never escape execute (as in the Groove op): one line "<Label>: <message>"
 naming the property, the Path a comment repeating it, op_error(obj) keeps it.
 """
 
 import math
-from dataclasses import dataclass, field
-from typing import List, Optional
+from typing import Optional
 
 import FreeCAD
 import Part
-import Path
 import PathScripts.PathUtils as PathUtils
 
-from ..engine.cycles.ab_g83 import G83, G83_1
-from ..engine.errors import CycleError
-from ..engine.moves import DRESS, FEED, MachineState, Move
-from .addon_op import AddonOp, create_op, register_op_kind
-from .grind_clearance import CLEAR_ABOVE_MM, check_wheel_body, wheel_sweep
-from .op_path import comment_body
-from .plunge_grind_properties import DERIVED, PROPERTIES, WORD_PROPERTIES, GrindInputError
-from .units import SECONDS_PER_MINUTE, length_mm
-
-TOLERANCE = 1e-6
-OP_NAME = "PlungeGrind"  # the op's kind in CAM's SetupSheet registry
-
-
-@dataclass
-class GrindPlan:
-    """What the op grinds: the call, where the wheel stands before it, its expansion."""
-
-    call: G83
-    start: MachineState  # x reciprocation, y plunge (FreeCAD Z), z crossover
-    moves: List[Move]
-    safe_z: float
-    face_name: str
-    axes: str = "XZY"  # the FreeCAD axes of the grinder's X, Y, Z words (reciprocation, plunge, crossover)
-    warnings: List[str] = field(default_factory=list)  # what the op does but could not check
-
-
-@dataclass
-class FlatFace:
-    """A picked face: its extent in X and Y and its height."""
-
-    name: str
-    x_min: float
-    x_max: float
-    y_min: float
-    y_max: float
-    z: float
-
-    def along(self, axis: str) -> tuple:
-        """(length from, to, width from, to): along ``axis`` ("X" or "Y") and across it."""
-        if axis == "Y":
-            return self.y_min, self.y_max, self.x_min, self.x_max
-        return self.x_min, self.x_max, self.y_min, self.y_max
-
-
-def read_face(face: object, name: str) -> FlatFace:
-    """The FlatFace of ``face``; GrindInputError unless it is a plane looking
-    up (+Z), a rectangle with edges along X and Y."""
-    surface = getattr(face, "Surface", None)
-    if not isinstance(surface, Part.Plane):
-        raise GrindInputError("%s: not a flat face (pick a plane looking up, +Z)" % name, ("Base",))
-    u0, u1, v0, v1 = face.ParameterRange
-    normal = face.normalAt((u0 + u1) / 2, (v0 + v1) / 2)
-    if abs(normal.z - 1) > TOLERANCE:
-        raise GrindInputError("%s: its normal (%.3g, %.3g, %.3g) is not +Z: the wheel plunges down along -Z"
-                              % ((name,) + tuple(round(v, 6) + 0.0 for v in normal)), ("Base",))
-    box = face.BoundBox
-    if abs(face.Area - box.XLength * box.YLength) > 1e-6 * max(1.0, face.Area):
-        raise GrindInputError("%s: not a rectangle with edges along X and Y (the wheel would grind past it)"
-                              % name, ("Base",))
-    return FlatFace(name, box.XMin, box.XMax, box.YMin, box.YMax, box.ZMax)
-
-
-def op_error(obj: object) -> Optional[str]:
-    """Why the op ``obj`` ground nothing at its last recompute (None: it is fine)."""
-    error = getattr(getattr(obj, "Proxy", None), "error", None)
-    if error:
-        return error
-    return None if obj.isValid() else obj.getStatusString()
+from ...engine.cycles.ab_g83 import G83, G83_1
+from ...engine.errors import CycleError
+from ...engine.moves import MachineState
+from ...freecad.addon_op import AddonOp, create_op, op_error  # noqa: F401 - its API
+from ...freecad.units import SECONDS_PER_MINUTE, length_mm
+from .clearance import CLEAR_ABOVE_MM, check_wheel_body, wheel_sweep
+from .path import path_commands
+from .plan import TOLERANCE, FlatFace, GrindPlan, read_face, rounded
+from .properties import DERIVED, PROPERTIES, WORD_PROPERTIES, GrindInputError
 
 
 def _named(error: CycleError) -> GrindInputError:
@@ -129,8 +68,6 @@ def _named(error: CycleError) -> GrindInputError:
 
 class ObjectPlungeGrind(AddonOp):
     """Proxy of a Plunge grind operation (Path::FeaturePython)."""
-
-    OP_NAME = OP_NAME
 
     # -- FreeCAD op API ---------------------------------------------------------
     def opExecute(self, obj: object) -> None:
@@ -241,15 +178,15 @@ class ObjectPlungeGrind(AddonOp):
             cross_start, cross_end = width_from + width / 2, width_to - width / 2
         else:
             cross_start = cross_end = (width_from + width_to) / 2
-        start_y = _rounded(face.z + obj.Allowance.Value + obj.StartClearance.Value)
+        start_y = rounded(face.z + obj.Allowance.Value + obj.StartClearance.Value)
         kind = G83_1 if obj.DressFirst else G83
         words = dict(X=length_to + obj.Overtravel.Value, I=start_x, Y=face.z, J=obj.PlungePick.Value,
                      Z=cross_end, K=k, R=r if r != k else None, Q=obj.CrossoverPlungePick.Value or None,
                      L=int(obj.SparkOutPasses), F=feed, E=recip_feed, P=int(obj.DressProgram) or None,
                      D=int(obj.DressCount) or None)
-        start = MachineState(x=_rounded(start_x), z=_rounded(cross_start), y=start_y, feed=feed, diameter_mode=False)
+        start = MachineState(x=rounded(start_x), z=rounded(cross_start), y=start_y, feed=feed, diameter_mode=False)
         try:
-            return kind(**{key: _rounded(value) for key, value in words.items()}).validate(), start
+            return kind(**{key: rounded(value) for key, value in words.items()}).validate(), start
         except CycleError as e:
             raise _named(e) from None
 
@@ -324,27 +261,6 @@ class ObjectPlungeGrind(AddonOp):
         return max(s.BoundBox.ZMax for s in shapes)
 
 
-def _rounded(value: object) -> object:
-    """A length rounded off FreeCAD's float noise (1e-9 mm), so the block reads as the face's numbers."""
-    return round(value, 9) + 0.0 if isinstance(value, float) else value
-
-
-def path_commands(plan: GrindPlan) -> list:
-    """The op's Path commands (see the module notes)."""
-    start, (recip, plunge, cross) = plan.start, plan.axes
-    commands = [Path.Command("G17"), Path.Command(comment_body("%s: %s" % (plan.face_name, plan.call.emit()))),
-                Path.Command("G0", {plunge: plan.safe_z}), Path.Command("G0", {recip: start.x, cross: start.z}),
-                Path.Command("G0", {plunge: start.y})]
-    for move in plan.moves:
-        if move.kind == FEED:
-            commands.append(Path.Command("G1", {recip: move.x, cross: move.z, plunge: move.y,
-                                                "F": move.f / SECONDS_PER_MINUTE}))
-        elif move.kind == DRESS:
-            commands.append(Path.Command(comment_body("DRESS P%d" % move.p)))
-    commands.append(Path.Command("G0", {"Z": plan.safe_z}))
-    return commands
-
-
 def SetupProperties() -> list:
     """No op property takes a SetupSheet default (the face gives the grind)."""
     return []
@@ -352,8 +268,5 @@ def SetupProperties() -> list:
 
 def Create(name: str, obj: object = None, parentJob: object = None, tool_controller: object = None) -> object:
     """A Plunge grind operation (Path::FeaturePython with an ObjectPlungeGrind proxy) in ``parentJob``; with the
-    GUI up, its view provider (gui/grind_view.py) through hooks."""
-    return create_op(ObjectPlungeGrind, name, obj, parentJob, tool_controller, "grind_view_provider_factory")
-
-
-register_op_kind(OP_NAME, SetupProperties)
+    GUI up, its view provider (gui/view.py, bound to its kind by the GUI: ops/registry.py)."""
+    return create_op(ObjectPlungeGrind, name, obj, parentJob, tool_controller)

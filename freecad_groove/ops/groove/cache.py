@@ -1,7 +1,7 @@
 """A Groove op's plans kept in the saved document, with the fingerprint of
 what they were planned from.
 
-Planning (groove_plan.py: the engine's expansion and warnings, the link
+Planning (plan.py: the engine's expansion and warnings, the link
 rapids checked against the model) is the costly part of a post. The op keeps
 its plans after a recompute; after reopening a document they are gone, and
 every post would plan every op again. So the op's proxy saves them (dumps:
@@ -10,9 +10,10 @@ planned, and after reopening reuses them only when the fingerprint of the
 document's inputs is the same; otherwise the op plans again (nothing stale is
 trusted). The fingerprint covers every input plan() reads:
 
-- the add-on's version and a digest of its planning code (the engine and the
-  FreeCAD layer's modules: a changed add-on never reuses an old plan);
-- the op's input properties (groove_properties.PROPERTIES less the derived
+- the add-on's version and a digest of its planning code (the engine, the
+  shared FreeCAD layer's modules and the Groove op's: a changed add-on never
+  reuses an old plan);
+- the op's input properties (properties.PROPERTIES less the derived
   ones), Base (objects and faces, and those objects' properties and Shape
   digests) and ToolController;
 - the tool controller's and its tool bit's properties (feeds, Width,
@@ -49,15 +50,15 @@ import struct
 import zlib
 from typing import NamedTuple, Optional
 
-from .. import __version__
-from ..engine import GroovingTool, MachineState, Settings
-from ..engine.cycles.cycle93 import Cycle93
-from ..engine.moves import Move
-from ..engine.warnings import CycleWarning
-from .faces import GrooveFace
-from .groove_plan import GroovePlan
-from .groove_properties import DERIVED, PROPERTIES
+from ... import __version__
+from ...engine import GroovingTool, MachineState, Settings
+from ...engine.cycles.cycle93 import Cycle93
+from ...engine.moves import Move
+from ...engine.warnings import CycleWarning
+from ...freecad.faces import GrooveFace
 from .links import LinkMove
+from .plan import GroovePlan
+from .properties import DERIVED, PROPERTIES
 
 FORMAT = 3  # of the saved data (2: a plan keeps its retreat; 3: column-wise); a new format never reads an old one
 # Property types left out of an object's fingerprint: outputs (Path), shapes
@@ -74,11 +75,11 @@ OP_INPUTS = tuple(name for _t, name, _g, _tip, _d in PROPERTIES if name not in D
 
 @functools.lru_cache(maxsize=None)
 def engine_stamp() -> str:
-    """The add-on's version and a digest of its planning code (the engine and
-    the FreeCAD layer's modules; the posts and the GUI do not plan)."""
-    package = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    """The add-on's version and a digest of its planning code (the engine, the
+    shared FreeCAD layer's modules and the Groove op's folder; the posts and the GUI do not plan)."""
+    package = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     digest = hashlib.sha256(__version__.encode())
-    for folder in ("engine", os.path.join("engine", "cycles"), "freecad"):
+    for folder in ("engine", os.path.join("engine", "cycles"), "freecad", "ops", os.path.join("ops", "groove")):
         path = os.path.join(package, folder)
         for name in sorted(os.listdir(path)):
             if name.endswith(".py"):

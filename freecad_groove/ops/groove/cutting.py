@@ -16,9 +16,9 @@ import math
 from dataclasses import dataclass
 from typing import Optional
 
-from ..engine.numbers import format_decimal
-from .groove_properties import GrooveInputError
-from .units import SECONDS_PER_MINUTE, feed_mm_per_min, length_mm
+from ...engine.numbers import format_decimal
+from ...freecad.units import SECONDS_PER_MINUTE, feed_mm_per_min, length_mm
+from .properties import GrooveInputError
 
 DEFAULT_FEED_PER_REV = 0.05  # mm/rev: when neither the op nor its tool controller gives a feed
 DEFAULT_RPM = 500.0  # rpm: when neither the op nor its tool controller gives a spindle speed

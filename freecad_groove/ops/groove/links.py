@@ -23,6 +23,8 @@ from typing import NamedTuple, Optional
 import FreeCAD
 import Part
 
+from ...freecad.faces import edge_curve
+
 TESSELLATION = 0.01  # mm: deflection used to find the model's largest radius
 HIT_LENGTH = 1e-6  # mm of a rapid inside a solid that counts as a collision
 SAME_POSITION = 1e-12  # mm: a link move this short is not written
@@ -47,17 +49,6 @@ def _coaxial(surface: object) -> bool:
     """True when a Part surface or circle (a FreeCAD object) turns about the Z axis."""
     axis, center = surface.Axis, surface.Center
     return math.hypot(axis.x, axis.y) <= 1e-9 * axis.Length and math.hypot(center.x, center.y) <= 1e-9
-
-
-def edge_curve(edge: object) -> Optional[object]:
-    """A Part edge's curve, None for a degenerated edge (the pole of a sphere
-    or torus), whose Curve raises "undefined curve type"."""
-    if getattr(edge, "Degenerated", False):
-        return None
-    try:
-        return edge.Curve
-    except (TypeError, RuntimeError, AttributeError):  # Part reports an unknown curve as TypeError
-        return None
 
 
 def _edge_radius(edge: object) -> float:

@@ -23,9 +23,9 @@ from typing import Dict, List, Tuple
 import FreeCAD
 import Part
 
-from ..engine.cycles.cycle93_outline import ArcSegment, Element, NotchError, Segment
-from ..engine.cycles.cycle93_recognize import RecognisedGroove, recognize
-from .faces import FACE, LONGITUDINAL, GrooveFace
+from ...engine.cycles.cycle93_outline import ArcSegment, Element, NotchError, Segment
+from ...engine.cycles.cycle93_recognize import RecognisedGroove, recognize
+from ...freecad.faces import FACE, LONGITUDINAL, GrooveFace
 
 HALF_PLANE_ANGLE = 0.5  # radians off the XZ plane: off the seams of revolved faces
 CHAIN_TOLERANCE = 1e-5  # mm: section ends closer than this are one point

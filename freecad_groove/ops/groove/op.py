@@ -2,8 +2,10 @@
 
 Headless layer: FreeCAD, Part and Path only (no Qt, no FreeCADGui), so jobs
 can be built and recomputed by scripts and in ``freecadcmd``. The class path
-``freecad_groove.freecad.groove_op.ObjectGroove`` is stored in every saved
-document: it must never move.
+``freecad_groove.ops.groove.op.ObjectGroove`` is stored in every document
+saved since the ops moved here; documents saved before store
+``freecad_groove.freecad.groove_op.ObjectGroove``, which that module keeps
+as a shim. Neither may move.
 
 Coordinates: the part turns about the Job's Z axis (the global Z axis through
 the origin). The op's Path is in the G18 plane: X = radius in model
@@ -13,7 +15,7 @@ coordinates, Z; never Y. Its moves drive the blade's reference corner
 What the op does with each face in ``Base`` (see faces.py for the reading of
 the face) and each of ``GrooveCount`` grooves:
 
-1. It derives one CYCLE93 call (here). TYP is "right": 5 longitudinal
+1. It derives one CYCLE93 call (here; the corners' values: properties.py). TYP is "right": 5 longitudinal
    external, 7 longitudinal internal, 6 face external, 8 face internal (+10
    when ChamferMeasure is CHR). The start point AXFA/AXSA is the groove's
    start edge on the face's contour: ``Position`` from the face's +Z end for
@@ -21,7 +23,7 @@ the face) and each of ``GrooveCount`` grooves:
    from its outer edge toward the axis for face grooves (measured along X).
    Groove k (0-based) sits at ``Position + k * Pitch``. ANGC comes from the
    face.
-2. It plans the groove (groove_plan.py): checks the finished groove lies on
+2. It plans the groove (plan.py): checks the finished groove lies on
    the face, picks a start point outside the part whose approach and retreat
    rapids stay out of the model, and expands the call there with the engine.
 3. Rapids link the grooves along the safe envelope around the model
@@ -54,7 +56,7 @@ editor too), and a Python feature of FreeCAD 1.0/1.1 cannot become "Invalid"
 without one. As FreeCAD CAM's own ops do, the op reports one error line
 "<Label>: <message>" in the report view instead, its Path is replaced by a
 comment that repeats the message (no stale toolpath in the 3D view), the
-message is kept (op_error(obj)), the posts refuse the op with it, and the
+message is kept (op_error(obj), addon_op.py), the posts refuse the op with it, and the
 next recompute after a fix clears it. The document and the other objects
 stay valid.
 
@@ -62,21 +64,24 @@ FreeCAD objects (the op's document object ``obj``, jobs, tool controllers)
 are typed ``object`` below.
 """
 
-import math
 from typing import Optional
 
 import FreeCAD
 import PathScripts.PathUtils as PathUtils
 
-from ..engine import GroovingTool, Settings
-from ..engine.cycles.cycle93 import DEFAULT_VRT_MM, Cycle93
-from ..engine.numbers import format_value
-from . import plan_cache
-from .addon_op import AddonOp, create_op, register_op_kind
+from ...engine import GroovingTool, Settings
+from ...engine.cycles.cycle93 import DEFAULT_VRT_MM, Cycle93
+from ...engine.numbers import format_value
+from ...freecad.addon_op import AddonOp, WithValues, create_op, document_object, op_error  # noqa: F401 - its API
+from ...freecad.faces import GrooveFace, analyse_face, element_name
+from ...freecad.units import feed_mm_per_min, length_mm
+from . import cache
 from .cutting import CuttingData, cutting_data
-from .faces import GrooveFace, analyse_face, element_name
-from .groove_plan import GroovePlan, blade_origin, plan_groove
-from .groove_properties import (  # noqa: F401 - this module's API too
+from .links import SafeEnvelope
+from .model import MODEL_VALUES, ModelGroove, not_overridden, read_picked_groove, with_model_hint
+from .path import path_commands
+from .plan import GroovePlan, blade_origin, plan_groove
+from .properties import (  # noqa: F401 - this module's API too
     CHAMFER_MEASURES,
     DERIVED,
     MAX_GROOVES,
@@ -84,86 +89,19 @@ from .groove_properties import (  # noqa: F401 - this module's API too
     PROPERTY_NAMES,
     PROPERTY_TYPES,
     GrooveInputError,
+    check_finite,
+    corner_value,
     error_properties,
+    finite_or_error,
 )
-from .links import SafeEnvelope
-from .model_grooves import MODEL_VALUES, ModelGroove, not_overridden, read_picked_groove, with_model_hint
-from .op_path import path_commands
-from .units import feed_mm_per_min, length_mm
-
-OP_NAME = "Groove"  # the op's kind in CAM's SetupSheet registry
 
 # TYP units digit for "right" grooves: (longitudinal, external) -> TYP
 TYP_RIGHT = {(True, True): 5, (True, False): 7, (False, True): 6, (False, False): 8}
 TYP_CHR = 10  # added to TYP when chamfers are measured along their legs (CHR)
 
 
-class _WithValues:
-    """An op object seen with some property values replaced: plan() on it
-    shows what the op would cut with the task panel's values, without
-    writing them to the document."""
-
-    def __init__(self, obj: object, values: dict):
-        self._obj = obj
-        self._values = values
-
-    def __getattr__(self, name: str) -> object:
-        values = self.__dict__["_values"]
-        if name in values:
-            return values[name]
-        return getattr(self.__dict__["_obj"], name)
-
-
-def document_object(obj: object) -> object:
-    """The FreeCAD object behind ``obj`` (itself, or what _WithValues wraps)."""
-    return obj._obj if isinstance(obj, _WithValues) else obj
-
-
-def _corner(obj: object, name: str) -> float:
-    """CYCLE93's RCO/RCI value of the corner property ``name``: the radius,
-    the chamfer as a negative number, 0 for none."""
-    kind = getattr(obj, name + "Type")
-    size = getattr(obj, name).Value
-    if kind == "Radius":
-        return size
-    if kind == "Chamfer":
-        return -size if size else 0.0
-    return 0.0
-
-
-NUMBER_TYPES = ("App::PropertyLength", "App::PropertyDistance", "App::PropertyAngle", "App::PropertyFloat")
-
-
-def check_finite(obj: object) -> None:
-    """GrooveInputError naming the first numeric op property that is NaN or
-    infinite (FreeCAD accepts both from a script or an expression)."""
-    for type_id, name, _group, _tip, _default in PROPERTIES:
-        if type_id in NUMBER_TYPES and name not in DERIVED:
-            value = length_mm(getattr(obj, name))
-            if not math.isfinite(value):
-                raise GrooveInputError("%s=%s: must be a finite number" % (name, value), (name,))
-
-
-def finite_or_error(value: float, what: str, properties: tuple) -> float:
-    """``value`` when finite, else GrooveInputError naming ``what``."""
-    if not math.isfinite(value):
-        raise GrooveInputError("%s=%s: must be a finite number" % (what, value), properties)
-    return value
-
-
-def op_error(obj: object) -> Optional[str]:
-    """Why the Groove op ``obj`` cut nothing at its last recompute (None: it
-    is fine): the message it reported, or FreeCAD's status of an invalid object."""
-    error = getattr(getattr(obj, "Proxy", None), "error", None)
-    if error:
-        return error
-    return None if obj.isValid() else obj.getStatusString()
-
-
 class ObjectGroove(AddonOp):
     """Proxy of a Groove operation (Path::FeaturePython)."""
-
-    OP_NAME = OP_NAME
 
     # -- FreeCAD op API ---------------------------------------------------------
     def opOnChanged(self, obj: object, prop: str) -> None:
@@ -205,7 +143,7 @@ class ObjectGroove(AddonOp):
         """plan(obj) as the last recompute made it, while nothing has touched
         the op since (planning checks every link rapid against the model, the
         costly part of posting); after reopening the document, the plans it
-        saved while their fingerprint still matches (plan_cache.py); otherwise
+        saved while their fingerprint still matches (cache.py); otherwise
         a fresh plan."""
         if getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)):
             plans = getattr(self, "_plans", None)
@@ -215,13 +153,13 @@ class ObjectGroove(AddonOp):
                 return plans
         return self.plan(obj)
 
-    # -- the plans kept in the document (plan_cache.py) ---------------------------
+    # -- the plans kept in the document (cache.py) ---------------------------
     def _keep_plans(self, obj: object, plans: list[GroovePlan]) -> None:
         """Keep ``plans`` for the posts, with the fingerprint of their inputs
         for the saved document (none when it cannot be taken: then nothing is saved)."""
         self._plans = plans
         try:
-            self._fingerprint = plan_cache.fingerprint(obj, self._parent_job(obj))
+            self._fingerprint = cache.fingerprint(obj, self._parent_job(obj))
         except Exception as e:  # never a reason to fail the op: the next post after reopening plans again
             self._fingerprint = None
             FreeCAD.Console.PrintLog("%s: plans not kept for the saved document: %s\n" % (obj.Label, e))
@@ -239,7 +177,7 @@ class ObjectGroove(AddonOp):
             self._saved_plans = None
             FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
             return None
-        memo: dict = {}  # plan_cache.fingerprint's digests of the shared inputs
+        memo: dict = {}  # cache.fingerprint's digests of the shared inputs
         self._restore(obj, job, memo)
         for other in getattr(getattr(job, "Operations", None), "Group", None) or []:
             proxy = getattr(other, "Proxy", None)
@@ -253,7 +191,7 @@ class ObjectGroove(AddonOp):
         """Take the saved plans as the op's plans when their fingerprint matches (then, or never)."""
         saved, self._saved_plans = self._saved_plans, None
         try:
-            stamp = plan_cache.fingerprint(obj, job, memo)
+            stamp = cache.fingerprint(obj, job, memo)
             if stamp == saved.fingerprint:
                 self._plans, self._fingerprint = saved.plans, stamp
         except Exception as e:  # plan again
@@ -261,19 +199,19 @@ class ObjectGroove(AddonOp):
 
     def dumps(self) -> Optional[dict]:
         """The proxy's saved state: the op's plans with their fingerprint
-        (plan_cache.py), or what the opened document held when they were not
+        (cache.py), or what the opened document held when they were not
         needed yet."""
         plans, stamp = getattr(self, "_plans", None), getattr(self, "_fingerprint", None)
         if plans is not None and stamp and getattr(self, "error", None) is None:
-            return {"plans": plan_cache.pack(plans, stamp)}
+            return {"plans": cache.pack(plans, stamp)}
         saved = getattr(self, "_saved_plans", None)
         return {"plans": saved.text} if saved else None
 
     def loads(self, state: object) -> None:
-        """Read the saved plans as the document opens (plan_cache.read), so
+        """Read the saved plans as the document opens (cache.read), so
         that the first post only checks their fingerprint (_restored_plans)."""
         try:
-            self._saved_plans = plan_cache.read(state.get("plans") if isinstance(state, dict) else None)
+            self._saved_plans = cache.read(state.get("plans") if isinstance(state, dict) else None)
         except Exception as e:  # never a reason not to open the document: the post plans again
             self._saved_plans = None
             FreeCAD.Console.PrintLog("Groove: saved plans not read: %s: %s\n" % (type(e).__name__, e))
@@ -311,7 +249,7 @@ class ObjectGroove(AddonOp):
             elif abs(length_mm(old) - value) > 1e-12:
                 setattr(obj, name, value)
 
-    # -- grooves read from the model (model_grooves.py) -------------------------
+    # -- grooves read from the model (model.py) -------------------------
     def model_groove(self, obj: object) -> ModelGroove:
         """The modelled groove the picked faces belong to (GrooveInputError naming what does not fit)."""
         try:
@@ -406,8 +344,8 @@ class ObjectGroove(AddonOp):
             axfa=round(radius, 9) + 0.0, axsa=round(z, 9) + 0.0,
             widg=obj.Width.Value, depg=obj.Depth.Value, angc=round(face.angc, 9),
             ang1=obj.FlankAngle1.Value, ang2=obj.FlankAngle2.Value,
-            rco1=_corner(obj, "EdgeCorner1"), rco2=_corner(obj, "EdgeCorner2"),
-            rci1=_corner(obj, "BaseCorner1"), rci2=_corner(obj, "BaseCorner2"),
+            rco1=corner_value(obj, "EdgeCorner1"), rco2=corner_value(obj, "EdgeCorner2"),
+            rci1=corner_value(obj, "BaseCorner1"), rci2=corner_value(obj, "BaseCorner2"),
             fal1=obj.BaseAllowance.Value, fal2=obj.FlankAllowance.Value,
             idep=obj.Infeed.Value, dwt=float(obj.Dwell), typ=typ, vrt=obj.Retract.Value,
         )
@@ -482,7 +420,7 @@ class ObjectGroove(AddonOp):
             elif kind == "App::PropertyAngle":
                 value = FreeCAD.Units.Quantity(float(value), FreeCAD.Units.Angle)
             wrapped[name] = value
-        return self.plan(_WithValues(obj, wrapped))
+        return self.plan(WithValues(obj, wrapped))
 
     def cycles(self, obj: object) -> list[tuple]:
         """[(Cycle93, Settings, start MachineState)] of every groove, in order:
@@ -500,8 +438,6 @@ class ObjectGroove(AddonOp):
         return path_commands(plans, cutting.feed_mm_per_s(radius))
 
 
-
-
 def SetupProperties() -> list:
     """The op properties a Job's SetupSheet may hold defaults for: none (a
     groove's size belongs to its face, the blade's to the tool controller)."""
@@ -512,10 +448,5 @@ def Create(name: str, obj: object = None, parentJob: object = None, tool_control
     """Create(name, obj=None, parentJob=None) ... a Groove operation
     (Path::FeaturePython with an ObjectGroove proxy), added to ``parentJob``
     (or the document's only Job). With the GUI up it also gets its view
-    provider (freecad_groove.hooks.view_provider_factory)."""
-    return create_op(ObjectGroove, name, obj, parentJob, tool_controller, "view_provider_factory")
-
-
-# A Job logs "SetupSheet has no support for Groove" for an unregistered op kind; the SetupSheet editor's
-# prototype stays empty (a groove offers it no properties: SetupProperties).
-register_op_kind(OP_NAME, SetupProperties)
+    provider (the one the GUI bound to its kind, ops/registry.py)."""
+    return create_op(ObjectGroove, name, obj, parentJob, tool_controller)

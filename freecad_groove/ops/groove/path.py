@@ -8,13 +8,9 @@ FreeCAD layer: Path only.
 
 import Path
 
-from ..engine.moves import DWELL, FEED, RAPID
-from .groove_plan import GroovePlan
-
-
-def comment_body(text: str) -> str:
-    """A Path comment body: FreeCAD drops inner parentheses."""
-    return "(%s)" % text.replace("(", "[").replace(")", "]")
+from ...engine.moves import DWELL, FEED, RAPID
+from ...freecad.addon_op import comment_body
+from .plan import GroovePlan
 
 
 def path_commands(plans: list[GroovePlan], feed_mm_per_s: float) -> list:

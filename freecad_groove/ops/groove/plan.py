@@ -1,7 +1,7 @@
 """One groove's plan: where the Groove op starts its CYCLE93 call, the
 engine's expansion from there, and the link rapids that lead to it.
 
-For each groove the op derives a Cycle93 call (groove_op.py); here:
+For each groove the op derives a Cycle93 call (op.py); here:
 
 1. the finished groove must lie on the face (not past its ends, not below
    the axis);
@@ -27,16 +27,16 @@ FreeCAD layer: the envelope needs Part; the rest is the engine's.
 from dataclasses import dataclass, field
 from typing import Optional
 
-from ..engine import CycleError, MachineState, Settings
-from ..engine.cycles.cycle93 import Cycle93
-from ..engine.cycles.cycle93_geometry import GrooveGeometry
-from ..engine.cycles.cycle93_warnings import cycle93_warnings
-from ..engine.moves import FEED, RAPID, Move
-from ..engine.numbers import format_value
-from ..engine.warnings import CycleWarning
-from .faces import GrooveFace
-from .groove_properties import GrooveInputError
+from ...engine import CycleError, MachineState, Settings
+from ...engine.cycles.cycle93 import Cycle93
+from ...engine.cycles.cycle93_geometry import GrooveGeometry
+from ...engine.cycles.cycle93_warnings import cycle93_warnings
+from ...engine.moves import FEED, RAPID, Move
+from ...engine.numbers import format_value
+from ...engine.warnings import CycleWarning
+from ...freecad.faces import GrooveFace
 from .links import BOTTOM, SIDE, TOP, LinkMove, Point, SafeEnvelope
+from .properties import GrooveInputError
 
 ON_FACE_TOLERANCE = 1e-6  # mm a finished groove may stand past its face
 

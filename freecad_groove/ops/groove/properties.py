@@ -1,16 +1,19 @@
 """The Groove op's properties, declared once: their types, groups, tooltips
 and defaults, and which property each CYCLE93 parameter comes from (so the
 op, its task panel and the posts name the same property for an error), and
-the error that names the properties to fix.
+the error that names the properties to fix, the checks of their values
+that name them, and the CYCLE93 value of a corner's two properties.
 
 FreeCAD layer: imports FreeCAD (for the tooltips' translation marker), never Qt.
 """
 
+import math
 from typing import Optional, Tuple
 
 import FreeCAD
 
-from ..engine.cycles.cycle93 import ALARM_WIDTH
+from ...engine.cycles.cycle93 import ALARM_WIDTH
+from ...freecad.units import length_mm
 
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
@@ -186,3 +189,35 @@ def error_properties(error: Exception) -> Tuple[str, ...]:
     if props == ("Width",) and getattr(error, "alarm", None) == ALARM_WIDTH:
         props += ("ToolWidth",)  # narrower than the blade: either may be wrong
     return props
+
+
+NUMBER_TYPES = ("App::PropertyLength", "App::PropertyDistance", "App::PropertyAngle", "App::PropertyFloat")
+
+
+def check_finite(obj: object) -> None:
+    """GrooveInputError naming the first numeric op property that is NaN or
+    infinite (FreeCAD accepts both from a script or an expression)."""
+    for type_id, name, _group, _tip, _default in PROPERTIES:
+        if type_id in NUMBER_TYPES and name not in DERIVED:
+            value = length_mm(getattr(obj, name))
+            if not math.isfinite(value):
+                raise GrooveInputError("%s=%s: must be a finite number" % (name, value), (name,))
+
+
+def finite_or_error(value: float, what: str, properties: tuple) -> float:
+    """``value`` when finite, else GrooveInputError naming ``what``."""
+    if not math.isfinite(value):
+        raise GrooveInputError("%s=%s: must be a finite number" % (what, value), properties)
+    return value
+
+
+def corner_value(obj: object, name: str) -> float:
+    """CYCLE93's RCO/RCI value of the corner property ``name``: the radius,
+    the chamfer as a negative number, 0 for none."""
+    kind = getattr(obj, name + "Type")
+    size = getattr(obj, name).Value
+    if kind == "Radius":
+        return size
+    if kind == "Chamfer":
+        return -size if size else 0.0
+    return 0.0

@@ -1,9 +1,9 @@
-"""Scripting entry point: make_cylinder_slot()."""
+"""Scripting entry point: make_cylinder_slot() (freecad_groove.make_cylinder_slot)."""
 
 import FreeCAD
 
-from . import cylinder_slot_op
-from .api import _model, nothing_left_behind, set_keyword_values
+from ...freecad.scripting import model_of, nothing_left_behind, set_keyword_values
+from .op import Create
 
 KEYWORDS = {"depth": "Depth", "passes": "Passes", "allowance": "Allowance", "retract": "Retract",
             "coolant_mode": "CoolantMode", "comment": "Comment"}
@@ -36,7 +36,7 @@ def is_sketch(path: object) -> bool:
 
 def _checked(job: object, part: object, sub: str) -> tuple:
     """(the Job's model clone of ``part``, ``sub``); ValueError when it has no such element."""
-    model = _model(job, part)
+    model = model_of("make_cylinder_slot", job, part)
     try:
         model.Shape.getElement(sub)
     except Exception:
@@ -51,10 +51,10 @@ def make_cylinder_slot(job, face, path, name="CylinderSlot", tool_controller=Non
     centre line on it, [(part, "EdgeN"), ...] in order (one pair alone is
     fine), or a sketch of the developed surface (its x = Z, its y = the
     developed length radius*C; the op's DevelopedSketch). Keywords (mm): depth, passes, allowance, retract (radial: see
-    cylinder_slot_op), coolant_mode, comment. ``tool_controller`` defaults to
+    op.py), coolant_mode, comment. ``tool_controller`` defaults to
     the Job's first (an end mill: its diameter is the slot's width).
     ``recompute``: then a slot that cannot be cut reports its message
-    (cylinder_slot_op.op_error) instead of raising.
+    (op.op_error) instead of raising.
 
     Raises TypeError (unknown keyword) or ValueError (a bad element or value)
     with nothing left behind in the Job.
@@ -75,7 +75,7 @@ def make_cylinder_slot(job, face, path, name="CylinderSlot", tool_controller=Non
         FreeCAD.setActiveDocument(doc.Name)
     with nothing_left_behind(doc):
         tc = tool_controller or (job.Tools.Group[0] if job.Tools and job.Tools.Group else None)
-        obj = cylinder_slot_op.Create(name, parentJob=job, tool_controller=tc)
+        obj = Create(name, parentJob=job, tool_controller=tc)
         if tc is not None:
             obj.ToolController = tc
         for model, sub in elements:

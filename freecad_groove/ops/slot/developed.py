@@ -16,7 +16,7 @@ edge starts (its direction as modelled, or reversed when only its start
 meets the second edge); C of the start in (-180, 180]; a sketch of the
 developed surface (its own x = Z, y = the developed length R*C, C = 0 at
 y = 0) gives C as drawn, its edges chained by Part's edge sort, and may leave
-the face's Z range by the end mill's radius (slot_reach); an edge "lies on the
+the face's Z range by the end mill's radius (reach.py); an edge "lies on the
 face" when every sample is within ON_FACE_TOLERANCE of the cylinder and of
 the face (its Z range and its angular span).
 """
@@ -26,8 +26,8 @@ from typing import List, NamedTuple, Tuple
 
 import Part
 
-from ..engine.numbers import ARC_CHORD_TOLERANCE
-from .groove_properties import GrooveInputError
+from ...engine.numbers import ARC_CHORD_TOLERANCE
+from .properties import SlotInputError
 
 SAMPLES_PER_EDGE = 16  # first samples of an edge: under 180 degrees apart for unwrapping C
 MAX_SPLITS = 12  # halvings of one sampled piece
@@ -46,21 +46,21 @@ class SlotCylinder(NamedTuple):
 
 
 def read_cylinder(face: object, name: str) -> SlotCylinder:
-    """The cylinder of ``face``; GrooveInputError naming Base when it is no cylinder about Z."""
+    """The cylinder of ``face``; SlotInputError naming Base when it is no cylinder about Z."""
     surface = getattr(face, "Surface", None)
     if not isinstance(surface, Part.Cylinder):
-        raise GrooveInputError("Base: %s is not a cylindrical face (a %s): pick the cylinder the slot is cut in"
+        raise SlotInputError("Base: %s is not a cylindrical face (a %s): pick the cylinder the slot is cut in"
                                % (name, type(surface).__name__), ("Base",))
     axis, centre = surface.Axis, surface.Center
     if abs(axis.x) > AXIS_TOLERANCE or abs(axis.y) > AXIS_TOLERANCE or math.hypot(centre.x, centre.y) > 1e-6:
-        raise GrooveInputError("Base: %s is a cylinder about (%g, %g, %g) through (%g, %g): it must turn about the "
+        raise SlotInputError("Base: %s is a cylinder about (%g, %g, %g) through (%g, %g): it must turn about the "
                                "Job's Z axis" % (name, axis.x, axis.y, axis.z, centre.x, centre.y), ("Base",))
     box = face.BoundBox
     return SlotCylinder(surface.Radius, box.ZMin, box.ZMax, name)
 
 
 def _oriented(edges: List[Tuple[object, str]]) -> List[Tuple[object, str, bool]]:
-    """(edge, name, reversed) in chain order; GrooveInputError when they do not join end to end."""
+    """(edge, name, reversed) in chain order; SlotInputError when they do not join end to end."""
     if len(edges) == 1:
         return [(edges[0][0], edges[0][1], False)]
     out = []
@@ -79,7 +79,7 @@ def _oriented(edges: List[Tuple[object, str]]) -> List[Tuple[object, str, bool]]
             out.append((edge, name, True))
             here = start
         else:
-            raise GrooveInputError("Base: %s does not join the edge before it: the slot's path must be one chain "
+            raise SlotInputError("Base: %s does not join the edge before it: the slot's path must be one chain "
                                    "of edges, in order" % name, ("Base",))
     return out
 
@@ -102,7 +102,7 @@ class _Developer:
         r, cyl = math.hypot(p.x, p.y), self.cylinder
         if abs(r - cyl.radius) > ON_FACE_TOLERANCE or not cyl.z_min - ON_FACE_TOLERANCE <= p.z <= \
                 cyl.z_max + ON_FACE_TOLERANCE:
-            raise GrooveInputError("Base: %s does not lie on %s (a point at radius %.4f, Z %.4f; the face: radius "
+            raise SlotInputError("Base: %s does not lie on %s (a point at radius %.4f, Z %.4f; the face: radius "
                                    "%.4f, Z %.4f to %.4f)" % (name, cyl.name, r, p.z, cyl.radius, cyl.z_min,
                                                               cyl.z_max), ("Base",))
         return p.z, _angle(p, last_c)
@@ -126,7 +126,7 @@ class _Developer:
         """The edge's middle on the face itself (not only on its cylinder: a face may span part of a turn)."""
         middle = edge.valueAt(sum(edge.ParameterRange) / 2.0)
         if self.face.distToShape(Part.Vertex(middle))[0] > ON_FACE_TOLERANCE:
-            raise GrooveInputError("Base: %s does not lie on %s (its middle is off the face)"
+            raise SlotInputError("Base: %s does not lie on %s (its middle is off the face)"
                                    % (name, self.cylinder.name), ("Base",))
 
     def _refine(self, edge, name, t0, t1, p0, p1, depth) -> List[Tuple[float, float]]:
@@ -148,7 +148,7 @@ class _SketchDeveloper(_Developer):
     def point(self, edge: object, name: str, t: float, last_c: float) -> Tuple[float, float]:
         p, cyl, margin = edge.valueAt(t), self.cylinder, self.margin + ON_FACE_TOLERANCE
         if not cyl.z_min - margin <= p.x <= cyl.z_max + margin:
-            raise GrooveInputError("DevelopedSketch: %s leaves %s by more than the end mill's radius %g (a point at "
+            raise SlotInputError("DevelopedSketch: %s leaves %s by more than the end mill's radius %g (a point at "
                                    "sketch x = Z %.4f; the face: Z %.4f to %.4f)" % (
                                        name, cyl.name, round(self.margin, 4), p.x, cyl.z_min, cyl.z_max),
                                    ("DevelopedSketch",))
@@ -189,7 +189,7 @@ def developed_path(cylinder: SlotCylinder, face: object, edges: List[Tuple[objec
     ``sketch``: the edges are a sketch's, in its own coordinates (x = Z, y = the developed length), which may
     leave the face's Z range by ``margin`` mm (the end mill's radius: it still touches the face)."""
     if not edges:
-        raise GrooveInputError("Base: no edge of the slot's path: pick the edges it follows on %s"
+        raise SlotInputError("Base: no edge of the slot's path: pick the edges it follows on %s"
                                % cylinder.name, ("Base",))
     developer = _SketchDeveloper(cylinder, face) if sketch else _Developer(cylinder, face)
     developer.margin = margin

@@ -14,15 +14,15 @@ points along X at the cylinder; the rules (README "Cylinder slot" table):
   is not checked (no silent assumption);
 - the slot's width along Z: the centre line may leave the face's Z range by
   at most the end mill's radius (a sketch's path; edges lie on the face by
-  definition), more is an error (slot_path); a slot whose side runs past the
+  definition), more is an error (developed.py); a slot whose side runs past the
   face's Z end (the end mill cutting past it, into air or a shoulder) is a
   warning naming by how much.
 """
 
 from typing import List, Optional, Tuple
 
-from .groove_properties import GrooveInputError
-from .units import length_mm
+from ...freecad.units import length_mm
+from .properties import SlotInputError
 
 TOLERANCE = 1e-6  # mm
 
@@ -41,13 +41,13 @@ def _mm(value: float) -> str:
 
 
 def check_tool(tool: object, tool_name: str, depth: float) -> None:
-    """GrooveInputError when the end mill has no diameter or its flutes are shorter than ``depth``."""
+    """SlotInputError when the end mill has no diameter or its flutes are shorter than ``depth``."""
     if bit_length(tool, "Diameter") is None:
-        raise GrooveInputError("ToolController: %s has no Diameter: the end mill's diameter is the slot's width"
+        raise SlotInputError("ToolController: %s has no Diameter: the end mill's diameter is the slot's width"
                                % tool_name, ("ToolController",))
     flutes = bit_length(tool, "CuttingEdgeHeight")
     if flutes is not None and depth > flutes + TOLERANCE:
-        raise GrooveInputError("Depth=%s: deeper than the cutting edge of %s (CuttingEdgeHeight=%s): the shank "
+        raise SlotInputError("Depth=%s: deeper than the cutting edge of %s (CuttingEdgeHeight=%s): the shank "
                                "would rub the slot's walls" % (_mm(depth), tool_name, _mm(flutes)), ("Depth",))
 
 

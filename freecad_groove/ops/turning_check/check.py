@@ -13,11 +13,11 @@ Here the Job is read into plain data:
   that fits in it; Z: its Z range); a Job without stock: a bar of the model's
   largest radius over the model's Z range;
 * per op (in the Job's order, inactive ops left out): its Path's G0/G1/G4
-  moves split at its comments into one run per planned groove (groove_plan),
+  moves split at its comments into one run per planned groove (groove/plan.py),
   each swept with the op's blade (ObjectGroove.settings, as the tool
   controller gives it now) in the groove's plunge direction; the planned
   finished groove and the engine's reach warnings; the feeds and speeds
-  (cutting.py) with the tool controller's rapid rates (HorizRapid for X,
+  (groove/cutting.py) with the tool controller's rapid rates (HorizRapid for X,
   VertRapid for Z).
 
 Each checked op's CycleTime becomes its machining time (HH:MM:SS, as
@@ -34,14 +34,14 @@ from typing import TYPE_CHECKING, Optional
 
 import FreeCAD
 
-from ..engine.cycles.cycle93_reach import unreachable_regions
-from ..engine.moves import DWELL, FEED, RAPID, Move
-from .cutting import cutting_data
-from .units import feed_mm_per_min, length_mm
+from ...engine.cycles.cycle93_reach import unreachable_regions
+from ...engine.moves import DWELL, FEED, RAPID, Move
+from ...freecad.units import feed_mm_per_min, length_mm
+from ..groove.cutting import cutting_data
 
 if TYPE_CHECKING:
-    from ..verify.machining_time import Feeds
-    from ..verify.turning import JobCheck, OpInput
+    from ...verify.machining_time import Feeds
+    from ...verify.turning import JobCheck, OpInput
 
 SECTION_DEFLECTION = 1e-4  # mm: largest chord error of the model's discretized section
 SHAPELY_MISSING = (
@@ -132,7 +132,7 @@ def path_runs(op: object) -> list[list[tuple[int, Move]]]:
 
 
 def _feeds(op: object) -> Feeds:
-    from ..verify.machining_time import Feeds
+    from ...verify.machining_time import Feeds
 
     cutting = cutting_data(op)
     tc = getattr(op, "ToolController", None)
@@ -144,8 +144,8 @@ def _feeds(op: object) -> Feeds:
 
 def op_input(op: object) -> OpInput:
     """The verify.turning.OpInput of Groove op ``op`` (its error when it cannot be checked)."""
-    from ..verify.turning import GrooveRun, OpInput
-    from .groove_op import op_error
+    from ...freecad.addon_op import op_error
+    from ...verify.turning import GrooveRun, OpInput
 
     try:
         error = op_error(op)
@@ -168,7 +168,7 @@ def op_input(op: object) -> OpInput:
 
 def groove_ops(job: object) -> tuple[list, list[str]]:
     """The Job's active Groove ops in order, and notes on the ops left out."""
-    from .groove_op import ObjectGroove
+    from ..groove.op import ObjectGroove
 
     ops, notes = [], []
     for op in job.Operations.Group:
@@ -182,7 +182,7 @@ def groove_ops(job: object) -> tuple[list, list[str]]:
 
 
 def _set_cycle_times(job: object, ops: list, result: JobCheck) -> None:
-    from ..verify.machining_time import clock_text
+    from ...verify.machining_time import clock_text
 
     for op, check in zip(ops, result.ops):
         if check.time is not None and hasattr(op, "CycleTime"):
@@ -204,8 +204,8 @@ def verify_job(job: object, tol: Optional[float] = None) -> JobCheck:
     ValueError) when shapely is missing or ``job`` is no Job with a model.
     """
     require_shapely()
-    from ..verify.section import bar_section, rings_section
-    from ..verify.turning import DEFAULT_TOL, check_ops
+    from ...verify.section import bar_section, rings_section
+    from ...verify.turning import DEFAULT_TOL, check_ops
 
     shapes = _check_job(job)
     radius, zmin, zmax, where = stock_bar(job, shapes)

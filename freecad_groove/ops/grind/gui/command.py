@@ -2,22 +2,19 @@
 toolbar and an entry in the CAM menu (as the Turning Groove command).
 Enabled when the active document holds a CAM Job; with a flat face of a
 Job's part selected it makes the op in that Job with its task panel open
-(grind_view.create; the panel takes the selected face as its Base).
+(view.create; the panel takes the selected face as its Base).
 
-Imports no CAM module until the command is used (it is registered when
-FreeCAD's GUI starts).
+Imports no CAM module until the command is used (FreeCAD's GUI start registers it).
 """
 
 import FreeCAD
 
-from . import GRIND_ICON
-from .command import _jobs, add_to_cam, chosen_job
+from ....gui.commands import chosen_job, has_job
+from . import ICON
 
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
 COMMAND = "FreeCADGroove_PlungeGrind"
-TOOLBAR = "New Operations"  # CAM's toolbar of operations, as the Groove command's
-MENU_AFTER = "FreeCADGroove_Groove"  # right after the Turning Groove (after V-Carve, before the 3D operations)
 MENU_TEXT = QT_TRANSLATE_NOOP(COMMAND, "Plunge grind")
 TOOL_TIP = QT_TRANSLATE_NOOP(COMMAND, "Plunge grind a flat face (Allen-Bradley 9/Series G83/G83.1) with a grinding "
                              "wheel: select a flat face of the Job's part looking up (+Z), then set the picks, "
@@ -25,19 +22,18 @@ TOOL_TIP = QT_TRANSLATE_NOOP(COMMAND, "Plunge grind a flat face (Allen-Bradley 9
 
 
 class CommandPlungeGrind:
+    NAME = COMMAND
+    TOOLBAR = "New Operations"  # CAM's toolbar of operations, as the Groove command's
+    MENU_AFTER = "FreeCADGroove_Groove"  # right after the Turning Groove (after V-Carve, before the 3D operations)
+
     def GetResources(self):
-        return {"Pixmap": GRIND_ICON, "MenuText": MENU_TEXT, "ToolTip": TOOL_TIP}
+        return {"Pixmap": ICON, "MenuText": MENU_TEXT, "ToolTip": TOOL_TIP}
 
     def IsActive(self):
-        doc = FreeCAD.ActiveDocument
-        return doc is not None and bool(_jobs(doc))
+        return has_job()
 
     def Activated(self):
         job = chosen_job()
-        from .grind_view import create
+        from .view import create
 
         return create(job) if job is not None else None
-
-
-def register() -> None:
-    add_to_cam(COMMAND, CommandPlungeGrind(), TOOLBAR, MENU_AFTER)

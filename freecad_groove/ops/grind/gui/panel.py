@@ -1,22 +1,24 @@
 """The Plunge grind task panel, on FreeCAD CAM's op panel framework
 (Path.Op.Gui.Base) as the Groove panel is: CAM's Base Geometry page (one
 flat face looking up) and the "Plunge grind" page: the tool controller, the
-coolant mode and every property of plunge_grind_properties.PROPERTIES but
+coolant mode and every property of properties.PROPERTIES but
 the derived GrindCall, which the page shows as the G83/G83.1 block the
 values program.
 
 While the panel is open every changed value re-plans the op from the panel's
-values (the op seen through groove_op._WithValues: the document is not
-touched) and draws its strokes in the 3D view (grind_preview.py); an
+values (the op seen through addon_op.WithValues: the document is not
+touched) and draws its strokes in the 3D view (preview.py); an
 invalid value shows the op's message in one line on both pages, frames the
 fields it names red, and OK and Apply are refused until it is
 fixed (task_dialog.AddonTaskPanel). OK writes the values into the op and
 recomputes; Cancel aborts the panel's transaction (and, for a new op,
 deletes it).
 
-The page class path ``freecad_groove.gui.grind_panel.PlungeGrindPage`` is
-stored in documents (in the view provider's state, as CAM's op view
-providers keep their page): keep it here.
+The page's class path is stored in documents (in the view provider's state,
+as CAM's op view providers keep their page):
+``freecad_groove.ops.grind.gui.panel.PlungeGrindPage`` since the ops moved
+here, ``freecad_groove.gui.grind_panel.PlungeGrindPage`` before (that module
+keeps it as a shim). Keep it here.
 """
 
 import FreeCAD
@@ -24,14 +26,10 @@ import FreeCADGui
 import PathScripts.PathUtils as PathUtils
 from PySide import QtCore, QtGui
 
-from ..freecad.groove_op import _WithValues
-from ..freecad.plunge_grind_op import read_face
-from ..freecad.plunge_grind_properties import DERIVED, PROPERTIES
-from . import GRIND_ICON
-from .grind_preview import GrindPreview
-from .live_page import LivePage
-from .task_panel import FacesPage
-from .widgets import (
+from ....freecad.addon_op import WithValues
+from ....gui.geometry_page import FacesPage
+from ....gui.live_page import LivePage
+from ....gui.widgets import (
     CONTEXT,
     add_error_label,
     child,
@@ -40,6 +38,9 @@ from .widgets import (
     select_data,
     show_quantity,
 )
+from ..properties import DERIVED, PROPERTIES
+from . import ICON
+from .preview import GrindPreview
 
 translate = FreeCAD.Qt.translate
 
@@ -124,7 +125,7 @@ class PlungeGrindPage(LivePage):
         return GrindBaseGeometryPage(obj, features)
 
     def initPage(self, obj):
-        self.init_live()  # its preview: the strokes drawn in the 3D view (grind_preview.py)
+        self.init_live()  # its preview: the strokes drawn in the 3D view (preview.py)
         self.plan = None
         self.shown = {}
 
@@ -132,7 +133,7 @@ class PlungeGrindPage(LivePage):
         return translate(CONTEXT, "Plunge grind")
 
     def getIcon(self, obj):
-        return GRIND_ICON
+        return ICON
 
     def field(self, prop: str) -> object:
         return child(self.form, widget_name(prop))
@@ -223,7 +224,7 @@ class PlungeGrindPage(LivePage):
         """A new tool controller in the op's Job whose bit is a grinding wheel of the Wheel width and Wheel
         diameter fields (each asked for while 0), selected for the op (written on OK). Its feeds and spindle
         speed are the tool controller's defaults (0): set them, or the op's feeds. Returns it, or None."""
-        from ..freecad.wheel_toolbit import make_wheel_tool_controller
+        from ....freecad.wheel_toolbit import make_wheel_tool_controller
 
         sizes = {}
         for prop, text in (("WheelWidth", "Width of the grinding wheel (mm):"),
@@ -254,10 +255,7 @@ class PlungeGrindPage(LivePage):
     # -- validity -----------------------------------------------------------------
     def replan(self) -> object:
         """The op's plan from the page's values (live_page.LivePage)."""
-        return self.obj.Proxy.plan(_WithValues(self.obj, self.values()))
-
-    def error_fields(self, bad_input: ValueError) -> tuple:
-        return tuple(getattr(bad_input, "properties", ()))  # GrindInputError names the properties to fix
+        return self.obj.Proxy.plan(WithValues(self.obj, self.values()))
 
     def show_plan(self, plan: object) -> None:
         """The G83 block ``plan`` programs and its strokes in the 3D view (none while invalid), and its
@@ -272,20 +270,3 @@ class PlungeGrindPage(LivePage):
         named = [name for _type, name, _group, _tip, _default in FIELDS
                  if any(line.startswith(name + ":") for line in lines)]
         self.show_warning_lines(lines, tuple(named))
-
-
-class FlatFaceGate:
-    """Lets the user pick only faces a plunge grind can take (flat, looking up, a rectangle along X and Y)."""
-
-    def allow(self, doc: object, obj: object, sub: str) -> bool:
-        if not sub or not sub.startswith("Face") or not hasattr(obj, "Shape"):
-            return False
-        try:
-            read_face(obj.Shape.getElement(sub), sub)
-        except Exception:
-            return False
-        return True
-
-
-def select_flat_faces() -> None:
-    FreeCADGui.Selection.addSelectionGate(FlatFaceGate())

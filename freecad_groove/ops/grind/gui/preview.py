@@ -9,14 +9,14 @@ from typing import List, Tuple
 
 from pivy import coin
 
-from ..engine.moves import FEED
-from .preview import FEED_COLOR, RAPID_COLOR, fill_lines, line_nodes
+from ....engine.moves import FEED
+from ....gui.lines import FEED_COLOR, RAPID_COLOR, fill_lines, line_nodes
 
 Point = Tuple[float, float, float]
 
 
 def plan_points(plan: object) -> Tuple[List[Point], List[Point]]:
-    """(approach rapids, feeds) of ``plan`` (plunge_grind_op.GrindPlan) as FreeCAD points: the rapid down
+    """(approach rapids, feeds) of ``plan`` (plan.GrindPlan) as FreeCAD points: the rapid down
     from the safe height to the start, then every feed move of the expansion."""
     recip, plunge, cross = plan.axes
 

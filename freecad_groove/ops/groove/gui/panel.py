@@ -22,44 +22,45 @@ one a line, and mark their fields amber; OK stays enabled. OK writes the values
 into the op and recomputes; Cancel aborts the panel's transaction (and, for a
 new op, deletes it), so the document is as it was.
 
-A document saved from the GUI stores the class paths
-``freecad_groove.gui.task_panel.ViewProvider`` and, in the view provider's
-state, ``freecad_groove.gui.task_panel.GroovePage`` (the page FreeCAD builds
-when the op is edited): both stay in this module. The pages are built from
-the small Qt helpers in widgets.py; the dialog around them (OK refused
-while invalid, the document's modified flag) is task_dialog.py.
+A document saved from the GUI stores, in the view provider's state, the
+class path of the page FreeCAD builds when the op is edited:
+``freecad_groove.ops.groove.gui.panel.GroovePage`` since the ops moved here,
+``freecad_groove.gui.task_panel.GroovePage`` before (that module keeps it as
+a shim). Keep GroovePage here. The pages are built from the small Qt helpers
+in gui/widgets.py; the dialog around them (OK refused while invalid, the
+document's modified flag) is gui/task_dialog.py, with the tool page
+(tool_page.py) added by GrooveTaskPanel here.
 """
 
 import os
 
 import FreeCAD
 import FreeCADGui
-import Path.Op.Gui.Base as PathOpGui
 from PySide import QtGui
 
-from ..freecad import faces as faces_mod
-from ..freecad import groove_op
-from ..freecad.groove_properties import GrooveInputError, cycle93_properties
-from ..freecad.model_grooves import not_overridden, read_model_groove
-from . import ICON, PANELS, preview
-from .live_page import LivePage
-from .task_dialog import GrooveTaskPanel
-from .widgets import (
+from ....freecad.addon_op import WithValues
+from ....gui import PANELS
+from ....gui.geometry_page import FacesPage
+from ....gui.live_page import LivePage
+from ....gui.task_dialog import AddonTaskPanel
+from ....gui.widgets import (
     CONTEXT,
     ERROR_LABEL,
     QuantityFields,
     ScaledPicture,
-    add_error_label,
     add_label,
     child,
     connect_changed,
     fill_combo,
-    fit_narrow_docks,
     load_form,
     new_warning_label,
     select_data,
     show_quantity,
 )
+from ..model import MODEL_VALUES, not_overridden
+from ..properties import CHAMFER_MEASURES, GrooveInputError, cycle93_properties, error_properties
+from . import ICON, preview
+from .tool_page import ToolPage
 
 translate = FreeCAD.Qt.translate
 
@@ -87,31 +88,9 @@ CORNER_TYPE_TEXT = {
     "Chamfer": FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Chamfer"),
 }
 CHAMFER_MEASURE_TEXT = {
-    groove_op.CHAMFER_MEASURES[0]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Length (CHF)"),
-    groove_op.CHAMFER_MEASURES[1]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Leg (CHR)"),
+    CHAMFER_MEASURES[0]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Length (CHF)"),
+    CHAMFER_MEASURES[1]: FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Leg (CHR)"),
 }
-
-
-class FacesPage(PathOpGui.TaskPanelBaseGeometryPage):
-    """FreeCAD's base geometry page, faces only, with the op's message under
-    its own lines (add_lines)."""
-
-    def getForm(self):
-        form = super().getForm()
-        self.add_lines(form)
-        add_error_label(form)
-        # Now: FreeCAD's task view sets its minimum width from the pages once, when it shows them.
-        fit_narrow_docks(form)
-        return form
-
-    def add_lines(self, form: object) -> None:
-        """Lines of a subclass above the message."""
-
-    def supportsEdges(self):
-        return False
-
-    def supportsVertexes(self):
-        return False
 
 
 class BaseGeometryPage(FacesPage):
@@ -300,7 +279,7 @@ class GroovePage(LivePage):
         preview then shows why)."""
         obj = self.obj
         try:
-            groove = obj.Proxy.model_groove(groove_op._WithValues(obj, {"ChamferMeasure": self.values()[
+            groove = obj.Proxy.model_groove(WithValues(obj, {"ChamferMeasure": self.values()[
                 "ChamferMeasure"]}))
         except ValueError:
             self.model_shown = {}
@@ -325,7 +304,7 @@ class GroovePage(LivePage):
     def _show_from_model(self) -> None:
         """"From the model: Position, Width, ..." over the fields, each such field marked."""
         from_model = self._from_model()
-        for prop in groove_op.MODEL_VALUES:
+        for prop in MODEL_VALUES:
             widget = self.field(prop)
             if widget is not None:
                 widget.setProperty(FROM_MODEL_PROPERTY, prop in from_model)
@@ -334,6 +313,10 @@ class GroovePage(LivePage):
         label.setVisible(bool(from_model))
 
     # -- preview and validity ---------------------------------------------------
+    def error_fields(self, bad_input: ValueError) -> tuple:
+        """The op properties an error names, a CYCLE93 parameter's included (properties.error_properties)."""
+        return error_properties(bad_input)
+
     def replan(self) -> list:
         """The op's plans from the panel's values (live_page.LivePage)."""
         plans = self.obj.Proxy.plan_with(self.obj, self.all_values())
@@ -370,103 +353,30 @@ class GroovePage(LivePage):
         self.form.angc.setText(text)
 
 
-class ViewProvider(PathOpGui.ViewProvider):
-    """The op's view provider: FreeCAD's, with the add-on's icon, selection
-    gate and task panel. Another op of the add-on derives from it and sets
-    the class attributes (grind_view.ViewProviderPlungeGrind)."""
+class GrooveTaskPanel(AddonTaskPanel):
+    """The Groove op's dialog: the tool page (tool_page.py) before the Groove page."""
 
-    ICON = ICON
-    TITLE = FreeCAD.Qt.QT_TRANSLATE_NOOP(CONTEXT, "Groove")  # the op's kind, as the page's title says it
-    NAME = "Groove"  # a new op's object name
-    DIALOG = GrooveTaskPanel
+    def add_pages(self, obj, op_page):
+        """The tool page before the Groove page."""
+        tool_page = ToolPage(obj, obj.Proxy.opFeatures(obj))
+        tool_page.parent = self
+        tool_page.initPage(obj)
+        tool_page.onDirtyChanged(self.pageDirtyChanged)
+        tool_page.groove_page = op_page
+        self.featurePages.insert(self.featurePages.index(op_page), tool_page)
+        self._insert_form(tool_page, obj)
 
-    @staticmethod
-    def make_op(name: str, job: object) -> object:
-        """A new op of this kind in ``job``, without its view provider."""
-        return groove_op.Create(name, parentJob=job)
-
-    @staticmethod
-    def command_resources() -> object:
-        return resources()
-
-    def getIcon(self):
-        if getattr(self, "Object", None) is not None and not self.Object.Active:
-            return ":/icons/CAM_OpActive.svg"
-        return self.ICON
-
-    def getSelectionFactory(self):
-        return select_turned_faces
-
-    def setEdit(self, vobj=None, mode=0):
-        if mode != 0:
-            return False
-        if vobj is None:
-            vobj = self.vobj
-        page = self.getTaskPanelOpPage(vobj.Object)
-        page.setTitle(translate(CONTEXT, self.TITLE))
-        page.setIcon(self.ICON)
-        panel = self.DIALOG(vobj.Object, self.deleteObjectsOnReject(), page, self.getSelectionFactory())
-        self.setupTaskPanel(panel)
-        self.deleteOnReject = False
-        return True
-
-
-class TurnedFaceGate:
-    """Lets the user pick only faces a groove can be cut into."""
-
-    def allow(self, doc: object, obj: object, sub: str) -> bool:
-        if not sub or not sub.startswith("Face") or not hasattr(obj, "Shape"):
-            return False
-        try:
-            faces_mod.analyse_face(obj.Shape.getElement(sub), sub)
-        except Exception:
-            try:  # a face of a modelled groove: a corner radius is a torus
-                read_model_groove(obj.Shape, sub, sub)
-            except Exception:
-                return False
-        return True
-
-
-def select_turned_faces() -> None:
-    """Let the user pick only faces a groove can be cut into."""
-    FreeCADGui.Selection.addSelectionGate(TurnedFaceGate())
-
-
-def resources() -> object:
-    """The op's command resources (PathOpGui.CommandResources)."""
-    return PathOpGui.CommandResources(
-        "Groove", groove_op.Create, GroovePage, ICON,
-        FreeCAD.Qt.QT_TRANSLATE_NOOP("FreeCADGroove_Groove", "Turning Groove"), None,
-        FreeCAD.Qt.QT_TRANSLATE_NOOP("FreeCADGroove_Groove", "Cut a groove into a turned face"),
-    )
-
-
-def attach_view_provider(obj: object, delete_on_reject: bool = False, provider: type = ViewProvider) -> None:
-    """Give the op its view provider (ops made by scripts get one too); ``provider``: its class."""
-    vobj = getattr(obj, "ViewObject", None)
-    if vobj is None:
-        return
-    if type(getattr(vobj, "Proxy", None)) is not provider:
-        vobj.Proxy = provider(vobj, provider.command_resources())
-    vobj.Proxy.setDeleteObjectsOnReject(delete_on_reject)
-
-
-def create(job: object, provider: type = ViewProvider) -> object:
-    """A new op (of ``provider``'s kind: a Groove) in ``job`` with its task
-    panel open (what the command does). Cancel deletes it again. Returns the
-    op, or None."""
-    doc = job.Document
-    kind = translate(CONTEXT, provider.TITLE)
-    doc.openTransaction(translate(CONTEXT, "Create {0}").format(kind))
-    try:
-        obj = provider.make_op(provider.NAME, job)
-        attach_view_provider(obj, delete_on_reject=True, provider=provider)
-        obj.ViewObject.Visibility = True
-    except Exception as error:
-        doc.abortTransaction()
-        FreeCAD.Console.PrintError(translate(CONTEXT, "{0}: cannot create the operation: {1}").format(kind, error)
-                                   + "\n")
-        return None
-    doc.commitTransaction()
-    obj.ViewObject.Document.setEdit(obj.ViewObject, 0)
-    return obj
+    def _insert_form(self, page, obj):
+        """Show ``page`` just before the Groove page, whatever the layout."""
+        op_form = self.op_page.form
+        if isinstance(self.form, QtGui.QToolBox):
+            at = self.form.indexOf(op_form)
+            reversed_order = at == 0 and self.form.count() > 1
+            index = at + 1 if reversed_order else at
+            self.form.insertItem(index, page.form, page.getTitle(obj))
+            self.form.setCurrentWidget(op_form)
+        else:
+            page.form.setWindowTitle(page.getTitle(obj))
+            at = self.form.index(op_form)
+            reversed_order = at == 0 and len(self.form) > 1
+            self.form.insert(at + 1 if reversed_order else at, page.form)

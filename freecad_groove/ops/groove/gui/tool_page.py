@@ -3,15 +3,23 @@ FreeCAD 1.1's editor), the coolant mode, the blade's width, corner radius and
 reference corner used when the tool bit has none, and a button that makes a
 grooving tool controller for the Job in one click.
 
-Not stored in documents (GrooveTaskPanel builds it): free to move.
+Not stored in documents (panel.GrooveTaskPanel builds it): free to move.
 """
 
 import FreeCAD
 import Path.Op.Gui.Base as PathOpGui
 from PySide import QtGui
 
-from ..freecad import toolbit
-from .widgets import CONTEXT, QuantityFields, add_error_label, connect_changed, fill_combo, load_form, select_data
+from ....freecad import toolbit
+from ....gui.widgets import (
+    CONTEXT,
+    QuantityFields,
+    add_error_label,
+    connect_changed,
+    fill_combo,
+    load_form,
+    select_data,
+)
 
 translate = FreeCAD.Qt.translate
 

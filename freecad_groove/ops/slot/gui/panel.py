@@ -8,18 +8,18 @@ Pages:
 - Cylinder slot: the tool controller and coolant, the path (the edges in Base
   Geometry, or a sketch of the developed surface: DevelopedSketch), Depth,
   Passes, Allowance, Retract, and the live preview of the developed path with
-  its passes (slot_preview.py: a picture in the panel).
+  its passes (preview.py: a picture in the panel).
 
 Every changed value re-plans the op from the panel's values
 (ObjectCylinderSlot.plan_with: the document is not touched) and redraws the
-picture. An invalid value shows the op's message in one line (red) on both
+picture (preview.py). An invalid value shows the op's message in one line (red) on both
 pages and marks its field; OK and Apply are refused while it stands. The
-plan's warnings (slot_reach.py) show in amber and never block. OK writes the
+plan's warnings (reach.py) show in amber and never block. OK writes the
 values and recomputes; Cancel aborts the panel's transaction (for a new op,
 deletes it).
 
-Not stored in documents (ViewProviderCylinderSlot.setEdit in slot_view.py
-builds it): free to move.
+Not stored in documents (ViewProviderCylinderSlot.setEdit in view.py builds
+it): free to move.
 """
 
 import FreeCAD
@@ -28,11 +28,9 @@ import Path.Op.Gui.Base as PathOpGui
 import PathScripts.PathUtils as PathUtils
 from PySide import QtGui
 
-from . import ICON
-from .live_page import LivePage
-from .slot_preview import DevelopedPicture, developed_path
-from .task_dialog import AddonTaskPanel
-from .widgets import (
+from ....gui.live_page import LivePage
+from ....gui.task_dialog import AddonTaskPanel
+from ....gui.widgets import (
     CONTEXT,
     ERROR_LABEL,
     QuantityFields,
@@ -42,6 +40,8 @@ from .widgets import (
     fit_narrow_docks,
     new_warning_label,
 )
+from . import ICON
+from .preview import DevelopedPicture, developed_path
 
 translate = FreeCAD.Qt.translate
 

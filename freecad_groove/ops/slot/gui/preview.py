@@ -1,6 +1,6 @@
 """The Cylinder slot panel's live preview: the slot's path on the developed
 surface of its cylinder, drawn into a picture in the panel (not the 3D view,
-where the op's own Path is drawn wrapped by slot_view.py).
+where the op's own Path is drawn wrapped by view.py).
 
 The developed plane: Z to the right, the developed length s = radius * C (C in
 radians) up, both in mm at one scale (a true picture). Drawn: the face's Z
@@ -36,7 +36,7 @@ class DevelopedPath(NamedTuple):
 
 
 def developed_path(plan: object, width: float) -> DevelopedPath:
-    """The picture's content from a cylinder_slot_op.SlotPlan and the end mill's diameter ``width``."""
+    """The picture's content from a plan.SlotPlan and the end mill's diameter ``width``."""
     cylinder, region, start = plan.cylinder, plan.region, plan.start
     to_s = cylinder.radius * math.pi / 180.0
     z, c = start.z, start.c

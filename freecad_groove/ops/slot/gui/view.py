@@ -1,25 +1,22 @@
-"""The Cylinder slot op in FreeCAD's GUI: its command (a face and the slot's
-edges selected -> the op) and its view provider, which draws the op's X/Z/C
-moves wrapped on the cylinder (FreeCAD's own Path view knows no C: it draws
-them flat in the XZ plane).
+"""The Cylinder slot op's view provider, which draws the op's X/Z/C moves
+wrapped on the cylinder (FreeCAD's own Path view knows no C: it draws them
+flat in the XZ plane).
 
-The class path ``freecad_groove.gui.slot_view.ViewProviderCylinderSlot`` is
-stored in documents: keep it. Editing the op (the command, a double-click)
-opens its task panel (slot_panel.py).
+The class path ``freecad_groove.ops.slot.gui.view.ViewProviderCylinderSlot``
+is stored in GUI documents saved since the ops moved here; documents saved
+before store ``freecad_groove.gui.slot_view.ViewProviderCylinderSlot``, which
+that module keeps as a shim. Neither may move. Editing the op (the command,
+a double-click) opens its task panel (panel.py).
 """
 
 import math
 from typing import List, Tuple
 
-import FreeCAD
-import FreeCADGui
+from . import ICON
 
-COMMAND = "FreeCADGroove_CylinderSlot"
 STEP_DEGREES = 2.0  # the drawn wrap: C turns of at most this many degrees per straight piece
 RAPID_COLOUR = (0.9, 0.9, 0.2)
 FEED_COLOUR = (0.1, 0.4, 1.0)
-QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
-
 Point = Tuple[float, float, float]
 
 
@@ -53,6 +50,12 @@ class ViewProviderCylinderSlot:
     def __init__(self, vobj):
         vobj.Proxy = self
 
+    @classmethod
+    def assign(cls, obj: object) -> None:
+        """Give the op ``obj`` this view provider (with the GUI up; ops made by scripts too: ops/registry.py)."""
+        if getattr(obj, "ViewObject", None) is not None:
+            cls(obj.ViewObject)
+
     def attach(self, vobj):
         from pivy import coin
 
@@ -73,9 +76,9 @@ class ViewProviderCylinderSlot:
     def setEdit(self, vobj=None, mode=0):
         if mode != 0:
             return False
-        from . import slot_panel
+        from .panel import open_panel
 
-        self.panel = slot_panel.open_panel(vobj or self.vobj, self.deleteOnReject)
+        self.panel = open_panel(vobj or self.vobj, self.deleteOnReject)
         self.deleteOnReject = False
         return True
 
@@ -113,8 +116,6 @@ class ViewProviderCylinderSlot:
                 node.addChild(child)
 
     def getIcon(self):
-        from . import ICON
-
         return ICON
 
     def dumps(self):
@@ -125,71 +126,3 @@ class ViewProviderCylinderSlot:
 
     def onDocumentRestored(self, vobj):
         self.attach(vobj)
-
-
-def attach_view_provider(obj) -> None:
-    """Give the op ``obj`` its view provider (with the GUI up)."""
-    if getattr(obj, "ViewObject", None) is not None:
-        ViewProviderCylinderSlot(obj.ViewObject)
-
-
-def _selection():
-    """(job, (model, "FaceN"), [(model, "EdgeN"), ...] or a sketch) from the selection, or None."""
-    from .command import _jobs
-
-    doc = FreeCAD.ActiveDocument
-    jobs = _jobs(doc) if doc is not None else []
-    face, edges, sketch, job = None, [], None, None
-    for sel in FreeCADGui.Selection.getSelectionEx():
-        for owner in jobs:
-            if sel.Object in owner.Model.Group:
-                job = owner
-        if sel.Object.isDerivedFrom("Sketcher::SketchObject"):  # the developed path, whatever of it is picked
-            sketch = sel.Object
-            continue
-        for sub in sel.SubElementNames:
-            if sub.startswith("Face") and face is None:
-                face = (sel.Object, sub)
-            elif sub.startswith("Edge"):
-                edges.append((sel.Object, sub))
-    if job is None or face is None or (not edges) == (sketch is None):
-        return None
-    return job, face, sketch if sketch is not None else edges
-
-
-class CommandCylinderSlot:
-    def GetResources(self):
-        from . import ICON
-
-        return {"Pixmap": ICON, "MenuText": QT_TRANSLATE_NOOP(COMMAND, "Cylinder slot"),
-                "ToolTip": QT_TRANSLATE_NOOP(COMMAND, "Mill a slot on a cylinder with a live tool and the C axis "
-                                             "(GSK G7.1): select the cylindrical face of the Job's part, then "
-                                             "Ctrl+click the edges of the slot's centre line on it, in order, "
-                                             "or a sketch of the developed surface")}
-
-    def IsActive(self):
-        return _selection() is not None
-
-    def Activated(self):
-        picked = _selection()
-        if picked is None:
-            return None
-        from ..freecad.slot_api import make_cylinder_slot
-
-        job, face, path = picked
-        doc = job.Document
-        doc.openTransaction("Cylinder slot")
-        try:
-            obj = make_cylinder_slot(job, face, path, recompute=True)
-        except ValueError as e:  # a pair make_cylinder_slot refuses: one line, nothing made
-            doc.abortTransaction()
-            FreeCAD.Console.PrintError("Cylinder slot: %s\n" % e)
-            return None
-        doc.commitTransaction()
-        obj.ViewObject.Proxy.deleteOnReject = True  # Cancel in the panel deletes the new op
-        obj.ViewObject.Document.setEdit(obj.ViewObject, 0)
-        return obj
-
-
-def register() -> None:
-    FreeCADGui.addCommand(COMMAND, CommandCylinderSlot())
