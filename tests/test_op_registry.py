@@ -133,3 +133,40 @@ def test_a_view_provider_is_given_only_once_the_gui_bound_one(monkeypatch):
     headless = type("Headless", (), {"ViewObject": None})()
     registry.assign_view_provider(ops.KINDS[0], headless)
     assert given == [op]
+
+
+def _top_level_imports(module):
+    """The absolute names ``module`` (a module or a package) imports when it loads (its functions' imports
+    left out)."""
+    is_package = os.path.isdir(os.path.join(ROOT, *module.split(".")))
+    package = module.split(".") if is_package else module.split(".")[:-1]
+    for node in source_of(module + ".__init__" if is_package else module).body:
+        if isinstance(node, ast.Import):
+            yield from (alias.name for alias in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            if node.level:
+                base = ".".join(package[: len(package) - node.level + 1] + ([node.module] if node.module else []))
+            yield base
+            yield from (base + "." + alias.name for alias in node.names)
+
+
+def test_what_freecads_gui_start_loads_imports_no_cam_module():
+    """InitGui.py runs freecad_groove.gui.register(): it loads the declarations, gui/commands.py, each op's
+    command module and the Check turning command, and whatever those import when they load; none may
+    import CAM (Path, PathScripts) or Part: a FreeCAD start must not pay for CAM before it is used."""
+    start = ["freecad_groove.gui", "freecad_groove.gui.commands", "freecad_groove.ops",
+             "freecad_groove.ops.turning_check.gui.command"]
+    start += [kind.path(kind.command).rpartition(".")[0] for kind in ops.KINDS]
+    seen, todo = set(), list(start)
+    while todo:
+        module = todo.pop()
+        if module in seen:
+            continue
+        seen.add(module)
+        for name in _top_level_imports(module):
+            assert name.split(".")[0] not in {"Path", "PathScripts", "Part"}, "%s imports %s" % (module, name)
+            path = os.path.join(ROOT, *name.split("."))
+            if name.startswith("freecad_groove") and (os.path.isfile(path + ".py") or os.path.isdir(path)):
+                todo.append(name)
+    assert "freecad_groove.ops.groove.gui.command" in seen and "freecad_groove.ops.groove.op" not in seen

@@ -50,6 +50,7 @@ from .properties import DERIVED, GROUP, LENGTHS, PROPERTIES, SlotInputError, fin
 
 class ObjectCylinderSlot(AddonOp):
     """Proxy of a Cylinder slot operation (Path::FeaturePython)."""
+
     FEATURES = ("FeatureTool", "FeatureBaseFaces", "FeatureBaseEdges", "FeatureCoolant")
 
     # -- FreeCAD op API ---------------------------------------------------------
