@@ -200,9 +200,18 @@ def test_the_ops_saved_before_the_move_recompute_to_the_paths_3d18f68_made(ops_a
         assert now[name] == recorded[name], name
 
 
+def _changed_on_purpose_since_3d18f68(key, program):
+    """A program 3d18f68 posted, with what the one output layer changed on purpose since (issue 19): the
+    grinder posts' LinuxCNC header has its title first, as every target's (engine/output/writer.py header)."""
+    lines = program.splitlines()
+    if key.startswith("GrindJob/linuxcnc_grind_post") and lines[1].startswith("("):
+        lines[0], lines[1] = lines[1], lines[0]
+    return "\n".join(lines) + "\n"
+
+
 def test_the_ops_saved_before_the_move_post_the_programs_3d18f68_posted(ops_at_3d18f68):
     recorded = _recomputed_and_recorded(ops_at_3d18f68)["programs"]
     posted = programs(ROOT, ops_at_3d18f68)
     assert sorted(posted) == sorted(recorded)
     for key, program in posted.items():
-        assert program == recorded[key], key
+        assert program == _changed_on_purpose_since_3d18f68(key, recorded[key]), key
