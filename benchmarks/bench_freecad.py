@@ -65,7 +65,7 @@ def _freecad_groove_bench():
     import parts  # tests/freecad/parts.py: the stepped shaft and its Job
 
     from freecad_groove import demo, make_groove
-    from freecad_groove.freecad.groove_op import op_error
+    from freecad_groove.ops.groove.op import op_error
 
     share = os.environ.get("FREECAD_GROOVE_SHARE", "")
     out_path = os.environ.get("FREECAD_GROOVE_BENCH_OUT") or os.path.join(share or os.getcwd(), "bench_freecad.txt")

@@ -34,7 +34,7 @@ def _freecad_groove_bench_fresh():
 
     if which == "ours":  # what opening a document with Groove ops imports: FreeCAD's CAM op modules, then ours
         step("import FreeCAD's Path.Op.Base (once)", lambda: __import__("Path.Op.Base"))
-        step("import freecad_groove.freecad.groove_op (once)", lambda: __import__("freecad_groove.freecad.groove_op"))
+        step("import freecad_groove.ops.groove.op (once)", lambda: __import__("freecad_groove.ops.groove.op"))
     doc = step("open the document (FreeCAD.openDocument)",
                lambda: FreeCAD.openDocument(os.path.join(share, "bench_post.FCStd")))
     ops = [obj for obj in doc.Objects if hasattr(obj, "GrooveCount")]

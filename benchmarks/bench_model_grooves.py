@@ -1,4 +1,4 @@
-"""FreeCAD benchmark of reading grooves from the model (freecad/model_grooves.py):
+"""FreeCAD benchmark of reading grooves from the model (ops/groove/model.py):
 prints figures, asserts nothing. Runs inside FreeCAD (freecadcmd), headless:
 
     benchmarks/bench_model_grooves.sh          # FreeCAD 1.1 (scripts/freecad-roots)
@@ -32,8 +32,8 @@ def _bench_model_grooves():
     from parts import make_shop
 
     from freecad_groove import make_groove
-    from freecad_groove.freecad.groove_op import op_error
-    from freecad_groove.freecad.model_grooves import read_model_groove
+    from freecad_groove.ops.groove.model import read_model_groove
+    from freecad_groove.ops.groove.op import op_error
 
     out_path = os.path.join(os.environ.get("FREECAD_GROOVE_SHARE", os.getcwd()), "bench_model_grooves.txt")
     lines = []

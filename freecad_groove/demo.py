@@ -219,8 +219,8 @@ def make_job(doc, part):
 
 def make_ops(doc, job, part, tc):
     """The Groove ops of OPS in ``job``; each must recompute without error."""
-    from .freecad import groove_op
-    from .freecad.api import make_groove
+    from .freecad.addon_op import op_error
+    from .ops.groove.api import make_groove
 
     names = face_names(part.Shape)
     ops = []
@@ -230,7 +230,7 @@ def make_ops(doc, job, part, tc):
         op.Label = label
         ops.append(op)
     doc.recompute()
-    bad = ["%s: %s" % (op.Label, groove_op.op_error(op)) for op in ops if groove_op.op_error(op)]
+    bad = ["%s: %s" % (op.Label, op_error(op)) for op in ops if op_error(op)]
     if bad:
         raise RuntimeError("Groove op(s) failed to recompute: " + "; ".join(bad))
     return ops

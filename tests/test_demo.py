@@ -109,7 +109,7 @@ def test_every_file_is_written_and_not_empty(run, summary):
     # the document is a FreeCAD file holding the Job and its five Groove ops
     with zipfile.ZipFile(fc / (demo.DOCUMENT + ".FCStd")) as z:
         document = z.read("Document.xml").decode()
-    assert document.count("freecad_groove.freecad.groove_op") >= 1
+    assert document.count("freecad_groove.ops.groove.op") >= 1
     assert len(re.findall(r'<Object type="Path::FeaturePython" name="Groove\d*"', document)) == len(demo.OPS)
 
 

@@ -472,7 +472,7 @@ def test_simulate_is_not_imported_by_the_engine():
     at_import = re.compile(r"^(from|import)\s[^#\n]*\b(simulate|shapely|verify)\b", re.M)
     engine = os.path.join(ROOT, "freecad_groove")
     verify = os.path.join(engine, "verify")
-    on_demand = os.path.join(engine, "freecad", "turning_check.py")
+    on_demand = os.path.join(engine, "ops", "turning_check", "check.py")
     for folder, _, files in os.walk(engine):
         if folder == verify or folder.startswith(verify + os.sep):
             continue

@@ -1,10 +1,12 @@
-"""What the add-on's operations (Groove, Cylinder slot, Plunge grind) share
-on CAM's op framework (Path.Op.Base.ObjectOp): the tool controller they are
-made with, their features, their properties added on creation and on
-restore (a document saved by an older version gets the new ones), and no
-milling depths; the one-line report of an op that cannot cut; making an op
-with its view provider (create_op) and registering its kind with CAM's
-SetupSheet (register_op_kind).
+"""What the add-on's operations (freecad_groove/ops/: Groove, Cylinder slot,
+Plunge grind) share on CAM's op framework (Path.Op.Base.ObjectOp): the tool
+controller they are made with, their features, their properties added on
+creation and on restore (a document saved by an older version gets the new
+ones), and no milling depths; the one-line report of an op that cannot cut
+(report_error, op_error) and the Path comment it leaves; an op seen with a
+task panel's values (WithValues); making an op with its view provider
+(create_op) and registering its kind with CAM's SetupSheet (register_op_kind:
+when its proxy class is made, from its declaration, ops/registry.py).
 
 Not stored in documents (each op's own class is): free to move.
 
@@ -12,23 +14,70 @@ FreeCAD layer: FreeCAD's CAM only.
 """
 
 import traceback
+from typing import Optional
 
 import FreeCAD
 import Path
 import Path.Op.Base as PathOp
 
-from .. import hooks
-from .op_path import comment_body
+from ..ops import registry
+
+
+def comment_body(text: str) -> str:
+    """A Path comment body: FreeCAD drops inner parentheses."""
+    return "(%s)" % text.replace("(", "[").replace(")", "]")
+
+
+def op_error(obj: object) -> Optional[str]:
+    """Why the op ``obj`` made nothing at its last recompute (None: it is fine): the message it reported,
+    or FreeCAD's status of an invalid object."""
+    error = getattr(getattr(obj, "Proxy", None), "error", None)
+    if error:
+        return error
+    return None if obj.isValid() else obj.getStatusString()
+
+
+class WithValues:
+    """An op object seen with some property values replaced: the op's plan()
+    on it shows what the op would make with a task panel's values, without
+    writing them to the document."""
+
+    def __init__(self, obj: object, values: dict):
+        self._obj = obj
+        self._values = values
+
+    def __getattr__(self, name: str) -> object:
+        values = self.__dict__["_values"]
+        if name in values:
+            return values[name]
+        return getattr(self.__dict__["_obj"], name)
+
+
+def document_object(obj: object) -> object:
+    """The FreeCAD object behind ``obj`` (itself, or what WithValues wraps)."""
+    return obj._obj if isinstance(obj, WithValues) else obj
 
 
 class AddonOp(PathOp.ObjectOp):
-    """Base of the add-on's op proxies. A subclass sets OP_NAME (the op's
-    kind, which CAM's SetupSheet registry looks it up by, not the object's
-    name), FEATURES (names of Path.Op.Base feature flags) and
-    _add_missing_properties."""
+    """Base of the add-on's op proxies. A subclass is the proxy an op's
+    declaration names (ops/registry.py: OpKind.proxy); made, it gets that
+    declaration as KIND (whose name is the op's kind, which CAM's SetupSheet
+    registry looks it up by, not the object's name) and its kind joins CAM's
+    SetupSheet registry (register_op_kind). It sets FEATURES (names of
+    Path.Op.Base feature flags) and _add_missing_properties."""
 
-    OP_NAME = ""
+    KIND = None  # the op's declaration (registry.OpKind), set when the subclass is made
     FEATURES = ("FeatureTool", "FeatureBaseFaces", "FeatureCoolant")
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        kind = registry.kind_of(cls)
+        if kind is None and cls.KIND is None:
+            raise TypeError("%s.%s: no op declares it as its proxy (ops/registry.py)" % (cls.__module__,
+                                                                                          cls.__qualname__))
+        if kind is not None:  # a subclass of a declared proxy keeps its kind
+            cls.KIND = kind
+            register_op_kind(kind)
 
     def __init__(self, obj: object, name: str, parentJob: object = None, tool_controller: object = None):
         # The base class picks a tool controller while it is built; headless,
@@ -39,7 +88,7 @@ class AddonOp(PathOp.ObjectOp):
             tool_controller = group[0] if group else None
         self._tc_hint = tool_controller
         try:
-            super().__init__(obj, self.OP_NAME, parentJob)
+            super().__init__(obj, self.KIND.name, parentJob)
         finally:
             self._tc_hint = None
         if tool_controller is not None and getattr(obj, "ToolController", None) is None:
@@ -84,24 +133,22 @@ class AddonOp(PathOp.ObjectOp):
         raise NotImplementedError
 
 
-def create_op(proxy_class: type, name: str, obj: object, parent_job: object, tool_controller: object,
-              view_hook: str) -> object:
+def create_op(proxy_class: type, name: str, obj: object, parent_job: object, tool_controller: object) -> object:
     """An op (Path::FeaturePython with a ``proxy_class`` proxy) in ``parent_job`` (None: the active document's
-    Job); with the GUI up it also gets its view provider, from the factory the GUI set in ``hooks.<view_hook>``."""
+    Job); with the GUI up it also gets its view provider, the one the GUI bound to its kind (ops/registry.py)."""
     if obj is None:
         doc = parent_job.Document if parent_job is not None else FreeCAD.ActiveDocument
         obj = doc.addObject("Path::FeaturePython", name)
     obj.Proxy = proxy_class(obj, name, parent_job, tool_controller)
-    factory = getattr(hooks, view_hook)
-    if factory is not None and getattr(obj, "ViewObject", None) is not None:
-        factory(obj)
+    registry.assign_view_provider(proxy_class.KIND, obj)
     return obj
 
 
-def register_op_kind(op_name: str, setup_properties: object, prototype: object = None) -> None:
-    """Register the op kind ``op_name`` with CAM's SetupSheet, as FreeCAD's own ops are: a Job applies its
+def register_op_kind(kind: registry.OpKind) -> None:
+    """Register the op kind ``kind`` with CAM's SetupSheet, as FreeCAD's own ops are: a Job applies its
     SetupSheet to every new op by kind and logs "SetupSheet has no support for ..." for an unregistered one.
-    ``prototype(name, prototype)``: what the SetupSheet editor builds for its properties (default: as given)."""
+    The SetupSheet editor's prototype of the op is the one it gives (none of the ops adds properties to it);
+    the op's SetupSheet properties are read from its op module when asked for."""
     import Path.Base.SetupSheet as PathSetupSheet
 
-    PathSetupSheet.RegisterOperation(op_name, prototype or (lambda name, proto: proto), setup_properties)
+    PathSetupSheet.RegisterOperation(kind.name, lambda name, proto: proto, lambda: kind.load(kind.setup_properties)())

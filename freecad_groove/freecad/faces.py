@@ -27,17 +27,28 @@ Only Part is needed (no Path, no GUI); the result is plain data.
 
 import math
 from dataclasses import dataclass
+from typing import Optional
 
 import Part
 
 from ..engine.numbers import format_decimal
-from .links import edge_curve
 
 AXIS_TOLERANCE = 1e-7  # |sin| of the angle between a surface axis and Z
 ON_AXIS_TOLERANCE = 1e-6  # mm: how far an axis may pass from the origin's Z axis
 LONGITUDINAL_LIMIT = 45.0  # degrees off Z up to which a cone takes longitudinal grooves
 LONGITUDINAL = "longitudinal"
 FACE = "face"
+
+
+def edge_curve(edge: object) -> Optional[object]:
+    """A Part edge's curve, None for a degenerated edge (the pole of a sphere
+    or torus), whose Curve raises "undefined curve type"."""
+    if getattr(edge, "Degenerated", False):
+        return None
+    try:
+        return edge.Curve
+    except (TypeError, RuntimeError, AttributeError):  # Part reports an unknown curve as TypeError
+        return None
 
 
 def _fmt(value):

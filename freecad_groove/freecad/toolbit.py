@@ -6,7 +6,7 @@ resources/tools/make_grooving_shape.py): a PartDesign Body labelled
 CornerRadius, CuttingEdgeHeight, Length and Diameter, and a box-shaped blade
 with rounded front corners driven by them. A tool bit made from it carries those parameters as
 properties, so the Groove op reads the blade's Width and CornerRadius from
-the tool controller (groove_op.ObjectGroove.settings).
+the tool controller (ops/groove/op.py: ObjectGroove.settings).
 
 FreeCAD 1.1 (tool bits are assets, Path.Tool.toolbit / Path.Tool.shape):
 this module registers a ToolBitShape subclass "Grooving" (FreeCAD picks the

@@ -1,61 +1,50 @@
-"""GUI layer: the Groove command, its task panel and the live preview.
+"""GUI layer, shared part: what the ops' GUIs (freecad_groove/ops/<op>/gui/,
+the same layer) are built from, and their registration when FreeCAD's GUI
+starts.
 
 The only layer that imports FreeCADGui or Qt (always through FreeCAD's
 ``PySide`` shim, so it runs on PySide6 in FreeCAD 1.1 and PySide2 in 1.0).
 ``InitGui.py`` calls ``register()`` when FreeCAD's GUI starts; the CAM
-modules are imported only when the command is first used. Module and class
-names in task_panel.py are stored in documents (the view provider's class,
-the page class): keep them stable.
+modules are imported only when a command is first used.
 
-    command.py     the Turning Groove command and its place in CAM's toolbar and menu
-    task_panel.py  view provider, task panel pages, OK/Cancel handling
-    tool_page.py   the panel's "Tool and coolant" page (grooving tool controller button)
-    widgets.py     the Qt helpers the pages are built from (forms, fields, error labels)
-    qt_wrappers.py   forgetting PySide's wrappers of the widgets FreeCAD deletes with a closed panel
-    preview.py     the groove cross-section and toolpath drawn while editing
-    slot_view.py   the Cylinder slot command and the op's Path drawn wrapped on its cylinder
-    slot_panel.py, slot_preview.py  the Cylinder slot task panel and its picture of the developed path
-    turning_view.py  the Check turning command: verify_job's section in the 3D view, figures in a task panel
-    grind_command.py  the Plunge grind command; grind_view.py its view provider, grind_panel.py its task panel,
-                      grind_preview.py the strokes drawn while it is open
+    commands.py     the commands' place in CAM's toolbar and menu, the Job a new op goes into, and
+                    register_op(kind): an op's command and view provider (ops/registry.py)
+    op_view.py      OpViewProvider: FreeCAD's op view provider with the add-on's icon, selection gate and
+                    dialog (the Groove's and the Plunge grind's derive from it); a new op with its panel open
+    task_dialog.py  AddonTaskPanel, the dialog of every op panel: OK refused while invalid, the modified flag
+    live_page.py    an op page that re-plans as the user types: the error, warnings, framed fields
+    geometry_page.py  FreeCAD's base geometry page, faces only, with the op's message
+    widgets.py      the Qt helpers the pages are built from (forms, fields, error labels)
+    qt_wrappers.py  forgetting PySide's wrappers of the widgets FreeCAD deletes with a closed panel
+    lines.py        Coin line sets drawn in the 3D view (the previews', the turning check's)
+    task_panel.py, grind_view.py, grind_panel.py, slot_view.py
+                    shims: class paths documents saved before the ops moved to ops/ store
 """
 
 import os
 
 RESOURCES = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "resources")
-ICON = os.path.join(RESOURCES, "icons", "groove.svg")
-GRIND_ICON = os.path.join(RESOURCES, "icons", "plunge_grind.svg")
+ICONS = os.path.join(RESOURCES, "icons")
 PANELS = os.path.join(RESOURCES, "panels")
 TRANSLATIONS = os.path.join(RESOURCES, "translations")
-COMMAND = "FreeCADGroove_Groove"
 
 
-def _attach_view_provider(obj):
-    from . import task_panel
-
-    task_panel.attach_view_provider(obj)
-
-
-def _attach_grind_view_provider(obj):
-    from . import grind_view
-
-    grind_view.attach_view_provider(obj)
+def icon_path(name: str) -> str:
+    """The add-on's icon file ``name`` ("groove.svg")."""
+    return os.path.join(ICONS, name)
 
 
 def register():
-    """Add the Groove command to the CAM workbench and give ops made by
-    scripts their view provider."""
+    """Add every op's command to the CAM workbench and give ops made by scripts their view provider (one
+    registration per op, ops.KINDS), then the Check turning command."""
     import FreeCADGui
 
-    from .. import hooks
-    from . import command, grind_command, slot_view, turning_view
+    from ..ops import KINDS
+    from ..ops.turning_check.gui.command import CommandCheckTurning
+    from .commands import add_command, register_op
 
     FreeCADGui.addLanguagePath(TRANSLATIONS)
     FreeCADGui.updateLocale()
-    command.register()
-    turning_view.register()
-    hooks.view_provider_factory = _attach_view_provider
-    slot_view.register()
-    hooks.slot_view_provider_factory = slot_view.attach_view_provider
-    grind_command.register()
-    hooks.grind_view_provider_factory = _attach_grind_view_provider
+    for kind in KINDS:
+        register_op(kind)
+    add_command(CommandCheckTurning())

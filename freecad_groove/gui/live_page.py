@@ -17,7 +17,6 @@ import traceback
 import FreeCAD
 import Path.Op.Gui.Base as PathOpGui
 
-from ..freecad.groove_properties import error_properties
 from .widgets import (
     CONTEXT,
     ERROR_LABEL,
@@ -71,8 +70,9 @@ class LivePage(PathOpGui.TaskPanelPage):
         self.show_plan(plan)
 
     def error_fields(self, bad_input: ValueError) -> tuple:
-        """The op properties an error names (their fields are framed)."""
-        return error_properties(bad_input)
+        """The op properties an error names (their fields are framed): its ``properties`` (the ops' input
+        errors); a page whose engine errors name properties too reads them (the Groove's: CYCLE93's)."""
+        return tuple(getattr(bad_input, "properties", ()))
 
     def set_error(self, message: object, properties: tuple = ()) -> None:
         """Show ``message`` (None: the values make an op) on every page and frame the fields of ``properties``

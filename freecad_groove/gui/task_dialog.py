@@ -1,10 +1,10 @@
 """The add-on's op task dialogs: FreeCAD CAM's op task panel with OK and
 Apply refused while the op's page holds an error, and a document left
 unmodified by a look at the panel (CAM's panel changes Visibility while it is
-open): AddonTaskPanel, the dialog of the Cylinder slot and Plunge grind ops;
-GrooveTaskPanel adds the tool page (tool_page.py) before the Groove page.
+open): AddonTaskPanel, the dialog of every op's panel (the Groove's,
+ops/groove/gui/panel.GrooveTaskPanel, adds its tool page).
 
-Not stored in documents (ViewProvider.setEdit builds it): free to move.
+Not stored in documents (the view providers' setEdit builds it): free to move.
 """
 
 import FreeCAD
@@ -13,7 +13,6 @@ import Path.Op.Gui.Base as PathOpGui
 from PySide import QtGui
 
 from . import qt_wrappers
-from .tool_page import ToolPage
 from .widgets import fit_narrow_docks
 
 
@@ -107,35 +106,6 @@ class AddonTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
         as before, and no object added (a grooving tool controller)."""
         if unchanged and not self.was_modified and document_looks(self.gui_document.Document) == self.looks_before:
             self.gui_document.Modified = False
-
-
-class GrooveTaskPanel(AddonTaskPanel):
-    """The Groove op's dialog: the tool page (tool_page.py) before the Groove page."""
-
-    def add_pages(self, obj, op_page):
-        """The tool page before the Groove page."""
-        tool_page = ToolPage(obj, obj.Proxy.opFeatures(obj))
-        tool_page.parent = self
-        tool_page.initPage(obj)
-        tool_page.onDirtyChanged(self.pageDirtyChanged)
-        tool_page.groove_page = op_page
-        self.featurePages.insert(self.featurePages.index(op_page), tool_page)
-        self._insert_form(tool_page, obj)
-
-    def _insert_form(self, page, obj):
-        """Show ``page`` just before the Groove page, whatever the layout."""
-        op_form = self.op_page.form
-        if isinstance(self.form, QtGui.QToolBox):
-            at = self.form.indexOf(op_form)
-            reversed_order = at == 0 and self.form.count() > 1
-            index = at + 1 if reversed_order else at
-            self.form.insertItem(index, page.form, page.getTitle(obj))
-            self.form.setCurrentWidget(op_form)
-        else:
-            page.form.setWindowTitle(page.getTitle(obj))
-            at = self.form.index(op_form)
-            reversed_order = at == 0 and len(self.form) > 1
-            self.form.insert(at + 1 if reversed_order else at, page.form)
 
 
 def document_looks(doc: object) -> dict:

@@ -5,6 +5,8 @@ GUI tests (tests/freecad_gui/). Needs FreeCAD, not pytest.
 
 import contextlib
 import os
+import re
+import zipfile
 
 import FreeCAD
 
@@ -29,6 +31,19 @@ def reopened(doc, path):
     FreeCAD.closeDocument(doc.Name)
     with opened(str(path)) as again:
         yield again
+
+
+def stored_classes(path, member="Document.xml", tag="Object"):
+    """{object name: "module.Class"} of the Python proxies a saved document stores in ``member``: the objects'
+    in Document.xml, the view providers' (tag "ViewProvider") in GuiDocument.xml."""
+    with zipfile.ZipFile(str(path)) as saved:
+        xml = saved.read(member).decode()
+    found = {}
+    for name, body in re.findall(r'<%s name="([^"]+)"[^>]*>(.*?)</%s>' % (tag, tag), xml, re.S):
+        proxy = re.search(r'<Python [^>]*module="([^"]+)" class="([^"]+)"', body)
+        if proxy:
+            found[name] = "%s.%s" % proxy.groups()
+    return found
 
 
 def path_commands(obj):

@@ -16,7 +16,8 @@ import test_groove_op as tg
 from parts import face_name
 
 from freecad_groove import make_groove
-from freecad_groove.freecad import groove_op, registration
+from freecad_groove.freecad import registration
+from freecad_groove.ops.groove import KIND as GROOVE
 
 doc, shop = tg.doc, tg.shop
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -92,8 +93,8 @@ def test_a_new_op_finds_its_setup_sheet_entry(shop, monkeypatch):
                      tool_width=3)
     assert op.Proxy is not None
     assert not [t for t in logged if "SetupSheet" in t], logged
-    assert groove_op.OP_NAME in PathSetupSheet._RegisteredOps
+    assert GROOVE.name in PathSetupSheet._RegisteredOps
     # The Job's SetupSheet editor builds a prototype of every registered op.
-    prototype = PathSetupSheet._RegisteredOps[groove_op.OP_NAME].prototype(groove_op.OP_NAME)
+    prototype = PathSetupSheet._RegisteredOps[GROOVE.name].prototype(GROOVE.name)
     assert prototype is not None
-    job.SetupSheet.Proxy.setOperationProperties(op, groove_op.OP_NAME)
+    job.SetupSheet.Proxy.setOperationProperties(op, GROOVE.name)

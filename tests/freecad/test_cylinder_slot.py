@@ -17,7 +17,7 @@ import Path.Main.Job as PathJob
 import pytest
 
 from freecad_groove import make_cylinder_slot
-from freecad_groove.freecad.cylinder_slot_op import op_error
+from freecad_groove.ops.slot.op import op_error
 
 V = FreeCAD.Vector
 FEED = 120.0  # mm/min, the tool controller's HorizFeed
@@ -318,7 +318,7 @@ def test_the_op_recomputes_after_reopening_the_saved_document(closing, tmp_path)
     closing.append(doc)
     op = doc.getObject(name)
     assert type(op.Proxy).__module__ + "." + type(op.Proxy).__name__ == \
-        "freecad_groove.freecad.cylinder_slot_op.ObjectCylinderSlot"
+        "freecad_groove.ops.slot.op.ObjectCylinderSlot"
     op.touch()
     doc.recompute()
     assert op_error(op) is None

@@ -27,11 +27,11 @@ from freecad_groove.engine import GroovingTool, MachineState, Settings
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.moves import DWELL, FEED, RAPID
 from freecad_groove.freecad import faces as faces_mod
-from freecad_groove.freecad import groove_op
-from freecad_groove.freecad.cutting import DEFAULT_FEED_PER_REV, DEFAULT_RPM
-from freecad_groove.freecad.groove_op import op_error
-from freecad_groove.freecad.groove_plan import rapids_clear
-from freecad_groove.freecad.links import SafeEnvelope
+from freecad_groove.ops.groove import op as groove_op
+from freecad_groove.ops.groove.cutting import DEFAULT_FEED_PER_REV, DEFAULT_RPM
+from freecad_groove.ops.groove.links import SafeEnvelope
+from freecad_groove.ops.groove.op import op_error
+from freecad_groove.ops.groove.plan import rapids_clear
 
 V = FreeCAD.Vector
 

@@ -1,4 +1,4 @@
-"""Grooves read from the modelled part (freecad/model_grooves.py, the op's
+"""Grooves read from the modelled part (ops/groove/model.py, the op's
 ModelGroove): parts whose section carries the profile of a known CYCLE93
 call (model_parts.py), every face of the groove picked in turn."""
 
@@ -14,8 +14,8 @@ from parts import make_shop
 
 from freecad_groove import make_groove
 from freecad_groove.engine.cycles.cycle93_recognize import profile_elements
-from freecad_groove.freecad.groove_op import op_error
-from freecad_groove.freecad.model_grooves import MODEL_VALUES, read_model_groove
+from freecad_groove.ops.groove.model import MODEL_VALUES, read_model_groove
+from freecad_groove.ops.groove.op import op_error
 
 FIELDS = ("axfa", "axsa", "widg", "depg", "angc", "ang1", "ang2", "rco1", "rco2", "rci1", "rci2", "typ")
 LENGTH_TOL = 0.001  # mm: the issue's "to 0.001 mm / 0.01 degrees"

@@ -9,8 +9,8 @@ from model_parts import CASES, part_shape
 from parts import make_shop, shaft_shape
 
 from freecad_groove import make_groove
-from freecad_groove.freecad.groove_op import op_error
-from freecad_groove.freecad.model_grooves import MODEL_HINT
+from freecad_groove.ops.groove.model import MODEL_HINT
+from freecad_groove.ops.groove.op import op_error
 
 TYPED = dict(width=2, depth=1, infeed=1, tool_width=2, tool_corner_radius=0.1)
 

@@ -19,7 +19,7 @@ from pylib import require_shapely
 from test_model_grooves import groove_faces
 
 from freecad_groove import make_groove, verify_job
-from freecad_groove.freecad.groove_op import op_error
+from freecad_groove.ops.groove.op import op_error
 
 BLADE = dict(infeed=1, tool_width=2, tool_corner_radius=0.1)
 CALL = CASES["rectangular"]

@@ -11,7 +11,7 @@ import pytest
 import test_posts as tp
 
 from freecad_groove.engine.translator import translate_program
-from freecad_groove.freecad.groove_op import op_error
+from freecad_groove.ops.groove.op import op_error
 
 shop, groove, FEED_MM_MIN = tp.shop, tp.groove, tp.FEED_MM_MIN
 doc = tp.doc

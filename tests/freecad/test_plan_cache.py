@@ -1,5 +1,5 @@
 """A post after reopening a document reuses the plans the op saved
-(freecad_groove/freecad/plan_cache.py) while their fingerprint matches, and
+(freecad_groove/ops/groove/cache.py) while their fingerprint matches, and
 plans again when any input changed while the document was closed (here: the
 saved document's values changed without a recompute, as an edit of the file
 or an older add-on leaves them) or the add-on's planning code changed. Run by
@@ -16,8 +16,9 @@ from documents import DATA, opened, reopened
 from parts import PROFILE, shaft_shape
 
 from freecad_groove import demo
-from freecad_groove.freecad import groove_op, plan_cache
-from freecad_groove.freecad.groove_op import op_error
+from freecad_groove.ops.groove import cache as plan_cache
+from freecad_groove.ops.groove import op as groove_op
+from freecad_groove.ops.groove.op import op_error
 
 doc, shop = tg.doc, tg.shop
 

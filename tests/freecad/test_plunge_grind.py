@@ -17,7 +17,7 @@ from pylib import require_shapely
 from freecad_groove import make_plunge_grind
 from freecad_groove.engine.cycles.ab_g83 import G83, G83_1
 from freecad_groove.engine.moves import DRESS, FEED, MachineState
-from freecad_groove.freecad.plunge_grind_op import op_error
+from freecad_groove.ops.grind.op import op_error
 
 TOP = "Face6"  # Part.makeBox: Face5 z=0, Face6 z=height
 WHEEL = 10.0

@@ -25,7 +25,7 @@ from test_posts import NAMES, calls, export, positions, post, read, strip_commen
 
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.freecad import posts
-from freecad_groove.freecad.groove_op import op_error
+from freecad_groove.ops.groove.op import op_error
 
 doc, shop, groove = tg.doc, tg.shop, tg.groove
 MM = 25.4

@@ -42,7 +42,7 @@ from freecad_groove.engine.moves import DWELL, FEED, RAPID
 from freecad_groove.engine.output.writer import Writer
 from freecad_groove.engine.translator import translate_program
 from freecad_groove.freecad import posts, registration
-from freecad_groove.freecad.groove_op import op_error
+from freecad_groove.ops.groove.op import op_error
 
 # The Groove op tests' stepped shaft, Job and helpers (doc and shop are fixtures).
 doc, shop, groove, FEED_MM_MIN = tg.doc, tg.shop, tg.groove, tg.FEED_MM_MIN

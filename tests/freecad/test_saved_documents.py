@@ -1,19 +1,29 @@
 """Documents in FreeCAD (1.1 and 1.0; run by tests/freecad/run_suite.py):
-an op saved and opened again, one whose document lacks newer properties, and
-the demo document saved by the previous release (commit bfb45ff), whose ops
-name the class ``freecad_groove.freecad.groove_op.ObjectGroove``.
+an op saved and opened again, one whose document lacks newer properties, the
+demo document saved by the previous release (commit bfb45ff), whose ops name
+the class ``freecad_groove.freecad.groove_op.ObjectGroove``, and a Groove, a
+Cylinder slot and a Plunge grind saved by commit 3d18f68, before the ops
+moved into freecad_groove/ops/ (data/make_saved_documents.py), whose stored
+class paths the old modules keep as shims.
 """
 
+import json
 import os
 
+import FreeCAD
 import pytest
 import test_groove_op as tg
-from documents import DATA, opened, path_commands, reopened
+from documents import DATA, opened, path_commands, reopened, stored_classes
+from saved_programs import op_paths, programs
 
 from freecad_groove import make_groove
-from freecad_groove.freecad import groove_op
-from freecad_groove.freecad.api import snake_case
-from freecad_groove.freecad.groove_op import op_error
+from freecad_groove.freecad import toolbit, wheel_toolbit
+from freecad_groove.freecad.addon_op import op_error
+from freecad_groove.freecad.scripting import snake_case
+from freecad_groove.ops.grind.op import ObjectPlungeGrind
+from freecad_groove.ops.groove import properties
+from freecad_groove.ops.groove.op import ObjectGroove
+from freecad_groove.ops.slot.op import ObjectCylinderSlot
 
 # The Groove op tests' document and shop fixtures, and their groove maker.
 doc, shop, groove = tg.doc, tg.shop, tg.groove
@@ -21,12 +31,12 @@ doc, shop, groove = tg.doc, tg.shop, tg.groove
 # scripts/demo's document (freecad_groove/demo.py) as commit bfb45ff saved it from FreeCAD 1.1.
 DEMO_AT_BFB45FF = os.path.join(DATA, "demo_part_saved_at_bfb45ff.FCStd")
 DEMO_OPS = ["External grooves", "Face groove", "Bore groove", "Cone groove", "Cut-off"]
-SETTABLE = [name for name in groove_op.PROPERTY_NAMES if name not in groove_op.DERIVED] + ["Comment"]
+SETTABLE = [name for name in properties.PROPERTY_NAMES if name not in properties.DERIVED] + ["Comment"]
 
 
 def _values(op):
     values = {}
-    for name in groove_op.PROPERTY_NAMES:
+    for name in properties.PROPERTY_NAMES:
         value = getattr(op, name)
         values[name] = round(value.Value, 9) if hasattr(value, "Value") else value
     return values
@@ -41,7 +51,7 @@ def test_save_and_reopen(shop, tmp_path):
     with reopened(doc, tmp_path / "groove.FCStd") as doc2:
         op2 = doc2.getObject(name)
         assert op2 is not None
-        assert isinstance(op2.Proxy, groove_op.ObjectGroove)
+        assert isinstance(op2.Proxy, ObjectGroove)
         assert _values(op2) == values
         assert path_commands(op2) == commands
         assert op2.getEditorMode("AXFA") == ["ReadOnly"]
@@ -98,7 +108,7 @@ def test_the_previous_releases_demo_opens_with_its_ops(demo_at_bfb45ff):
     ops = _groove_ops(demo_at_bfb45ff)
     assert [op.Label for op in ops] == DEMO_OPS
     for op in ops:
-        assert isinstance(op.Proxy, groove_op.ObjectGroove)
+        assert isinstance(op.Proxy, ObjectGroove)
         assert op.Path.Commands, op.Label
         assert op.getEditorMode("AXFA") == ["ReadOnly"]  # opOnDocumentRestored ran
 
@@ -120,3 +130,88 @@ def test_the_previous_releases_demo_recomputes_to_what_a_new_op_makes(demo_at_bf
         # the same after each op's own label comment
         assert path_commands(again)[1:] == path_commands(op)[1:], op.Label
         assert len(again.Proxy.plan(again)) == len(op.Proxy.plan(op)), op.Label
+
+
+# ------------------------------------------------------------------ the ops as commit 3d18f68 saved them
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+OPS_AT_3D18F68 = os.path.join(DATA, "ops_saved_at_3d18f68.FCStd")
+# What 3d18f68 posted from it, opened and recomputed, in each FreeCAD (data/post_saved_documents.py).
+PROGRAMS_AT_3D18F68 = os.path.join(DATA, "ops_saved_at_3d18f68.programs.json")
+# op -> (the proxy's class path the document stores, the class it must open as now)
+STORED_OPS = {
+    "Groove": ("freecad_groove.freecad.groove_op.ObjectGroove", ObjectGroove),
+    "CylinderSlot": ("freecad_groove.freecad.cylinder_slot_op.ObjectCylinderSlot", ObjectCylinderSlot),
+    "PlungeGrind": ("freecad_groove.freecad.plunge_grind_op.ObjectPlungeGrind", ObjectPlungeGrind),
+}
+# tool controller -> (the class path its tool bit's proxy was saved with, its module, the class's name there):
+# FreeCAD 1.1's asset tool bits; 1.0 has no such class
+STORED_BITS = {"TC__Grooving_blade": ("freecad_groove.freecad.toolbit.ToolBitGrooving", toolbit, "ToolBitGrooving"),
+               "TC__Grinding_wheel": ("freecad_groove.freecad.wheel_toolbit.ToolBitGrindingWheel", wheel_toolbit,
+                                      "ToolBitGrindingWheel")}
+
+
+@pytest.fixture
+def ops_at_3d18f68():
+    with opened(OPS_AT_3D18F68) as doc:
+        yield doc
+
+
+def test_the_ops_saved_before_the_move_open_as_this_codes_classes(ops_at_3d18f68):
+    stored = stored_classes(OPS_AT_3D18F68)
+    for name, (path, cls) in STORED_OPS.items():
+        assert stored[name] == path
+        op = ops_at_3d18f68.getObject(name)
+        assert type(op.Proxy) is cls, name
+        assert op.Path.Commands, name
+    for tc_name, (path, module, cls) in STORED_BITS.items():
+        bit = ops_at_3d18f68.getObject(tc_name).Tool
+        assert stored[bit.Name] == path
+        if module.NEW_TOOLBITS:
+            assert type(bit.Proxy) is getattr(module, cls), tc_name
+        else:  # FreeCAD 1.0 has no asset tool bits: the bit comes back without a proxy, its sizes kept
+            assert getattr(bit, "Proxy", None) is None
+        assert bit.Width.Value > 0
+
+
+def _recomputed_and_recorded(doc):
+    """The document's ops recomputed by this code; what 3d18f68 recorded in this FreeCAD after doing the same."""
+    for name in STORED_OPS:
+        doc.getObject(name).touch()
+    doc.recompute()
+    with open(PROGRAMS_AT_3D18F68) as f:
+        return json.load(f)[".".join(FreeCAD.Version()[:2])]
+
+
+def test_the_ops_saved_before_the_move_are_saved_again_with_their_class_paths_now(ops_at_3d18f68, tmp_path):
+    again = tmp_path / "again.FCStd"
+    ops_at_3d18f68.saveAs(str(again))
+    stored = stored_classes(str(again))
+    for name, (_before, cls) in STORED_OPS.items():
+        assert stored[name] == "%s.%s" % (cls.__module__, cls.__name__)
+        assert stored[name].startswith("freecad_groove.ops.")
+
+
+def test_the_ops_saved_before_the_move_recompute_to_the_paths_3d18f68_made(ops_at_3d18f68):
+    recorded = _recomputed_and_recorded(ops_at_3d18f68)["paths"]
+    now = op_paths(ops_at_3d18f68, STORED_OPS)
+    for name in STORED_OPS:
+        assert op_error(ops_at_3d18f68.getObject(name)) is None, name
+        assert now[name] == recorded[name], name
+
+
+def _changed_on_purpose_since_3d18f68(key, program):
+    """A program 3d18f68 posted, with what the one output layer changed on purpose since (issue 19): the
+    grinder posts' LinuxCNC header has its title first, as every target's (engine/output/writer.py header)."""
+    lines = program.splitlines()
+    if key.startswith("GrindJob/linuxcnc_grind_post") and lines[1].startswith("("):
+        lines[0], lines[1] = lines[1], lines[0]
+    return "\n".join(lines) + "\n"
+
+
+def test_the_ops_saved_before_the_move_post_the_programs_3d18f68_posted(ops_at_3d18f68):
+    recorded = _recomputed_and_recorded(ops_at_3d18f68)["programs"]
+    posted = programs(ROOT, ops_at_3d18f68)
+    assert sorted(posted) == sorted(recorded)
+    for key, program in posted.items():
+        assert program == _changed_on_purpose_since_3d18f68(key, recorded[key]), key

@@ -1,4 +1,4 @@
-"""The Cylinder slot op's reach check (freecad/slot_reach.py) inside FreeCAD (1.1 and 1.0).
+"""The Cylinder slot op's reach check (ops/slot/reach.py) inside FreeCAD (1.1 and 1.0).
 
 The Job's default end mill: Diameter 5, CuttingEdgeHeight 30, Length 50 (both
 versions). The shaft: R20, Z 0..50; a keyway line along Z at C90 or a sketch of
@@ -13,7 +13,7 @@ import Path.Main.Job as PathJob
 import pytest
 
 from freecad_groove import make_cylinder_slot
-from freecad_groove.freecad.cylinder_slot_op import op_error
+from freecad_groove.ops.slot.op import op_error
 
 V = FreeCAD.Vector
 

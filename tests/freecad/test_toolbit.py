@@ -20,7 +20,7 @@ from parts import face_name
 
 from freecad_groove import make_groove
 from freecad_groove.freecad import registration, shape_assets, toolbit
-from freecad_groove.freecad.groove_op import op_error
+from freecad_groove.ops.groove.op import op_error
 
 # The Groove op tests' document and shop fixtures.
 doc, shop = tg.doc, tg.shop
@@ -278,7 +278,7 @@ doc = FreeCAD.openDocument(%(path)r)
 op, bit = doc.getObject(%(op)r), doc.getObject(%(bit)r)
 doc.recompute()
 from freecad_groove.freecad import shape_assets
-from freecad_groove.freecad.groove_op import op_error
+from freecad_groove.ops.groove.op import op_error
 out.update(proxy=type(bit.Proxy).__name__, width=bit.Width.Value, corner_radius=bit.CornerRadius.Value,
            error=op_error(op), moves=len(op.Path.Commands), chooser_lists_it=shape_assets.installed())
 open(%(result)r, "w").write(json.dumps(out))

@@ -19,7 +19,7 @@ from parts import face_name, make_shop
 from pylib import require_shapely
 
 from freecad_groove import make_groove, verify_job
-from freecad_groove.freecad.turning_check import SHAPELY_MISSING, TurningCheckError
+from freecad_groove.ops.turning_check.check import SHAPELY_MISSING, TurningCheckError
 
 FILLET = 0.2**2 * (1 - math.pi / 4)
 GROOVE = dict(width=4, depth=2, infeed=1, tool_width=3, tool_corner_radius=0.2)

@@ -48,7 +48,7 @@ def _bar_polygon(call):
 def _artifact(case, call, op, part):
     import FreeCAD
 
-    from freecad_groove.freecad.groove_op import op_error
+    from freecad_groove.ops.groove.op import op_error
 
     plan = op.Proxy.current_plan(op)[0]
     tool = plan.settings.tool
@@ -93,7 +93,7 @@ def _write_artifacts(folder):
 
 
 def _in_groove(shape, sub):
-    from freecad_groove.freecad.model_grooves import read_model_groove
+    from freecad_groove.ops.groove.model import read_model_groove
 
     try:
         read_model_groove(shape, sub, "Part")

@@ -93,7 +93,7 @@ def _artifact(op, case, args):
     m = re.search(r"--retract ([\d.]+)", args)
     if m:
         retract = float(m.group(1))
-    from freecad_groove.freecad.cutting import cutting_data
+    from freecad_groove.ops.groove.cutting import cutting_data
 
     expected = _expected_moves(plans, dx, dz, cutting_data(op).feed)
     programs = {}
@@ -132,7 +132,7 @@ def _write_artifacts(folder):
     from test_groove_op import groove
     from test_posts import read
 
-    from freecad_groove.freecad.groove_op import op_error
+    from freecad_groove.ops.groove.op import op_error
 
     os.makedirs(folder, exist_ok=True)
     doc = FreeCAD.newDocument("PostArtifacts")

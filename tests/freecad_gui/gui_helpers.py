@@ -198,14 +198,14 @@ def make_gui_shop(name, feed="120 mm/min", shape=None):
 
 
 def open_panel(doc):
-    """The open Groove task panel of an op in ``doc``, or None."""
-    from freecad_groove.gui import task_panel
+    """The open task panel of a Groove or Plunge grind op in ``doc`` (their view provider's), or None."""
+    from freecad_groove.gui.op_view import OpViewProvider
 
     if not FreeCADGui.Control.activeDialog():
         return None
     for obj in doc.Objects:
         vp = getattr(getattr(obj, "ViewObject", None), "Proxy", None)
-        if isinstance(vp, task_panel.ViewProvider) and vp.panel is not None:
+        if isinstance(vp, OpViewProvider) and vp.panel is not None:
             return vp.panel
     return None
 
@@ -213,12 +213,12 @@ def open_panel(doc):
 def start_groove_command(doc, model, face_key):
     """Select a face of the Job's model (a key of parts.FACES) and press the
     Groove button; returns the task panel once its first preview is drawn."""
-    from freecad_groove.gui import COMMAND
+    from freecad_groove.ops.groove.gui.command import CommandGroove
 
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(doc.Name, model.Name, face_name(model.Shape, face_key))
     process()
-    FreeCADGui.runCommand(COMMAND)
+    FreeCADGui.runCommand(CommandGroove.NAME)
     panel = wait_for(lambda: open_panel(doc), what="the Groove task panel")
     page = panel.groove_page
     wait_for(lambda: page.preview is not None and page.replans > 0, what="the first preview")

@@ -28,7 +28,10 @@ from gui_helpers import (
 )
 from PySide import QtGui
 
-from freecad_groove.gui import slot_panel, slot_view, widgets
+from freecad_groove.gui import widgets
+from freecad_groove.ops.slot.gui import command as slot_command
+from freecad_groove.ops.slot.gui import panel as slot_panel
+from freecad_groove.ops.slot.gui import view as slot_view
 
 Ok, Apply, Cancel = QtGui.QDialogButtonBox.Ok, QtGui.QDialogButtonBox.Apply, QtGui.QDialogButtonBox.Cancel
 V = FreeCAD.Vector
@@ -67,7 +70,7 @@ def run_command(doc, picks):
         else:
             FreeCADGui.Selection.addSelection(obj)
     process()
-    FreeCADGui.runCommand(slot_view.COMMAND)
+    FreeCADGui.runCommand(slot_command.COMMAND)
     panel = wait_for(lambda: open_slot_panel(doc), what="the Cylinder slot panel")
     wait_for(lambda: panel.op_page.replans > 0, what="the first preview")
     wait_for(lambda: buttons_shown(panel), what="the panel's buttons")

@@ -11,7 +11,8 @@ import pytest
 from gui_helpers import buttons_shown, make_slot_shop, process, screenshot, task_button, version, wait_for
 from PySide import QtGui
 
-from freecad_groove.gui import slot_view
+from freecad_groove.ops.slot.gui import command as slot_command
+from freecad_groove.ops.slot.gui import view as slot_view
 
 V = FreeCAD.Vector
 
@@ -29,10 +30,10 @@ def test_command_makes_the_op_and_draws_it_wrapped(shop):
     doc, job = shop
     shaft, line = job.Model.Group
     FreeCADGui.Selection.clearSelection()
-    assert not slot_view.CommandCylinderSlot().IsActive()  # nothing selected: the command is off
+    assert not slot_command.CommandCylinderSlot().IsActive()  # nothing selected: the command is off
     FreeCADGui.Selection.addSelection(shaft, "Face1")
     FreeCADGui.Selection.addSelection(line, "Edge1")
-    FreeCADGui.runCommand(slot_view.COMMAND)
+    FreeCADGui.runCommand(slot_command.COMMAND)
     process(0.2)
     ops = [o for o in job.Operations.Group if hasattr(o, "Region")]
     assert len(ops) == 1 and ops[0].Region == "G7.1 C20. J-2. R2. K0.2 L2"  # the op's defaults

@@ -20,8 +20,9 @@ from PySide import QtGui
 
 from freecad_groove import make_groove
 from freecad_groove.freecad import faces as faces_mod
-from freecad_groove.freecad.model_grooves import MODEL_VALUES, read_model_groove
-from freecad_groove.gui import task_panel
+from freecad_groove.ops.groove.gui import panel as task_panel
+from freecad_groove.ops.groove.gui.view import TurnedFaceGate
+from freecad_groove.ops.groove.model import MODEL_VALUES, read_model_groove
 
 Ok = QtGui.QDialogButtonBox.Ok
 
@@ -77,7 +78,7 @@ def test_the_panel_shows_the_values_from_the_model_and_an_edit_overrides_one(mod
 
 def test_a_corner_radius_of_a_modelled_groove_can_be_picked(modelled):
     doc, job, model = modelled
-    gate = task_panel.TurnedFaceGate()
+    gate = TurnedFaceGate()
     torus = next("Face%d" % (i + 1) for i, f in enumerate(model.Shape.Faces) if type(f.Surface).__name__ == "Toroid")
     with pytest.raises(ValueError, match="toroid face"):  # no face a groove is cut into ...
         faces_mod.analyse_face(model.Shape.getElement(torus), torus)

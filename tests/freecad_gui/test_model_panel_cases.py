@@ -22,10 +22,11 @@ from model_parts import CASES, part_shape
 from PySide import QtGui
 
 from freecad_groove import make_groove
-from freecad_groove.freecad.groove_properties import CHAMFER_MEASURES
-from freecad_groove.freecad.model_grooves import MODEL_HINT, MODEL_VALUES, read_model_groove
-from freecad_groove.gui import COMMAND, task_panel
 from freecad_groove.gui.widgets import ERROR_LABEL
+from freecad_groove.ops.groove.gui import panel as task_panel
+from freecad_groove.ops.groove.gui.command import CommandGroove
+from freecad_groove.ops.groove.model import MODEL_HINT, MODEL_VALUES, read_model_groove
+from freecad_groove.ops.groove.properties import CHAMFER_MEASURES
 
 LENGTH_TOL = 0.001  # mm
 ANGLE_TOL = 0.01  # degrees
@@ -62,7 +63,7 @@ def open_on_face(doc, model, sub):
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(doc.Name, model.Name, sub)
     process()
-    FreeCADGui.runCommand(COMMAND)
+    FreeCADGui.runCommand(CommandGroove.NAME)
     return wait_for(lambda: open_panel(doc), what="the Groove panel on %s" % sub)
 
 

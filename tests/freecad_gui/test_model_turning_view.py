@@ -27,8 +27,9 @@ from pylib import require_shapely
 from test_model_panel import groove_face
 
 from freecad_groove import make_groove
-from freecad_groove.freecad.groove_op import op_error
-from freecad_groove.gui import turning_view
+from freecad_groove.ops.groove.op import op_error
+from freecad_groove.ops.turning_check.gui import panel as turning_panel
+from freecad_groove.ops.turning_check.gui.command import CommandCheckTurning
 
 CALL = CASES["rectangular"]
 
@@ -53,8 +54,8 @@ def shop():
 def test_check_turning_passes_the_models_groove_and_shows_the_too_deep_override(shop):
     doc, job, op = shop
     FreeCADGui.Selection.clearSelection()
-    FreeCADGui.runCommand(turning_view.COMMAND_CHECK)
-    panel = wait_for(lambda: turning_view._open_panel, what="the Turning check panel")
+    FreeCADGui.runCommand(CommandCheckTurning.NAME)
+    panel = wait_for(lambda: turning_panel._open_panel, what="the Turning check panel")
     roomy_task_panel()
     text = panel.figures.toPlainText()
     assert "%s: ok" % op.Label in text and "no gouge" in text, text

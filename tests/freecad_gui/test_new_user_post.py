@@ -17,9 +17,9 @@ import pytest
 from gui_helpers import close_shop, make_gui_shop, open_panel, process, start_groove_command, task_button, wait_for
 from PySide import QtGui
 
-from freecad_groove.freecad.groove_op import op_error
-from freecad_groove.gui import tool_page as tool_page_module
-from freecad_groove.gui.tool_page import ToolPage
+from freecad_groove.ops.groove.gui import tool_page as tool_page_module
+from freecad_groove.ops.groove.gui.tool_page import ToolPage
+from freecad_groove.ops.groove.op import op_error
 
 NAMES = ["sinumerik", "ab9", "fanuc", "haas", "linuxcnc"]
 SUFFIX = {"sinumerik": "mpf", "ab9": "nc", "fanuc": "nc", "haas": "nc", "linuxcnc": "ngc"}

@@ -21,9 +21,12 @@ from gui_helpers import (
 )
 from PySide import QtGui
 
-from freecad_groove.freecad.plunge_grind_op import ObjectPlungeGrind, op_error
-from freecad_groove.gui import grind_command, grind_panel, grind_view, qt_wrappers
+from freecad_groove.gui import qt_wrappers
 from freecad_groove.gui.widgets import ERROR_LABEL, INVALID_PROPERTY, WARNED_PROPERTY, WARNING_LABEL
+from freecad_groove.ops.grind.gui import command as grind_command
+from freecad_groove.ops.grind.gui import panel as grind_panel
+from freecad_groove.ops.grind.gui import view as grind_view
+from freecad_groove.ops.grind.op import ObjectPlungeGrind, op_error
 
 TOP = "Face6"  # Part.makeBox: the top face (Z20)
 
@@ -177,7 +180,7 @@ def test_a_scripted_op_gets_the_view_provider_and_opens_its_panel(shop):
     op = make_plunge_grind(job, (block, TOP), wheel_width=8)
     assert isinstance(op.ViewObject.Proxy, grind_view.ViewProviderPlungeGrind)
     assert op.ViewObject.Proxy.dumps()["OpPageClass"] == "PlungeGrindPage"
-    assert op.ViewObject.Proxy.dumps()["OpPageModule"] == "freecad_groove.gui.grind_panel"
+    assert op.ViewObject.Proxy.dumps()["OpPageModule"] == "freecad_groove.ops.grind.gui.panel"
     FreeCADGui.getDocument(doc.Name).setEdit(op.Name)
     panel = wait_for(lambda: open_grind_panel(doc), what="the panel")
     wait_for(lambda: panel.groove_page.replans > 0, what="the check")

@@ -1,14 +1,21 @@
-"""A document saved from FreeCAD 1.1's GUI by the previous release (commit
-bfb45ff), opened in FreeCAD's GUI (1.1 and 1.0, under Xvfb) with this code.
+"""Documents saved from FreeCAD 1.1's GUI by earlier code, opened in
+FreeCAD's GUI (1.1 and 1.0, under Xvfb) with this code.
 
-tests/freecad/data/groove_gui_saved_at_bfb45ff.FCStd (made by
-tests/freecad/data/make_saved_documents.py) stores the class paths only a GUI
-document and a tool bit hold: the op's view provider
-``freecad_groove.gui.task_panel.ViewProvider`` with its page class
-``freecad_groove.gui.task_panel.GroovePage``, and the grooving blade's tool
-bit ``freecad_groove.freecad.toolbit.ToolBitGrooving`` (a FreeCAD 1.1 class:
-FreeCAD 1.0 opens the document, reports that it cannot restore the bit's
-proxy, and keeps the bit's Width and CornerRadius, which the op reads).
+tests/freecad/data/groove_gui_saved_at_bfb45ff.FCStd (the previous release,
+commit bfb45ff) stores the class paths only a GUI document and a tool bit
+hold: the op's view provider ``freecad_groove.gui.task_panel.ViewProvider``
+with its page class ``freecad_groove.gui.task_panel.GroovePage``, and the
+grooving blade's tool bit ``freecad_groove.freecad.toolbit.ToolBitGrooving``
+(a FreeCAD 1.1 class: FreeCAD 1.0 opens the document, reports that it cannot
+restore the bit's proxy, and keeps the bit's Width and CornerRadius, which
+the op reads).
+
+tests/freecad/data/ops_saved_at_3d18f68.FCStd (commit 3d18f68, before the
+ops moved into freecad_groove/ops/; made by
+tests/freecad/data/make_saved_documents.py) stores the view providers of a
+Groove, a Cylinder slot and a Plunge grind, and the page classes of the
+Groove's and the Plunge grind's, by their paths of then: the shims in
+freecad_groove/gui/ keep them.
 """
 
 import math
@@ -22,11 +29,18 @@ from PySide import QtGui
 
 # isort: split
 # (gui_helpers has put tests/freecad on sys.path)
-from documents import DATA, opened, path_commands, without_chip_break_reentries
+from documents import DATA, opened, path_commands, stored_classes, without_chip_break_reentries
 
-from freecad_groove.freecad import groove_op, toolbit
-from freecad_groove.freecad.groove_op import op_error
-from freecad_groove.gui import ICON, task_panel
+from freecad_groove.freecad import toolbit
+from freecad_groove.freecad.addon_op import op_error
+from freecad_groove.ops.grind.gui.panel import PlungeGrindPage
+from freecad_groove.ops.grind.gui.view import ViewProviderPlungeGrind
+from freecad_groove.ops.groove.gui import ICON
+from freecad_groove.ops.groove.gui.panel import GroovePage
+from freecad_groove.ops.groove.gui.view import ViewProviderGroove
+from freecad_groove.ops.groove.op import ObjectGroove
+from freecad_groove.ops.slot.gui.panel import SlotPage
+from freecad_groove.ops.slot.gui.view import ViewProviderCylinderSlot
 
 GUI_AT_BFB45FF = os.path.join(DATA, "groove_gui_saved_at_bfb45ff.FCStd")
 # What make_saved_documents.py made: the blade, and the groove on the R20 cylinder.
@@ -50,7 +64,7 @@ def saved():
 def test_the_op_keeps_this_codes_view_provider(saved):
     doc, op = saved
     view_provider = op.ViewObject.Proxy
-    assert isinstance(view_provider, task_panel.ViewProvider)
+    assert type(view_provider) is ViewProviderGroove
     assert view_provider.getIcon() == ICON
     # what the view provider stored: the page FreeCAD builds to edit the op
     assert (view_provider.OpPageModule, view_provider.OpPageClass) == ("freecad_groove.gui.task_panel", "GroovePage")
@@ -58,7 +72,7 @@ def test_the_op_keeps_this_codes_view_provider(saved):
 
 def test_the_op_recomputes_to_the_path_it_saved(saved):
     doc, op = saved
-    assert isinstance(op.Proxy, groove_op.ObjectGroove)
+    assert isinstance(op.Proxy, ObjectGroove)
     path = path_commands(op)
     op.touch()
     doc.recompute()
@@ -100,7 +114,7 @@ def test_double_click_opens_the_groove_panel(saved):
     FreeCADGui.getDocument(doc.Name).setEdit(op.Name)  # what a double-click in the tree does
     panel = wait_for(lambda: open_panel(doc), what="the Groove task panel")
     page = panel.groove_page
-    assert isinstance(page, task_panel.GroovePage)
+    assert type(page) is GroovePage
     for prop, value in GROOVE.items():
         assert page.field(prop).property("rawValue") == pytest.approx(value), prop
     wait_for(lambda: page.replans > 0, what="the preview")
@@ -110,3 +124,71 @@ def test_double_click_opens_the_groove_panel(saved):
     task_button(panel, QtGui.QDialogButtonBox.Cancel).click()
     wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
     assert doc.getObject(op.Name) is op and op.Width.Value == GROOVE["Width"]
+
+
+# ------------------------------------------------------------------ the ops as commit 3d18f68 saved them
+
+OPS_AT_3D18F68 = os.path.join(DATA, "ops_saved_at_3d18f68.FCStd")
+# op -> (the view provider's class path the document stores, the class it must open as now,
+#        the page class stored in the view provider's state then (None: it keeps none), the page class now)
+STORED_VIEWS = {
+    "Groove": ("freecad_groove.gui.task_panel.ViewProvider", ViewProviderGroove,
+               ("freecad_groove.gui.task_panel", "GroovePage"), GroovePage),
+    "CylinderSlot": ("freecad_groove.gui.slot_view.ViewProviderCylinderSlot", ViewProviderCylinderSlot, None,
+                     SlotPage),
+    "PlungeGrind": ("freecad_groove.gui.grind_view.ViewProviderPlungeGrind", ViewProviderPlungeGrind,
+                    ("freecad_groove.gui.grind_panel", "PlungeGrindPage"), PlungeGrindPage),
+}
+
+
+@pytest.fixture
+def ops_saved():
+    """The document 3d18f68 saved, open in the GUI."""
+    FreeCADGui.getMainWindow().showMaximized()
+    FreeCADGui.activateWorkbench("CAMWorkbench")
+    with opened(OPS_AT_3D18F68) as doc:
+        process()
+        yield doc
+        FreeCADGui.Control.closeDialog()
+        process()
+    process()
+
+
+def _panel_of(op):
+    """The open task panel of ``op`` (its view provider's), or None."""
+    panel = getattr(op.ViewObject.Proxy, "panel", None)
+    return panel if FreeCADGui.Control.activeDialog() else None
+
+
+def test_the_ops_saved_before_the_move_keep_this_codes_view_providers(ops_saved):
+    stored = stored_classes(OPS_AT_3D18F68, "GuiDocument.xml", "ViewProvider")
+    for name, (path, cls, page, _page_cls) in STORED_VIEWS.items():
+        assert stored[name] == path
+        view_provider = ops_saved.getObject(name).ViewObject.Proxy
+        assert type(view_provider) is cls, name
+        if page is not None:  # what the view provider stored: the page FreeCAD builds to edit the op
+            assert (view_provider.OpPageModule, view_provider.OpPageClass) == page
+
+
+@pytest.mark.parametrize("name", list(STORED_VIEWS))
+def test_double_click_opens_the_panel_of_an_op_saved_before_the_move(ops_saved, name):
+    op = ops_saved.getObject(name)
+    FreeCADGui.getDocument(ops_saved.Name).setEdit(op.Name)  # what a double-click in the tree does
+    panel = wait_for(lambda: _panel_of(op), what="the %s task panel" % name)
+    page = panel.op_page
+    assert type(page) is STORED_VIEWS[name][3]
+    wait_for(lambda: page.replans > 0, what="the check of its values")
+    assert page.error is None, page.error
+    screenshot("%s-%s-saved-at-3d18f68" % (version(), name))
+    task_button(panel, QtGui.QDialogButtonBox.Cancel).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    assert ops_saved.getObject(name) is op and op_error(op) is None
+
+
+def test_the_ops_saved_before_the_move_are_saved_again_with_their_view_providers_paths_now(ops_saved, tmp_path):
+    again = tmp_path / "again.FCStd"
+    ops_saved.saveAs(str(again))
+    stored = stored_classes(again, "GuiDocument.xml", "ViewProvider")
+    for name, (_before, cls, _page, _page_cls) in STORED_VIEWS.items():
+        assert stored[name] == "%s.%s" % (cls.__module__, cls.__name__)
+        assert stored[name].startswith("freecad_groove.ops.")

@@ -18,8 +18,8 @@ from parts import face_name
 from PySide import QtCore, QtGui
 
 from freecad_groove import make_groove, make_plunge_grind
-from freecad_groove.freecad import plunge_grind_op, shape_assets, toolbit, wheel_toolbit
-from freecad_groove.freecad.groove_op import op_error
+from freecad_groove.freecad import shape_assets, toolbit, wheel_toolbit
+from freecad_groove.freecad.addon_op import op_error
 
 pytestmark = pytest.mark.skipif(not shape_assets.AVAILABLE, reason="FreeCAD 1.0 has no tool bit shape chooser: "
                                 "the grooving blade comes from the Groove panel's tool page")
@@ -166,7 +166,7 @@ def test_the_shape_chooser_offers_the_grinding_wheel():
         job.Proxy.addToolController(tc)
         op = make_plunge_grind(job, (model, "Face6"), tool_controller=tc)
         doc.recompute()
-        assert plunge_grind_op.op_error(op) is None, plunge_grind_op.op_error(op)
+        assert op_error(op) is None, op_error(op)
         assert op.Proxy.current_plan(op).call.Z == pytest.approx(36.0)  # flush with Y40: the 8 mm wheel's middle
         assert op.Proxy.current_plan(op).warnings == []
     finally:

@@ -31,8 +31,11 @@ from parts import face_name  # noqa: E402
 from PySide import QtCore, QtGui
 
 from freecad_groove import make_groove  # noqa: E402
-from freecad_groove.gui import task_panel, widgets  # noqa: E402
-from freecad_groove.gui.tool_page import ToolPage  # noqa: E402
+from freecad_groove.gui import widgets  # noqa: E402
+from freecad_groove.ops.groove.gui import panel as task_panel  # noqa: E402
+from freecad_groove.ops.groove.gui.command import CommandGroove  # noqa: E402
+from freecad_groove.ops.groove.gui.tool_page import ToolPage  # noqa: E402
+from freecad_groove.ops.groove.gui.view import TurnedFaceGate, ViewProviderGroove  # noqa: E402
 
 Ok, Apply, Cancel = QtGui.QDialogButtonBox.Ok, QtGui.QDialogButtonBox.Apply, QtGui.QDialogButtonBox.Cancel
 TOOL_WIDTH = 3.0  # the default tool bit has no Width: typed into the op's ToolWidth (start_command)
@@ -115,15 +118,11 @@ def test_command_sits_with_cams_operations_as_turning_groove(shop):
     assert texts[at - 1] == menu_text("CAM_Vcarve"), texts
     assert actions[at + 1].isSeparator() or texts[at + 1] == "Plunge grind" and actions[at + 2].isSeparator(), texts
     assert at < len(texts) - 4, "not at the bottom of the menu: %s" % texts
-    from freecad_groove.gui.command import CommandGroove
-
     assert CommandGroove().IsActive()  # the document has a Job
     screenshot("%s-toolbar" % version())
 
 
 def test_command_needs_a_job():
-    from freecad_groove.gui.command import CommandGroove
-
     doc = FreeCAD.newDocument("NoJob")
     try:
         assert not CommandGroove().IsActive()
@@ -317,7 +316,7 @@ def test_double_click_reopens_the_panel_with_the_ops_values(shop):
     doc, job, model = shop
     op = make_groove(job, (model, face_name(model.Shape, "cylinder")), width=4.5, depth=1.5, position=6,
                      edge_corner1_type="Chamfer", edge_corner1=0.5, tool_width=TOOL_WIDTH)
-    assert isinstance(op.ViewObject.Proxy, task_panel.ViewProvider)  # scripts' ops get the view provider too
+    assert isinstance(op.ViewObject.Proxy, ViewProviderGroove)  # scripts' ops get the view provider too
     FreeCADGui.getDocument(doc.Name).setEdit(op.Name)  # what a double-click in the tree does
     panel = wait_for(lambda: open_panel(doc), what="the panel")
     page = panel.groove_page
@@ -367,7 +366,7 @@ def test_faces_are_added_and_removed_on_the_base_geometry_page(shop):
 
 def test_only_turned_faces_can_be_picked(shop):
     doc, job, model = shop
-    gate = task_panel.TurnedFaceGate()
+    gate = TurnedFaceGate()
     names = ["Face%d" % (i + 1) for i in range(len(model.Shape.Faces))]
     assert all(gate.allow(doc, model, n) for n in names)
     assert not gate.allow(doc, model, "Edge1")
@@ -443,7 +442,7 @@ def test_without_a_grooving_blade_the_panel_says_so_and_one_click_makes_one(shop
 def test_the_grooving_tool_controller_button_asks_for_an_unknown_width(shop, monkeypatch):
     doc, job, model = shop
     op, panel, page = start_command(doc, model, "cylinder", blade=None)
-    from freecad_groove.gui import tool_page as tool_page_mod
+    from freecad_groove.ops.groove.gui import tool_page as tool_page_mod
 
     asked = []
     monkeypatch.setattr(tool_page_mod, "ask_blade_width", lambda parent: asked.append(parent) or None)
@@ -459,9 +458,7 @@ def test_ok_without_a_face_says_what_is_missing(shop):
     doc, job, model = shop
     FreeCADGui.Selection.clearSelection()
     process()
-    from freecad_groove.gui import COMMAND
-
-    FreeCADGui.runCommand(COMMAND)
+    FreeCADGui.runCommand(CommandGroove.NAME)
     panel = wait_for(lambda: open_panel(doc), what="the Groove task panel")
     page = panel.groove_page
     wait_for(lambda: page.replans > 0, what="the first preview")

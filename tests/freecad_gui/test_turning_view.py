@@ -28,7 +28,8 @@ from pylib import require_shapely  # noqa: E402
 from PySide import QtGui
 
 from freecad_groove import make_groove  # noqa: E402
-from freecad_groove.gui import turning_view  # noqa: E402
+from freecad_groove.ops.turning_check.gui import panel as turning_panel  # noqa: E402
+from freecad_groove.ops.turning_check.gui.command import CommandCheckTurning  # noqa: E402
 
 
 @pytest.fixture(scope="module", autouse=True)
@@ -56,9 +57,9 @@ def shop():
 
 def test_command_sits_in_cams_project_setup_after_sanity(shop):
     toolbars = [tb for tb in FreeCADGui.getMainWindow().findChildren(QtGui.QToolBar) if tb.isVisible()]
-    setup = next(tb for tb in toolbars if tb.objectName() == turning_view.TOOLBAR)
+    setup = next(tb for tb in toolbars if tb.objectName() == CommandCheckTurning.TOOLBAR)
     assert "Check turning" in [a.text() for a in setup.actions()]
-    sanity = FreeCADGui.Command.get(turning_view.MENU_AFTER).getInfo()["menuText"].replace("&", "")
+    sanity = FreeCADGui.Command.get(CommandCheckTurning.MENU_AFTER).getInfo()["menuText"].replace("&", "")
     for menu in FreeCADGui.getMainWindow().menuBar().findChildren(QtGui.QMenu):
         texts = [a.text().replace("&", "") for a in menu.actions()]
         if sanity in texts:
@@ -66,7 +67,7 @@ def test_command_sits_in_cams_project_setup_after_sanity(shop):
             break
     else:
         raise AssertionError("no menu holds %s" % sanity)
-    assert turning_view.CommandCheckTurning().IsActive()
+    assert CommandCheckTurning().IsActive()
 
 
 def plunge_deeper(op):
@@ -83,8 +84,8 @@ def plunge_deeper(op):
 def test_check_turning_shows_the_section_then_the_gouge(shop):
     doc, job, op = shop
     FreeCADGui.Selection.clearSelection()
-    FreeCADGui.runCommand(turning_view.COMMAND_CHECK)
-    panel = wait_for(lambda: turning_view._open_panel, what="the Turning check panel")
+    FreeCADGui.runCommand(CommandCheckTurning.NAME)
+    panel = wait_for(lambda: turning_panel._open_panel, what="the Turning check panel")
     roomy_task_panel()
     text = panel.figures.toPlainText()
     assert "%s: ok" % op.Label in text and "no gouge" in text and "removed 7.98" in text, text
@@ -102,10 +103,10 @@ def test_check_turning_shows_the_section_then_the_gouge(shop):
     assert panel.drawing.drawn["gouge"] and panel.runs == 2
     screenshot("%s-turning-check-gouge" % version())
 
-    FreeCADGui.runCommand(turning_view.COMMAND_CHECK)  # pressed again: the same panel, checked anew
+    FreeCADGui.runCommand(CommandCheckTurning.NAME)  # pressed again: the same panel, checked anew
     process()
-    assert turning_view._open_panel is panel and panel.runs == 3
+    assert turning_panel._open_panel is panel and panel.runs == 3
     panel.reject()
     process()
-    assert not panel.drawing.in_scene() and turning_view._open_panel is None
+    assert not panel.drawing.in_scene() and turning_panel._open_panel is None
     assert not FreeCADGui.Control.activeDialog()

@@ -3,7 +3,7 @@
 from typing import Mapping, Optional
 
 from ...engine import CycleError
-from ..groove_properties import describe_cycle93_parameter
+from ...ops.groove.properties import describe_cycle93_parameter
 
 
 class PostError(ValueError):

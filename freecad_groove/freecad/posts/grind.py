@@ -30,7 +30,7 @@ from typing import Any, Iterable, List, Optional, Sequence, Union
 from ...engine.errors import ProgramError
 from ...engine.grind_program import GrindItem, PlainMoves, WheelChange, grind_program
 from ...engine.moves import FEED, RAPID, Move
-from ..plunge_grind_op import ObjectPlungeGrind, op_error
+from ...ops.grind.op import ObjectPlungeGrind, op_error
 from ..units import SECONDS_PER_MINUTE
 from .command_post import each_part, post_class, reported, script_export
 from .errors import PostError

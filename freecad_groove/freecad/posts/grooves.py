@@ -10,8 +10,8 @@ from ...engine import DWELL, FEED, CycleError, ProgramError
 from ...engine.moves import Move
 from ...engine.native.cycle93_pecking import retract_note
 from ...engine.numbers import MM_PER_INCH
-from ..cutting import CuttingData, cutting_data
-from ..groove_properties import GrooveInputError
+from ...ops.groove.cutting import CuttingData, cutting_data
+from ...ops.groove.properties import GrooveInputError
 from .controls import NATIVE_CYCLE93, NATIVE_PECKING
 from .errors import PostError
 from .objects import label_of
