@@ -26,7 +26,7 @@ from freecad_groove.engine import FEED, RAPID, CycleError, Move, ProgramError, r
 from freecad_groove.engine.block_forms import BlockForm, CycleCall, OpenBlocks, SingleBlock, call_label
 from freecad_groove.engine.cycle import Cycle
 from freecad_groove.engine.cycles.ab_g77 import G77
-from freecad_groove.engine.cycles.pecking import format_number, read_block
+from freecad_groove.engine.cycles.cycle_words import read_block, word_value
 from freecad_groove.engine.region_blocks import RegionBlocks
 from freecad_groove.engine.retract_block import RetractBlock
 from freecad_groove.engine.translator import translate_program
@@ -145,7 +145,7 @@ class ToyPlunge(Cycle):
         return cls(**read_block(" ".join(text.split("\n")), cls.NAME, ("X", "F")))
 
     def emit(self) -> str:
-        return " ".join([self.NAME] + [letter + format_number(value) for letter, value in
+        return " ".join([self.NAME] + [letter + word_value(value) for letter, value in
                                        (("X", self.X), ("F", self.F)) if value is not None])
 
     def validate(self, settings: object = None) -> "ToyPlunge":

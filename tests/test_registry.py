@@ -17,7 +17,7 @@ from freecad_groove.engine import FEED, RAPID, CycleError, Move, ProgramError, r
 from freecad_groove.engine.cycle import Cycle
 from freecad_groove.engine.cycles import cycle93
 from freecad_groove.engine.cycles.ab_g77 import G77
-from freecad_groove.engine.cycles.pecking import format_number, read_block
+from freecad_groove.engine.cycles.cycle_words import read_block, word_value
 from freecad_groove.engine.input_controls import DIALECTS
 from freecad_groove.engine.translator import translate_program
 
@@ -86,7 +86,7 @@ class ToyPlunge(Cycle):
         return cls(**read_block(text, cls.NAME, ("X", "F")))
 
     def emit(self) -> str:
-        return " ".join([self.NAME] + [f.name + format_number(getattr(self, f.name)) for f in fields(self)
+        return " ".join([self.NAME] + [f.name + word_value(getattr(self, f.name)) for f in fields(self)
                                        if getattr(self, f.name) is not None])
 
     def validate(self, settings: object = None) -> "ToyPlunge":

@@ -66,7 +66,7 @@ from ..moves import DRESS, FEED, MachineState, Move
 from ..numbers import MAX_MOVES
 from ..registry import G_WORD, register
 from ..settings import DEFAULT_SETTINGS, Settings
-from .pecking import TOLERANCE, check_number, format_number, read_block, words_text
+from .cycle_words import TOLERANCE, check_number, read_block, word_value, words_text
 
 __all__ = ["G83", "G83_1", "GrindPlan", "MAX_PROGRAM_NUMBER", "MAX_COUNT"]
 
@@ -260,7 +260,7 @@ class G83(Cycle):
         if abs(primary - secondary) <= TOLERANCE:
             raise CycleError("I" if self.I is not None else "X", self.I if self.I is not None else self.X,
                              "the secondary reversal point equals the primary one (X%s): no reciprocation"
-                             % format_number(primary), cycle=self.NAME)
+                             % word_value(primary), cycle=self.NAME)
         feed = self.F if self.F is not None else state.feed
         plan = GrindPlan(
             state.x, state.y, state.z, primary, secondary, self._position("Y", state.y, inc),

@@ -54,7 +54,8 @@ from ..errors import CycleError
 from ..registry import G_WORD, register
 from ..retract_block import RetractBlock
 from ..settings import DEFAULT_SETTINGS, Settings
-from .pecking import PeckingCycle, check_number, format_number, read_block
+from .cycle_words import check_number, read_block, word_value
+from .pecking import PeckingCycle
 
 __all__ = ["FanucG75", "FanucG74", "HaasG75", "HaasG74"]
 
@@ -95,7 +96,7 @@ class _Fanuc(PeckingCycle):
         cycle = self._words_text()
         if self.e is None:
             return cycle
-        return "%s R%s\n%s" % (self.NAME, format_number(self.e), cycle)
+        return "%s R%s\n%s" % (self.NAME, word_value(self.e), cycle)
 
     @classmethod
     def parse(cls, text: str) -> "PeckingCycle":

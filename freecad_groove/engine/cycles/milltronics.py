@@ -53,7 +53,7 @@ from ..moves import FEED, RAPID, MachineState, Move
 from ..numbers import ARC_CHORD_TOLERANCE, MAX_MOVES, MM_PER_INCH
 from ..registry import G_WORD, register
 from ..settings import DEFAULT_SETTINGS, Settings
-from .pecking import check_number, format_number
+from .cycle_words import check_number, word_value
 
 __all__ = ["G31", "G32", "G33", "G34", "MilltronicsCycle"]
 
@@ -172,10 +172,10 @@ class MilltronicsCycle(Cycle):
 
     def emit(self) -> str:
         """The assignment blocks and the call as the control reads them."""
-        lines = ["%s=%s" % (key, format_number(getattr(self, key))) for key in PARAMETERS
+        lines = ["%s=%s" % (key, word_value(getattr(self, key))) for key in PARAMETERS
                  if getattr(self, key) is not None]
         parts = [self.NAME] + (["G99"] if self.G99 else []) + ([self.compensation] if self.compensation else [])
-        parts += [letter + format_number(getattr(self, letter), letter) for letter in LETTERS
+        parts += [letter + word_value(getattr(self, letter), letter) for letter in LETTERS
                   if getattr(self, letter) is not None]
         return "\n".join(lines + [" ".join(parts)])
 
@@ -195,7 +195,7 @@ class MilltronicsCycle(Cycle):
         if self.F is not None and not self.F > 0:
             raise self._error("F", "must be greater than 0")
         if self.V is not None and self.Z is not None and self.V < self.Z - TOLERANCE:
-            raise self._error("V", "the first depth is below the final depth Z%s" % format_number(self.Z))
+            raise self._error("V", "the first depth is below the final depth Z%s" % word_value(self.Z))
         for key in ("P151", "P152", "P155"):
             value = getattr(self, key)
             if value is not None and not value > 0:
@@ -213,7 +213,7 @@ class MilltronicsCycle(Cycle):
             raise CycleError("tool diameter", diameter, "must be greater than 0", cycle=self.NAME)
         if self.P155 is not None and self.P155 > diameter + TOLERANCE:
             raise self._error("P155", "the cut width is larger than the tool (diameter %s): ridges would be left"
-                              % format_number(diameter))
+                              % word_value(diameter))
 
     # -- the program's memory -------------------------------------------------------
 
@@ -237,16 +237,16 @@ class MilltronicsCycle(Cycle):
     def _depths(self, clearance: float, final: float) -> Tuple[float, ...]:
         """V, V - Q, ... down to ``final`` (Z, or Z + P154)."""
         if not final < clearance - TOLERANCE:
-            raise self._error("Z", "the final depth must be below the clearance plane R%s" % format_number(clearance))
+            raise self._error("Z", "the final depth must be below the clearance plane R%s" % word_value(clearance))
         first = self.V
         if first is None:
             first = clearance - self._require("Q", "the first depth without V is R - Q")
         if first > clearance + TOLERANCE:
-            raise self._error("V", "the first depth is above the clearance plane R%s" % format_number(clearance))
+            raise self._error("V", "the first depth is above the clearance plane R%s" % word_value(clearance))
         if first < final - TOLERANCE:
             name = "V" if self.V is not None else "Q"
             raise CycleError(name, getattr(self, name), "the first depth %s is below the final depth %s"
-                             % (format_number(first), format_number(final)), cycle=self.NAME)
+                             % (word_value(first), word_value(final)), cycle=self.NAME)
         depths = [max(first, final)]
         while depths[-1] > final + TOLERANCE:
             step = self._require("Q", "more than one depth from V to Z")
@@ -279,7 +279,7 @@ class MilltronicsCycle(Cycle):
             raise CycleError("F", None, "no X-Y feed in force: program F before the call", cycle=self.NAME)
         for key, size in (("P151", size_x), ("P152", size_y)):
             if size < diameter - TOLERANCE:
-                raise self._error(key, "the rectangle is smaller than the tool (diameter %s)" % format_number(diameter))
+                raise self._error(key, "the rectangle is smaller than the tool (diameter %s)" % word_value(diameter))
         lift = settings.milltronics_lift_inch * (MM_PER_INCH if state.metric else 1.0)
         depths = self._depths(clearance, z if final is None else final)
         return Cut(state.x, state.y, state.z, size_x, size_y, width, diameter / 2.0, clearance, depths, lift,
@@ -474,13 +474,13 @@ class G34(MilltronicsCycle):
         corner, stock = self.P150 or 0.0, self.P153 or 0.0
         if 0 < corner < cut.radius - TOLERANCE:
             raise self._error("P150", "the corner radius is smaller than the tool radius %s (0 cuts the corners at "
-                                      "the tool radius)" % format_number(cut.radius))
+                                      "the tool radius)" % word_value(cut.radius))
         if corner > min(cut.size_x, cut.size_y) / 2.0 + TOLERANCE:
             raise self._error("P150", "the corner radius is more than half the pocket's short side")
         for key, size in (("P151", cut.size_x), ("P152", cut.size_y)):
             if size - 2 * stock < 2 * cut.radius - TOLERANCE:
                 raise CycleError("P153", stock, "the pocket less the finish stock on both walls (%s = %s) is "
-                                 "smaller than the tool" % (key, format_number(size)), cycle=self.NAME)
+                                 "smaller than the tool" % (key, word_value(size)), cycle=self.NAME)
 
 
 @register
@@ -508,7 +508,7 @@ class G31(MilltronicsCycle):
     def note(self, state: MachineState, settings: Settings) -> str:
         """The Z used and where it comes from, for the translated program's comment."""
         source = "the last R" if self.R is not None else "setting milltronics_clearance_inch"
-        return "Z%s, %s" % (format_number(self.height(state, settings)), source)
+        return "Z%s, %s" % (word_value(self.height(state, settings)), source)
 
     def expand(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[Move]:
         """One rapid of Z alone (X and Y None: held, and not needed, so the call may come before any X Y, as
@@ -530,4 +530,4 @@ class G32(G31):
         return settings.milltronics_tool_change_inch * (MM_PER_INCH if state.metric else 1.0)
 
     def note(self, state: MachineState, settings: Settings) -> str:
-        return "Z%s, setting milltronics_tool_change_inch" % format_number(self.height(state, settings))
+        return "Z%s, setting milltronics_tool_change_inch" % word_value(self.height(state, settings))

@@ -21,7 +21,8 @@ from dataclasses import replace
 from typing import Any, Dict, List, Optional
 
 from ..cycles.cycle93 import DEFAULT_VRT_INCH, DEFAULT_VRT_MM, Cycle93
-from ..cycles.pecking import F_DECIMALS, PeckingLayout
+from ..cycles.cycle_words import F_DECIMALS
+from ..cycles.pecking import PeckingLayout
 from ..errors import CycleError
 from ..moves import GroovingTool, MachineState, Move
 from ..numbers import format_decimal

@@ -9,7 +9,7 @@ import math
 import shlex
 from typing import List, Optional, Sequence, Tuple, Union
 
-from ...engine.cycles.pecking import DECIMALS as CYCLE_WORD_DECIMALS
+from ...engine.cycles.cycle_words import DECIMALS as CYCLE_WORD_DECIMALS
 from ...engine.moves import REFERENCE_MINUS, REFERENCE_PLUS
 from .controls import NATIVE_CYCLE93, NATIVE_PECKING, Control, control_named
 from .errors import PostError
