@@ -16,27 +16,35 @@ times as fast as the feed (the machining-time benchmark's rates: 10,000 and
 rises through the columns it has just cut, across at the clearance, and down
 only to REENTRY_CLEARANCE above the highest material the plunges left under
 the blade (an upper bound of what stands).
+
+The decisions are taken on the chorded trace, the moves written along the
+exact path (``Envelope.path``, split at the same plunge positions): arcs
+where the blade's corner rolls over a profile arc or round a vertex, between
+the same stretch bounds the chorded trace has (``_Written``).
 """
 
 import math
 from bisect import bisect_left, bisect_right
-from typing import TYPE_CHECKING, Callable, List, Tuple
+from typing import TYPE_CHECKING, Callable, Dict, Iterator, List, Optional, Sequence, Tuple
 
-from ..envelope import Envelope
-from .cycle93_constants import REENTRY_CLEARANCE_INCH, REENTRY_CLEARANCE_MM
+from ..envelope import Envelope, PathPoint, Turn, on_circles, path_moves
+from .cycle93_constants import PATH_TOLERANCE, REENTRY_CLEARANCE_INCH, REENTRY_CLEARANCE_MM
 from .cycle93_material import SIDE_EPS, MaterialTop, lower_hull
 
 if TYPE_CHECKING:  # the geometry imports this module
     from .cycle93_geometry import GrooveGeometry
 
 Point = Tuple[float, float]
-Go = Callable[[str, float, float], None]
+Go = Callable[..., None]  # go(kind, u, v, turn=None): "r" rapid or "f" feed to (u, v), along a circle with turn
 
 # Rapid rate over feed rate that decides between feeding through a gap and
 # rapiding around it (the benchmark's 10,000 and 100 mm/min).
 RAPID_FEED_RATIO = 100.0
 # A trace point this close to a plunge position along u is at it (split_at puts them there exactly).
 STEP_EPS = 1e-9
+# The chorded trace's and the exact path's stretch bounds are the same when they
+# lie this close along u (rounding apart, the same split points and walls).
+BOUND_EPS = 1e-6
 
 
 def _groups(pts: List[Point], steps: List[float]) -> List[Tuple[int, int]]:
@@ -51,6 +59,40 @@ def _groups(pts: List[Point], steps: List[float]) -> List[Tuple[int, int]]:
             bounds.append(k)
     bounds.append(len(pts) - 1)
     return list(zip(bounds, bounds[1:])) if len(pts) > 1 else [(0, 0)]
+
+
+def _bounds(pts: Sequence[Point], steps: List[float]) -> List[int]:
+    """The point indexes where the stretches begin and end (``_groups``)."""
+    groups = _groups(list(pts), steps)
+    return [first for first, _last in groups] + [groups[-1][1]]
+
+
+class _Written:
+    """What a pass writes between two stretch bounds of its chorded trace
+    ``pts``: the moves along the exact path ``exact`` between the same bounds
+    (its arcs), or, where the two do not line up bound for bound or an arc of
+    the path does not start and end on its circle (not seen; a guard), the
+    chords themselves."""
+
+    def __init__(self, pts: List[Point], exact: Optional[List[PathPoint]], steps: List[float]) -> None:
+        self.pts, self.exact = pts, exact
+        self.index: Dict[int, int] = {}
+        if exact and on_circles(exact):
+            chorded, along = _bounds(pts, steps), _bounds(exact, steps)
+            if len(chorded) == len(along) and all(abs(pts[i][0] - exact[j][0]) <= BOUND_EPS
+                                                  for i, j in zip(chorded, along)):
+                self.index = dict(zip(chorded, along))
+
+    def point(self, i: int) -> Point:
+        """The point written at the chorded trace's bound ``i``."""
+        return self.exact[self.index[i]] if self.index else self.pts[i]
+
+    def moves(self, i: int, j: int) -> Iterator[Tuple[Point, Turn]]:
+        """The moves (end, turn) from bound ``i`` to bound ``j`` (path_moves)."""
+        if not self.index:
+            return ((q, None) for q in self.pts[i + 1:j + 1])
+        a, b = self.index[i], self.index[j]
+        return path_moves(self.exact[a], self.exact[a + 1:b + 1], PATH_TOLERANCE)
 
 
 def _element(env: Envelope, x: float) -> Tuple[Point, Point, object]:
@@ -115,12 +157,16 @@ def _length(pts: List[Point]) -> float:
 
 
 def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, material: MaterialTop,
-                        steps: List[float], top: List[Point], env: Envelope, rough: bool) -> None:
+                        steps: List[float], top: List[Point], env: Envelope, rough: bool,
+                        exact: Optional[List[PathPoint]] = None) -> None:
     """Feed the stretches of the trace ``pts`` on the envelope of ``top``
     that cut, linked the cheaper way; the blade comes from and goes back to
-    the clearance. A roughing pass (``rough``) is noted in ``material``."""
+    the clearance. A roughing pass (``rough``) is noted in ``material``.
+    ``exact``: the same pass as an exact path (arcs), split at ``steps`` too:
+    the moves follow it (``_Written``)."""
     w, r = geo.tool.width, geo.tool.corner_radius
     runs = _stretches(pts, material, w, r, steps, top, env)
+    written = _Written(pts, exact, steps)
     if rough:
         us = [u for u, _v in pts] + ([material.passed[1], material.passed[2]] if material.passed else [])
         material.note_pass(env, min(us), max(us))
@@ -138,15 +184,15 @@ def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, materia
                 go("r", end[0], geo.clearance(end[0]))
                 here = None
             else:
-                for q in gap[1:]:
-                    go("f", *q)
+                for q, turn in written.moves(here, first):
+                    go("f", q[0], q[1], turn)
         if here is None:
             entry = _entry(geo, material, start)
             go("r", start[0], geo.clearance(start[0]))
             go("r", start[0], entry)
-            go("f", *start)
-        for q in pts[first + 1:last + 1]:
-            go("f", *q)
+            go("f", *written.point(first))
+        for q, turn in written.moves(first, last):
+            go("f", q[0], q[1], turn)
         here = last
     if here is not None:
         end = pts[here]
