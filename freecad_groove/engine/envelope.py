@@ -27,6 +27,7 @@ from typing import Dict, Iterator, List, Optional, Sequence, Set, Tuple
 
 from .envelope_contacts import EDGE_EPS, Arc, top_curves
 from .envelope_curves import CUP, LINE, Curve, chords, slope, upper_envelope, value
+from .numbers import MIN_ARC_CHORD
 
 Point = Tuple[float, float]
 # A move along a circle of the groove frame: its centre (u, v) and whether it
@@ -38,10 +39,6 @@ __all__ = ["EDGE_EPS", "Arc", "Envelope", "PathPoint", "arc_points", "on_circles
 JUMP = 1e-9  # a change of level this large where two pieces meet is a wall: move straight along it
 SAME_U = 1e-7  # points closer than this along u are at the same u (no sliver moves)
 KINK = 1e-9  # two pieces whose slopes differ more than this where they meet make a kink
-# An arc shorter than this (chord, in the profile's units) is written as its
-# chords: its end rounded to the output's resolution could fall behind its
-# start and turn it the other way round the whole circle.
-MIN_ARC_CHORD = 0.002
 # An arc's ends lie on its circle: moved at most SAME_U along u (slivers), or
 # JUMP along v where a piece starts.
 ON_CIRCLE = 1e-6
