@@ -231,8 +231,15 @@ def declared_grooves(name: str, model, start, settings, blade: GroovingTool) -> 
         lo, hi, m = geometry.final_top[0][0], geometry.final_top[-1][0], geometry.slope
         above = [(lo, m * lo), (hi, m * hi), (hi, m * hi + CONTOUR_AIR), (lo, m * lo + CONTOUR_AIR)]
         air = [geometry.frame.point(u, v) for u, v in above]
-        return model.plunge_direction(), [geometry.region_world()], [air]
+        # the groove as declared, its arcs within the simulation's own tolerance (PATH_TOLERANCE is in
+        # the program's units: 0.005 mm in an inch program, as much as the exact arcs the passes cut)
+        return model.plunge_direction(), [geometry.region_world(SWEEP_TOL * _units(start))], [air]
     raise ProgramError("verify does not know the groove %s declares" % name)
+
+
+def _units(state) -> float:
+    """Program units per mm in ``state``."""
+    return 1.0 if state.metric else 1.0 / MM_PER_INCH
 
 
 def _plunge_groove(axis: str, plunge: str, blade: GroovingTool, p0: float, bottom: float, s: float) -> list[Point]:

@@ -47,25 +47,28 @@ ARTIFACT_CASES = {  # name -> (groove key, keywords, post arguments)
 
 
 def _expected_moves(plans, dx, dz, feed):
-    """The engine's moves from the first start point on (links included), shifted by dx, dz."""
-    from freecad_groove.engine.moves import DWELL, FEED, RAPID
+    """The engine's moves from the first start point on (links included), shifted by dx, dz: [kind,
+    x, z, f, p, centre] (centre: an arc's, shifted, else None)."""
+    from freecad_groove.engine.moves import ARCS, DWELL, FEED, RAPID
 
     first = plans[0]
-    expected = [[RAPID, first.start.x + dx, first.start.z + dz, None, 0.0]]
+    expected = [[RAPID, first.start.x + dx, first.start.z + dz, None, 0.0, None]]
     x, z = first.start.x, first.start.z
     for k, plan in enumerate(plans):
         if k:
             for lx, lz in plan.link:
                 x = x if lx is None else lx
                 z = z if lz is None else lz
-                expected.append([RAPID, x + dx, z + dz, None, 0.0])
+                expected.append([RAPID, x + dx, z + dz, None, 0.0, None])
         for mv in plan.moves:
-            expected.append([mv.kind, mv.x + dx, mv.z + dz, feed if mv.kind == FEED else None, mv.p])
+            centre = None if mv.centre is None else [mv.centre[0] + dx, mv.centre[1] + dz]
+            cuts = mv.kind == FEED or mv.kind in ARCS
+            expected.append([mv.kind, mv.x + dx, mv.z + dz, feed if cuts else None, mv.p, centre])
             if mv.kind != DWELL:
                 x, z = mv.x, mv.z
         for lx, lz in plan.retreat:  # the op's last groove: back to its safe start point
             x, z = lx, lz
-            expected.append([RAPID, x + dx, z + dz, None, 0.0])
+            expected.append([RAPID, x + dx, z + dz, None, 0.0, None])
     return expected
 
 

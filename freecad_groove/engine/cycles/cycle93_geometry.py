@@ -320,14 +320,19 @@ class GrooveGeometry:
         """The level VRT above the contour under the blade at u."""
         return self.contour_top(u) + self.params["VRT"]
 
-    def region_uv(self) -> List[Point]:
-        """The finished groove region (closed polygon, groove frame)."""
-        top = self.final_top[1:-1]
+    def region_uv(self, tol: Optional[float] = None) -> List[Point]:
+        """The finished groove region (closed polygon, groove frame), its arcs
+        chorded toward more material within ``tol`` (None: PATH_TOLERANCE, in
+        the program's units)."""
+        if tol is None:
+            top = self.final_top[1:-1]
+        else:
+            top = without_float_folds([p for c in self.final_corners for p in c.points(tol)])
         return top + [top[0]]
 
-    def region_world(self) -> List[Point]:
-        """The finished groove region as world (x, z) points."""
-        return [self.frame.point(u, v) for u, v in self.region_uv()]
+    def region_world(self, tol: Optional[float] = None) -> List[Point]:
+        """The finished groove region as world (x, z) points (``tol``: see region_uv)."""
+        return [self.frame.point(u, v) for u, v in self.region_uv(tol)]
 
     def stock_world(self, margin: Optional[float] = None) -> List[Point]:
         """A window of the part's material around the groove, world (x, z):

@@ -7,7 +7,7 @@ axis (Z for longitudinal grooves, X for face grooves), the blade does not.
 
 from typing import Any, NamedTuple, Optional
 
-from ...engine.moves import REFERENCE_PLUS
+from ...engine.moves import REFERENCE_PLUS, Move
 from ...engine.settings import Settings
 
 
@@ -25,6 +25,12 @@ def corner_shift(plan: Any, reference: Optional[str]) -> Shift:
         return Shift(0.0, 0.0)
     d = (tool.width if reference == REFERENCE_PLUS else 0.0) - tool.reference_offset
     return Shift(0.0, d) if plan.cycle.kind()[0] else Shift(d, 0.0)
+
+
+def shifted(move: Move, shift: Shift, f: Optional[float]) -> Move:
+    """``move`` measured from the other corner: its end and an arc's centre shifted, its feed ``f``."""
+    centre = None if move.centre is None else (move.centre[0] + shift.dx, move.centre[1] + shift.dz)
+    return Move(move.kind, move.x + shift.dx, move.z + shift.dz, f, move.p, centre=centre, radius=move.radius)
 
 
 def corner_settings(plan: Any, reference: Optional[str]) -> Settings:

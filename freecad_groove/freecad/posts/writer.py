@@ -7,8 +7,8 @@ in/rev)."""
 from typing import Iterable, List, Optional
 
 from ...engine import FEED, ProgramError
-from ...engine.moves import Move
-from ...engine.numbers import MAX_DWELL_SECONDS, MM_PER_INCH
+from ...engine.moves import ARCS, Move
+from ...engine.numbers import MAX_DWELL_SECONDS, MM_PER_INCH, format_decimal
 from ...engine.targets import TargetSpec, Writer
 from .controls import Control
 
@@ -48,14 +48,40 @@ class LatheWriter(Writer):
         return super().f_word(self.out(feed))
 
     def write(self, moves: Iterable[Move], prefix: str = "") -> List[str]:
-        half = 1.0 if self.diameter else 0.5  # the target writer doubles X: hand it half (exact in binary)
         moves = list(moves)
         for move in moves:
             self.check_axes(move)
-        moves = [Move(k, None if x is None else self.out(x * half), None if z is None else self.out(z),
-                      None if f is None else self.out(f), p, None, extra[1] if len(extra) > 1 else None)
-                 for k, x, z, f, p, *extra in moves]  # C (degrees) kept where the control has it
-        return super().write(moves, prefix)
+        return super().write([self._handed(Move(*move)) for move in moves], prefix)
+
+    def _handed(self, move: Move) -> Move:
+        """``move`` as the target writer takes it: in the output's units, X halved for radius X words
+        (the target writer doubles X; exact in binary), C (degrees) kept where the control has it. An
+        arc keeps its X and its centre whole (``_arc_words`` writes its radius words), its radius in
+        the output's units."""
+        half = 1.0 if self.diameter or move.kind in ARCS else 0.5
+        x, z, f = move.x, move.z, move.f
+        centre = None if move.centre is None else (self.out(move.centre[0]), self.out(move.centre[1]))
+        return Move(move.kind, None if x is None else self.out(x * half), None if z is None else self.out(z),
+                    None if f is None else self.out(f), move.p, None, move.c, centre,
+                    None if move.radius is None else self.out(move.radius))
+
+    def _arc_words(self, move: Move) -> Optional[List[str]]:
+        """An arc's words; with radius X words (not ``diameter``) the target writer, which works an
+        arc's I/K out on diameter X words, is handed the start's radius text doubled (exact in
+        decimal) and the arc whole, and its X word is written back as the radius. An arc whose end is
+        written as its start writes nothing (I/K would make it a full circle)."""
+        if self.diameter or self.x_text is None:
+            return super()._arc_words(move)
+        radius_text, z_text = self.x_text, self.z_text
+        self.x_text = format_decimal(2.0 * float(radius_text), self.digits)
+        words = super()._arc_words(move)
+        x_text = format_decimal(move.x, self.digits)
+        if words is None or (x_text == radius_text and self.z_text == z_text):
+            self.x_text, self.z_text = radius_text, z_text
+            return None
+        words[0] = "X" + x_text
+        self.x_text = x_text
+        return words
 
     def dwell(self, seconds: float) -> str:
         if not 0 <= seconds <= MAX_DWELL_SECONDS:
