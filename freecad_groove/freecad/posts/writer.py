@@ -4,10 +4,11 @@ Everything handed to it is in mm (lengths, radii) and mm/min or mm/rev (feeds);
 with ``inches`` every number it writes is divided by 25.4 (feeds too: in/min,
 in/rev)."""
 
+import math
 from typing import Iterable, List, Optional
 
 from ...engine import FEED, ProgramError
-from ...engine.moves import ARCS, Move
+from ...engine.moves import ARC_CCW, ARCS, Move
 from ...engine.numbers import MAX_DWELL_SECONDS, MM_PER_INCH, format_decimal
 from ...engine.targets import TargetSpec, Writer
 from .controls import Control
@@ -66,21 +67,29 @@ class LatheWriter(Writer):
                     None if move.radius is None else self.out(move.radius))
 
     def _arc_words(self, move: Move) -> Optional[List[str]]:
-        """An arc's words; with radius X words (not ``diameter``) the target writer, which works an
-        arc's I/K out on diameter X words, is handed the start's radius text doubled (exact in
-        decimal) and the arc whole, and its X word is written back as the radius. An arc whose end is
-        written as its start writes nothing (I/K would make it a full circle)."""
-        if self.diameter or self.x_text is None:
-            return super()._arc_words(move)
-        radius_text, z_text = self.x_text, self.z_text
-        self.x_text = format_decimal(2.0 * float(radius_text), self.digits)
-        words = super()._arc_words(move)
-        x_text = format_decimal(move.x, self.digits)
-        if words is None or (x_text == radius_text and self.z_text == z_text):
-            self.x_text, self.z_text = radius_text, z_text
-            return None
-        words[0] = "X" + x_text
-        self.x_text = x_text
+        """An arc's words: X Z I K from the start as written (the target writer's), Siemens X Z CR=.
+        With radius X words (not ``diameter``) the target writer, which works an arc's I/K out on
+        diameter X words, is handed the start's radius text doubled (exact in decimal) and the arc
+        whole, and its X word is written back as the radius. An arc whose end is written as its start
+        writes nothing (I/K would make it a full circle)."""
+        if self.x_text is None or self.z_text is None:
+            return super()._arc_words(move)  # its refusal: the start must be written first
+        start = (float(self.x_text) / (2.0 if self.diameter else 1.0), float(self.z_text))
+        if self.diameter:
+            words = super()._arc_words(move)
+        else:
+            radius_text, z_text = self.x_text, self.z_text
+            self.x_text = format_decimal(2.0 * float(radius_text), self.digits)
+            words = super()._arc_words(move)
+            x_text = format_decimal(move.x, self.digits)
+            if words is None or (x_text == radius_text and self.z_text == z_text):
+                self.x_text, self.z_text = radius_text, z_text
+                return None
+            words[0] = "X" + x_text
+            self.x_text = x_text
+        if words is not None and self.control.cr_arcs and len(words) == 4:
+            offset = (float(words[2][1:]), float(words[3][1:]))
+            words[2:] = ["CR=" + format_decimal(_signed_radius(move.kind, start, offset, move), self.digits)]
         return words
 
     def dwell(self, seconds: float) -> str:
@@ -154,3 +163,15 @@ class LatheWriter(Writer):
         self.motion = kind
         self.x_text, self.z_text = x_text, z_text
         return [" ".join(words)]
+
+
+def _signed_radius(kind: str, start: tuple, offset: tuple, move: Move) -> float:
+    """Siemens CR= of an arc ``kind`` from ``start`` (x radius, z) with its centre ``offset`` (i, k)
+    from it to ``move``'s end: the radius, negative above 180 degrees (G2 clockwise, Z right and X up)."""
+    cx, cz = start[0] + offset[0], start[1] + offset[1]
+    a0 = math.atan2(start[0] - cx, start[1] - cz)
+    a1 = math.atan2(move.x - cx, move.z - cz)
+    ccw = (a1 - a0) % (2 * math.pi)
+    sweep = ccw if kind == ARC_CCW else 2 * math.pi - ccw
+    radius = math.hypot(*offset)
+    return radius if sweep <= math.pi + 1e-12 else -radius
