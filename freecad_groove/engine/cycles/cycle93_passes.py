@@ -25,7 +25,7 @@ the same stretch bounds the chorded trace has (``_Written``).
 
 import math
 from bisect import bisect_left, bisect_right
-from typing import TYPE_CHECKING, Callable, Dict, Iterator, List, Optional, Sequence, Tuple
+from typing import TYPE_CHECKING, Callable, Dict, Iterator, List, Optional, Tuple
 
 from ..envelope import Envelope, PathPoint, Turn, on_circles, path_moves
 from .cycle93_constants import PATH_TOLERANCE, REENTRY_CLEARANCE_INCH, REENTRY_CLEARANCE_MM
@@ -61,9 +61,8 @@ def _groups(pts: List[Point], steps: List[float]) -> List[Tuple[int, int]]:
     return list(zip(bounds, bounds[1:])) if len(pts) > 1 else [(0, 0)]
 
 
-def _bounds(pts: Sequence[Point], steps: List[float]) -> List[int]:
-    """The point indexes where the stretches begin and end (``_groups``)."""
-    groups = _groups(list(pts), steps)
+def _bounds(groups: List[Tuple[int, int]]) -> List[int]:
+    """The point indexes where the stretches ``groups`` (``_groups``) begin and end."""
     return [first for first, _last in groups] + [groups[-1][1]]
 
 
@@ -74,11 +73,12 @@ class _Written:
     the path does not start and end on its circle (not seen; a guard), the
     chords themselves."""
 
-    def __init__(self, pts: List[Point], exact: Optional[List[PathPoint]], steps: List[float]) -> None:
+    def __init__(self, pts: List[Point], groups: List[Tuple[int, int]], exact: Optional[List[PathPoint]],
+                 steps: List[float]) -> None:
         self.pts, self.exact = pts, exact
         self.index: Dict[int, int] = {}
         if exact and on_circles(exact):
-            chorded, along = _bounds(pts, steps), _bounds(exact, steps)
+            chorded, along = _bounds(groups), _bounds(_groups(exact, steps))
             if len(chorded) == len(along) and all(abs(pts[i][0] - exact[j][0]) <= BOUND_EPS
                                                   for i, j in zip(chorded, along)):
                 self.index = dict(zip(chorded, along))
@@ -123,14 +123,14 @@ def covered(material: MaterialTop, env: Envelope, lo: float, hi: float) -> bool:
     return a - STEP_EPS <= lo and hi <= b + STEP_EPS and _same_profile(env, rough, lo + SIDE_EPS, hi + w - SIDE_EPS)
 
 
-def _stretches(pts: List[Point], material: MaterialTop, width: float, radius: float,
-               steps: List[float], top: List[Point], env: Envelope) -> List[List[int]]:
+def _stretches(pts: List[Point], groups: List[Tuple[int, int]], material: MaterialTop, width: float,
+               radius: float, top: List[Point], env: Envelope) -> List[List[int]]:
     """[first, last] point indexes of the runs of stretches that cut
     something; a stretch is tested whole (the blade swept along its lower
     hull, below it). A trace of one point (a blade as wide as the opening)
     is a plunge to it: [0, 0] when material stands above the blade there."""
     runs: List[List[int]] = []
-    for first, last in _groups(pts, steps):
+    for first, last in groups:
         part = pts[first:last + 1]
         lo, hi = min(u for u, _v in part), max(u for u, _v in part)
         if covered(material, env, lo, hi) or not material.cuts(lower_hull(part), width, radius, top):
@@ -165,8 +165,9 @@ def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, materia
     ``exact``: the same pass as an exact path (arcs), split at ``steps`` too:
     the moves follow it (``_Written``)."""
     w, r = geo.tool.width, geo.tool.corner_radius
-    runs = _stretches(pts, material, w, r, steps, top, env)
-    written = _Written(pts, exact, steps)
+    groups = _groups(pts, steps)
+    runs = _stretches(pts, groups, material, w, r, top, env)
+    written = _Written(pts, groups, exact, steps)
     if rough:
         us = [u for u, _v in pts] + ([material.passed[1], material.passed[2]] if material.passed else [])
         material.note_pass(env, min(us), max(us))

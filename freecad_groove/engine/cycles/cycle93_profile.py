@@ -5,6 +5,7 @@ plunge positions.
 """
 
 import math
+from bisect import bisect_left, bisect_right
 from typing import List, Optional, Sequence, Tuple
 
 from ..envelope import Arc, PathPoint, arc_points
@@ -97,12 +98,14 @@ def split_at(pts: Sequence[Point], positions: List[float]) -> List[Point]:
     the opening are those steps (each stops on the flank, leaving a tooth at
     most one width step wide), and the pass takes the teeth one move per
     step, never more than a width step across."""
+    positions = sorted(positions)
     out = [pts[0]]
     for (u0, v0), end in zip(pts, pts[1:]):
         u1, v1 = end
         lo, hi = min(u0, u1), max(u0, u1)
         arc = getattr(end, "arc", None)
-        for c in sorted((c for c in positions if lo + 1e-9 < c < hi - 1e-9), reverse=u1 < u0):
+        inside = positions[bisect_right(positions, lo + 1e-9):bisect_left(positions, hi - 1e-9)]
+        for c in (reversed(inside) if u1 < u0 else inside):
             if isinstance(end, PathPoint):
                 out.append(PathPoint(c, v0 + (v1 - v0) * (c - u0) / (u1 - u0) if arc is None else value(arc, c), arc))
             else:
