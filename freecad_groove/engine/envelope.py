@@ -49,11 +49,12 @@ class PathPoint(tuple):
     reaches it follows: the envelope's CAP or CUP curve (a half circle over
     u), None for a straight move. Unpacks and compares as (u, v)."""
 
-    arc: Optional[Curve]
+    arc: Optional[Curve] = None  # a straight move's point holds no attribute of its own
 
     def __new__(cls, u: float, v: float, arc: Optional[Curve] = None) -> "PathPoint":
         point = tuple.__new__(cls, (u, v))
-        point.arc = arc
+        if arc is not None:
+            point.arc = arc
         return point
 
     def __repr__(self) -> str:
@@ -112,35 +113,36 @@ class Envelope:
         """Points (u, lowest(u)) from lo to hi, close enough that the straight
         moves between them stay within ``tol`` of the true boundary and never
         below it; straight along u where the boundary jumps (a wall)."""
-        if hi < lo:
-            return [(u, v) for u, v in reversed(self.trace(hi, lo, tol))]
-        out = [(lo, self.lowest(lo))]
-        for a, b, piece in self._runs(lo, hi):
-            level = value(piece, a)
-            if abs(level - out[-1][1]) > JUMP:
-                out.append((a, level))
-            out.extend(chords(piece, a, b, tol))
-        end = self.lowest(hi)
-        if abs(end - out[-1][1]) > JUMP:
-            out.append((hi, end))
-        return _drop_collinear(_without_slivers(out))
+        return self.traces(lo, hi, tol)[0]
 
     def path(self, lo: float, hi: float) -> List[PathPoint]:
         """The boundary ``trace`` chords, exactly: from lo to hi, a point where
         one piece meets the next, each reached along its piece (PathPoint.arc:
         the circle of a CAP or CUP piece, None along a line or a wall)."""
+        return self.traces(lo, hi, None)[1]
+
+    def traces(self, lo: float, hi: float, tol: Optional[float]) -> Tuple[List[Point], List[PathPoint]]:
+        """(``trace`` with ``tol``, ``path``) from lo to hi, in one walk over
+        the pieces (no chords for ``tol`` None)."""
         if hi < lo:
-            return reversed_path(self.path(hi, lo))
-        out = [PathPoint(lo, self.lowest(lo))]
+            chorded, exact = self.traces(hi, lo, tol)
+            return [(u, v) for u, v in reversed(chorded)], reversed_path(exact)
+        start = self.lowest(lo)
+        chorded, exact = [(lo, start)], [PathPoint(lo, start)]
         for a, b, piece in self._runs(lo, hi):
             level = value(piece, a)
-            if abs(level - out[-1][1]) > JUMP:
-                out.append(PathPoint(a, level))
-            out.append(PathPoint(b, value(piece, b), piece if piece.kind != LINE and piece.size > 0 else None))
+            if abs(level - exact[-1][1]) > JUMP:  # the last point of both: (a, the last piece's level there)
+                chorded.append((a, level))
+                exact.append(PathPoint(a, level))
+            if tol is not None:
+                chorded.extend(chords(piece, a, b, tol))
+            exact.append(PathPoint(b, value(piece, b), piece if piece.kind != LINE and piece.size > 0 else None))
         end = self.lowest(hi)
-        if abs(end - out[-1][1]) > JUMP:
-            out.append(PathPoint(hi, end))
-        return _drop_collinear(_without_slivers(out))
+        if abs(end - exact[-1][1]) > JUMP:
+            chorded.append((hi, end))
+            exact.append(PathPoint(hi, end))
+        chorded = _drop_collinear(_without_slivers(chorded)) if tol is not None else []
+        return chorded, _drop_collinear(_without_slivers(exact))
 
     def walls(self, lo: float, hi: float) -> Set[float]:
         """Blade positions in (lo, hi) where a side edge passes a vertical step of the top."""
@@ -213,9 +215,10 @@ def _drop_collinear(pts: List[Point], eps: float = 1e-9) -> List[Point]:
     point an arc reaches or leaves stays."""
     if len(pts) < 3:
         return pts
+    exact = isinstance(pts[0], PathPoint)
     out = [pts[0]]
     for i in range(1, len(pts) - 1):
-        if getattr(pts[i], "arc", None) is not None or getattr(pts[i + 1], "arc", None) is not None:
+        if exact and (pts[i].arc is not None or pts[i + 1].arc is not None):
             out.append(pts[i])
             continue
         (u0, v0), (u1, v1), (u2, v2) = out[-1], pts[i], pts[i + 1]

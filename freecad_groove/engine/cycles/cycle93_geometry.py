@@ -413,8 +413,8 @@ class GrooveGeometry:
         ub = right - w + r
         mid = 0.5 * (ua + ub)
         for start in (ua, ub):
-            pts = split_at(env.trace(start, mid, PATH_TOLERANCE), steps)
-            exact = split_at(env.path(start, mid), steps)
+            chorded, exact = env.traces(start, mid, PATH_TOLERANCE)
+            pts = split_at(chorded, steps)
             feed_where_material(self, pts, go, material, steps, top, env, top is self.rough_top, exact)
 
     def _leg_clear(self, u_from, u_to, level):

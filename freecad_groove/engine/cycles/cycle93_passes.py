@@ -30,6 +30,7 @@ from typing import TYPE_CHECKING, Callable, Dict, Iterator, List, Optional, Tupl
 from ..envelope import Envelope, PathPoint, Turn, on_circles, path_moves
 from .cycle93_constants import PATH_TOLERANCE, REENTRY_CLEARANCE_INCH, REENTRY_CLEARANCE_MM
 from .cycle93_material import SIDE_EPS, MaterialTop, lower_hull
+from .cycle93_profile import split_at
 
 if TYPE_CHECKING:  # the geometry imports this module
     from .cycle93_geometry import GrooveGeometry
@@ -68,20 +69,28 @@ def _bounds(groups: List[Tuple[int, int]]) -> List[int]:
 
 class _Written:
     """What a pass writes between two stretch bounds of its chorded trace
-    ``pts``: the moves along the exact path ``exact`` between the same bounds
-    (its arcs), or, where the two do not line up bound for bound or an arc of
-    the path does not start and end on its circle (not seen; a guard), the
-    chords themselves."""
+    ``pts``: the moves along the exact path ``exact`` (split at ``steps``
+    when first asked) between the same bounds (its arcs), or, where the two
+    do not line up bound for bound or an arc of the path does not start and
+    end on its circle (not seen; a guard), the chords themselves."""
 
     def __init__(self, pts: List[Point], groups: List[Tuple[int, int]], exact: Optional[List[PathPoint]],
                  steps: List[float]) -> None:
-        self.pts, self.exact = pts, exact
-        self.index: Dict[int, int] = {}
-        if exact and on_circles(exact):
-            chorded, along = _bounds(groups), _bounds(_groups(exact, steps))
-            if len(chorded) == len(along) and all(abs(pts[i][0] - exact[j][0]) <= BOUND_EPS
-                                                  for i, j in zip(chorded, along)):
-                self.index = dict(zip(chorded, along))
+        self.pts, self.groups, self.exact, self.steps = pts, groups, exact, steps
+        self._index: Optional[Dict[int, int]] = None
+
+    @property
+    def index(self) -> Dict[int, int]:
+        """The exact path's point index at each stretch bound of ``pts`` (empty: they do not line up)."""
+        if self._index is None:
+            self._index = {}
+            exact = self.exact = split_at(self.exact, self.steps) if self.exact else None
+            if exact and on_circles(exact):
+                chorded, along = _bounds(self.groups), _bounds(_groups(exact, self.steps))
+                if len(chorded) == len(along) and all(abs(self.pts[i][0] - exact[j][0]) <= BOUND_EPS
+                                                      for i, j in zip(chorded, along)):
+                    self._index = dict(zip(chorded, along))
+        return self._index
 
     def point(self, i: int) -> Point:
         """The point written at the chorded trace's bound ``i``."""
@@ -89,9 +98,10 @@ class _Written:
 
     def moves(self, i: int, j: int) -> Iterator[Tuple[Point, Turn]]:
         """The moves (end, turn) from bound ``i`` to bound ``j`` (path_moves)."""
-        if not self.index:
+        index = self.index
+        if not index:
             return ((q, None) for q in self.pts[i + 1:j + 1])
-        a, b = self.index[i], self.index[j]
+        a, b = index[i], index[j]
         return path_moves(self.exact[a], self.exact[a + 1:b + 1], PATH_TOLERANCE)
 
 
@@ -162,8 +172,8 @@ def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, materia
     """Feed the stretches of the trace ``pts`` on the envelope of ``top``
     that cut, linked the cheaper way; the blade comes from and goes back to
     the clearance. A roughing pass (``rough``) is noted in ``material``.
-    ``exact``: the same pass as an exact path (arcs), split at ``steps`` too:
-    the moves follow it (``_Written``)."""
+    ``exact``: the same pass as an exact path (arcs), not split: the moves
+    follow it, split at ``steps`` too (``_Written``)."""
     w, r = geo.tool.width, geo.tool.corner_radius
     groups = _groups(pts, steps)
     runs = _stretches(pts, groups, material, w, r, top, env)

@@ -99,17 +99,18 @@ def split_at(pts: Sequence[Point], positions: List[float]) -> List[Point]:
     most one width step wide), and the pass takes the teeth one move per
     step, never more than a width step across."""
     positions = sorted(positions)
+    exact = isinstance(pts[0], PathPoint)
     out = [pts[0]]
     for (u0, v0), end in zip(pts, pts[1:]):
         u1, v1 = end
-        lo, hi = min(u0, u1), max(u0, u1)
-        arc = getattr(end, "arc", None)
-        inside = positions[bisect_right(positions, lo + 1e-9):bisect_left(positions, hi - 1e-9)]
-        for c in (reversed(inside) if u1 < u0 else inside):
-            if isinstance(end, PathPoint):
-                out.append(PathPoint(c, v0 + (v1 - v0) * (c - u0) / (u1 - u0) if arc is None else value(arc, c), arc))
-            else:
-                out.append((c, v0 + (v1 - v0) * (c - u0) / (u1 - u0)))
+        lo, hi = (u0, u1) if u0 <= u1 else (u1, u0)
+        first, last = bisect_right(positions, lo + 1e-9), bisect_left(positions, hi - 1e-9)
+        if first < last:
+            inside = positions[first:last]
+            arc = end.arc if exact else None
+            for c in (reversed(inside) if u1 < u0 else inside):
+                v = v0 + (v1 - v0) * (c - u0) / (u1 - u0) if arc is None else value(arc, c)
+                out.append(PathPoint(c, v, arc) if exact else (c, v))
         out.append(end)
     return out
 
@@ -118,7 +119,7 @@ class Corner:
     """A rounded (value > 0) or chamfered (value < 0) corner between the
     incoming direction a and the outgoing direction b at vertex V."""
 
-    def __init__(self, vertex, a, b, value, chr_mode):
+    def __init__(self, vertex: Point, a: Point, b: Point, value: float, chr_mode: bool) -> None:
         self.vertex = vertex
         self.value = value
         a, b = unit(*a), unit(*b)
@@ -134,7 +135,7 @@ class Corner:
         else:
             self.length = 0.0
 
-    def _arc_start(self):
+    def _arc_start(self) -> Tuple[Point, Point, Point]:
         """Where the corner's rounding or chamfer starts and ends (t_in, t_out),
         and the centre of its arc."""
         v, a, b, length = self.vertex, self.a, self.b, self.length
@@ -144,7 +145,7 @@ class Corner:
         r = self.value
         return t_in, t_out, (t_in[0] + r * n[0], t_in[1] + r * n[1])
 
-    def points(self, tol=PATH_TOLERANCE):
+    def points(self, tol: float = PATH_TOLERANCE) -> List[Point]:
         """The corner as a polyline, its arc chorded to ``tol``."""
         if self.length <= 0:
             return [self.vertex]
