@@ -34,7 +34,8 @@ Point = Tuple[float, float]
 # turns counter-clockwise (u to the right, v up); None for a straight move.
 Turn = Optional[Tuple[float, float, bool]]
 
-__all__ = ["EDGE_EPS", "Arc", "Envelope", "PathPoint", "arc_points", "on_circles", "path_moves", "reversed_path"]
+__all__ = ["EDGE_EPS", "Arc", "Envelope", "PathPoint", "arc_points", "on_circles", "path_moves", "reversed_path",
+           "writes_arcs"]
 
 JUMP = 1e-9  # a change of level this large where two pieces meet is a wall: move straight along it
 SAME_U = 1e-7  # points closer than this along u are at the same u (no sliver moves)
@@ -293,13 +294,25 @@ def path_moves(start: Point, pts: Sequence[Point], tol: float) -> Iterator[Tuple
         arc = getattr(point, "arc", None)
         if arc is None:
             yield point, None
+        elif not _writable(arc, here, point, tol):
+            for chord_end in _arc_chords(arc, here, point, tol):
+                yield chord_end, None
         else:
-            half = 0.5 * math.dist(here, point)
-            sagitta = arc.size - math.sqrt(max(arc.size * arc.size - half * half, 0.0))
-            if sagitta <= tol or 2 * half < MIN_ARC_CHORD:
-                for chord_end in _arc_chords(arc, here, point, tol):
-                    yield chord_end, None
-            else:
-                # A cup (lower half circle) runs counter-clockwise toward +u, a cap clockwise.
-                yield point, (arc.cu, arc.cv, (arc.kind == CUP) == (point[0] > here[0]))
+            # A cup (lower half circle) runs counter-clockwise toward +u, a cap clockwise.
+            yield point, (arc.cu, arc.cv, (arc.kind == CUP) == (point[0] > here[0]))
         here = point
+
+
+def _writable(arc: Curve, start: Point, end: Point, tol: float) -> bool:
+    """Whether the move along ``arc`` from start to end is written as an arc:
+    its sagitta over ``tol`` and its chord at least MIN_ARC_CHORD."""
+    half = 0.5 * math.dist(start, end)
+    sagitta = arc.size - math.sqrt(max(arc.size * arc.size - half * half, 0.0))
+    return sagitta > tol and 2 * half >= MIN_ARC_CHORD
+
+
+def writes_arcs(pts: Sequence[Point], tol: float) -> bool:
+    """Whether ``path_moves`` writes any arc along the exact path ``pts`` (an
+    arc split in pieces is no less flat, nor longer)."""
+    return any(point.arc is not None and _writable(point.arc, here, point, tol)
+               for here, point in zip(pts, pts[1:]) if isinstance(point, PathPoint))

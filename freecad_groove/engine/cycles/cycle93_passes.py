@@ -27,7 +27,7 @@ import math
 from bisect import bisect_left, bisect_right
 from typing import TYPE_CHECKING, Callable, Dict, Iterator, List, Optional, Tuple
 
-from ..envelope import Envelope, PathPoint, Turn, on_circles, path_moves
+from ..envelope import Envelope, PathPoint, Turn, on_circles, path_moves, writes_arcs
 from .cycle93_constants import PATH_TOLERANCE, REENTRY_CLEARANCE_INCH, REENTRY_CLEARANCE_MM
 from .cycle93_material import SIDE_EPS, MaterialTop, lower_hull
 from .cycle93_profile import split_at
@@ -84,8 +84,10 @@ class _Written:
         """The exact path's point index at each stretch bound of ``pts`` (empty: they do not line up)."""
         if self._index is None:
             self._index = {}
-            exact = self.exact = split_at(self.exact, self.steps) if self.exact else None
-            if exact and on_circles(exact):
+            if not self.exact or not writes_arcs(self.exact, PATH_TOLERANCE):
+                return self._index  # no arc to write: the chords are what the exact path would write
+            exact = self.exact = split_at(self.exact, self.steps)
+            if on_circles(exact):
                 chorded, along = _bounds(self.groups), _bounds(_groups(exact, self.steps))
                 if len(chorded) == len(along) and all(abs(self.pts[i][0] - exact[j][0]) <= BOUND_EPS
                                                       for i, j in zip(chorded, along)):
