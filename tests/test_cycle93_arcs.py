@@ -19,7 +19,7 @@ from freecad_groove import cli
 from freecad_groove import verify as sim
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
 from freecad_groove.engine.cycles import cycle93_passes
-from freecad_groove.engine.cycles.cycle93 import Cycle93
+from freecad_groove.engine.cycles.cycle93 import Cycle93, _cached_geometry
 from freecad_groove.engine.cycles.cycle93_constants import PATH_TOLERANCE
 from freecad_groove.engine.cycles.cycle93_profile import split_at
 from freecad_groove.engine.envelope import on_circles, writes_arcs
@@ -193,3 +193,44 @@ def test_the_exact_path_lines_up_with_the_chorded_trace_stretch_by_stretch(case)
             assert on_circles(split_at(exact, steps))
             written = cycle93_passes._Written(pts, cycle93_passes._groups(pts, steps), exact, steps)
             assert written.index or not writes_arcs(exact, PATH_TOLERANCE), (start, end)
+
+
+def _runs(moves):
+    """The fed runs between rapids: (first, last) end point of each."""
+    runs, run = [], []
+    for move in moves:
+        if move.kind == RAPID:
+            if run:
+                runs.append((run[0], run[-1]))
+            run = []
+        elif move.kind != "G4":
+            run.append((move.x, move.z))
+    return runs + ([(run[0], run[-1])] if run else [])
+
+
+@settings(suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow])
+@given(grooves())
+def test_arcs_change_only_the_feeds_between_the_bounds_the_chorded_passes_feed(case):
+    # The same expansion with the passes writing their chords (as before arcs: the guard's way): the
+    # same rapids and dwells, the same fed runs starting and ending at the same points (the exact
+    # path's points there lie on the circle, the chords' up to the path tolerance above it).
+    call, tool = case
+    try:
+        geo, state, moves = expanded(call, tool)
+    except CycleError:
+        assume(False)
+    original = cycle93_passes._Written.index
+    try:
+        cycle93_passes._Written.index = property(lambda self: {})
+        _cached_geometry.cache_clear()  # a geometry expands once per call and settings: expand afresh
+        before = call.expand(state, Settings(tool=tool))
+    finally:
+        cycle93_passes._Written.index = original
+        _cached_geometry.cache_clear()
+    assert not any(m.kind in ARCS for m in before)
+    assert [m for m in moves if m.kind in (RAPID, "G4")] == [m for m in before if m.kind in (RAPID, "G4")]
+    runs, runs_before = _runs(moves), _runs(before)
+    assert len(runs) == len(runs_before)
+    for (first, last), (first_before, last_before) in zip(runs, runs_before):
+        assert math.dist(first, first_before) <= 2 * PATH_TOLERANCE
+        assert math.dist(last, last_before) <= 2 * PATH_TOLERANCE
