@@ -122,28 +122,37 @@ class Envelope:
         the circle of a CAP or CUP piece, None along a line or a wall)."""
         return self.traces(lo, hi, None)[1]
 
-    def traces(self, lo: float, hi: float, tol: Optional[float]) -> Tuple[List[Point], List[PathPoint]]:
+    def traces(self, lo: float, hi: float, tol: Optional[float]) -> Tuple[List[Point], Optional[List[PathPoint]]]:
         """(``trace`` with ``tol``, ``path``) from lo to hi, in one walk over
-        the pieces (no chords for ``tol`` None)."""
+        the pieces: no chords for ``tol`` None; with ``tol``, the path None
+        when none of its arcs is written as one (``path_moves``: all within
+        ``tol`` of their chords or shorter than MIN_ARC_CHORD), the chords
+        being what it writes."""
         if hi < lo:
             chorded, exact = self.traces(hi, lo, tol)
-            return [(u, v) for u, v in reversed(chorded)], reversed_path(exact)
+            return [(u, v) for u, v in reversed(chorded)], exact and reversed_path(exact)
         start = self.lowest(lo)
-        chorded, exact = [(lo, start)], [PathPoint(lo, start)]
+        chorded, ends = [(lo, start)], [(lo, start, None)]
+        worth = tol is None
         for a, b, piece in self._runs(lo, hi):
             level = value(piece, a)
-            if abs(level - exact[-1][1]) > JUMP:  # the last point of both: (a, the last piece's level there)
+            if abs(level - ends[-1][1]) > JUMP:  # the last point of both: (a, the last piece's level there)
                 chorded.append((a, level))
-                exact.append(PathPoint(a, level))
+                ends.append((a, level, None))
             if tol is not None:
                 chorded.extend(chords(piece, a, b, tol))
-            exact.append(PathPoint(b, value(piece, b), piece if piece.kind != LINE and piece.size > 0 else None))
+            arc = piece if piece.kind != LINE and piece.size > 0 else None
+            end = value(piece, b)
+            worth = worth or (arc is not None and _writable(arc, (a, level), (b, end), tol))
+            ends.append((b, end, arc))
         end = self.lowest(hi)
-        if abs(end - exact[-1][1]) > JUMP:
+        if abs(end - ends[-1][1]) > JUMP:
             chorded.append((hi, end))
-            exact.append(PathPoint(hi, end))
+            ends.append((hi, end, None))
         chorded = _drop_collinear(_without_slivers(chorded)) if tol is not None else []
-        return chorded, _drop_collinear(_without_slivers(exact))
+        if not worth:
+            return chorded, None
+        return chorded, _drop_collinear(_without_slivers([PathPoint(*point) for point in ends]))
 
     def walls(self, lo: float, hi: float) -> Set[float]:
         """Blade positions in (lo, hi) where a side edge passes a vertical step of the top."""
@@ -311,8 +320,10 @@ def _writable(arc: Curve, start: Point, end: Point, tol: float) -> bool:
     return sagitta > tol and 2 * half >= MIN_ARC_CHORD
 
 
-def writes_arcs(pts: Sequence[Point], tol: float) -> bool:
-    """Whether ``path_moves`` writes any arc along the exact path ``pts`` (an
-    arc split in pieces is no less flat, nor longer)."""
-    return any(point.arc is not None and _writable(point.arc, here, point, tol)
+def writes_arcs(pts: Sequence[Point], tol: float, lo: float = -math.inf, hi: float = math.inf) -> bool:
+    """Whether ``path_moves`` may write an arc along the exact path ``pts``
+    over (lo, hi) along u: an arc whose whole move is written as one (split
+    in pieces, it is no less flat, nor longer) reaching into (lo, hi)."""
+    return any(point.arc is not None and min(here[0], point[0]) < hi and max(here[0], point[0]) > lo
+               and _writable(point.arc, here, point, tol)
                for here, point in zip(pts, pts[1:]) if isinstance(point, PathPoint))

@@ -11,7 +11,7 @@ import math
 from typing import TYPE_CHECKING, List, Optional, Tuple
 
 from ..envelope import Envelope, Turn
-from ..moves import REFERENCE_PLUS, Move, arc, feed, rapid
+from ..moves import FEED, RAPID, REFERENCE_PLUS, Move, arc
 from ..numbers import MAX_WORD, format_given, format_value
 from ..settings import Settings
 from .cycle93_constants import (
@@ -360,17 +360,18 @@ class GrooveGeometry:
     def expand(self, x_start: float, z_start: float) -> List[Move]:
         """Moves from the reference-corner position (x_start radius, z_start)."""
         frame = self.frame
+        blade = frame.blade
         out = []
         last = [None]
 
         def go(kind: str, u: float, v: float, turn: Turn = None) -> None:
             """A rapid ("r") or feed ("f") of the blade to (u, v); a feed along a
             circle of the groove frame with ``turn`` (its centre, counter-clockwise)."""
-            x, z = frame.blade(u, v)
+            x, z = blade(u, v)
             if turn is None:
-                move = rapid(x, z) if kind == "r" else feed(x, z)
+                move = Move(RAPID if kind == "r" else FEED, x, z)
             else:
-                move = arc(frame.clockwise(turn[2]), x, z, frame.blade(turn[0], turn[1]))
+                move = arc(frame.clockwise(turn[2]), x, z, blade(turn[0], turn[1]))
             if not out or out[-1] != move:
                 out.append(move)
             last[0] = u

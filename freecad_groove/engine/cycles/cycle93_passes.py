@@ -25,9 +25,9 @@ the same stretch bounds the chorded trace has (``_Written``).
 
 import math
 from bisect import bisect_left, bisect_right
-from typing import TYPE_CHECKING, Callable, Dict, Iterator, List, Optional, Tuple
+from typing import TYPE_CHECKING, Callable, Dict, List, Optional, Tuple
 
-from ..envelope import Envelope, PathPoint, Turn, on_circles, path_moves, writes_arcs
+from ..envelope import Envelope, PathPoint, on_circles, path_moves, writes_arcs
 from .cycle93_constants import PATH_TOLERANCE, REENTRY_CLEARANCE_INCH, REENTRY_CLEARANCE_MM
 from .cycle93_material import SIDE_EPS, MaterialTop, lower_hull
 from .cycle93_profile import split_at
@@ -75,17 +75,22 @@ class _Written:
     end on its circle (not seen; a guard), the chords themselves."""
 
     def __init__(self, pts: List[Point], groups: List[Tuple[int, int]], exact: Optional[List[PathPoint]],
-                 steps: List[float]) -> None:
+                 steps: List[float], runs: Optional[List[List[int]]] = None) -> None:
         self.pts, self.groups, self.exact, self.steps = pts, groups, exact, steps
         self._index: Optional[Dict[int, int]] = None
+        lo, hi = -math.inf, math.inf  # what is fed: the runs and, at most, the gaps between them (None: all)
+        if runs:
+            lo, hi = sorted((pts[runs[0][0]][0], pts[runs[-1][1]][0]))
+        if not exact or runs == [] or not writes_arcs(exact, PATH_TOLERANCE, lo + BOUND_EPS, hi - BOUND_EPS):
+            self.exact = None  # no arc to write there: the chords are what the exact path would write
 
     @property
     def index(self) -> Dict[int, int]:
         """The exact path's point index at each stretch bound of ``pts`` (empty: they do not line up)."""
         if self._index is None:
             self._index = {}
-            if not self.exact or not writes_arcs(self.exact, PATH_TOLERANCE):
-                return self._index  # no arc to write: the chords are what the exact path would write
+            if not self.exact:
+                return self._index
             exact = self.exact = split_at(self.exact, self.steps)
             if on_circles(exact):
                 chorded, along = _bounds(self.groups), _bounds(_groups(exact, self.steps))
@@ -98,13 +103,16 @@ class _Written:
         """The point written at the chorded trace's bound ``i``."""
         return self.exact[self.index[i]] if self.index else self.pts[i]
 
-    def moves(self, i: int, j: int) -> Iterator[Tuple[Point, Turn]]:
-        """The moves (end, turn) from bound ``i`` to bound ``j`` (path_moves)."""
+    def feed(self, go: Go, i: int, j: int) -> None:
+        """Feed from bound ``i`` to bound ``j``: along the exact path (path_moves), or its chords."""
         index = self.index
         if not index:
-            return ((q, None) for q in self.pts[i + 1:j + 1])
+            for q in self.pts[i + 1:j + 1]:
+                go("f", q[0], q[1])
+            return
         a, b = index[i], index[j]
-        return path_moves(self.exact[a], self.exact[a + 1:b + 1], PATH_TOLERANCE)
+        for q, turn in path_moves(self.exact[a], self.exact[a + 1:b + 1], PATH_TOLERANCE):
+            go("f", q[0], q[1], turn)
 
 
 def _element(env: Envelope, x: float) -> Tuple[Point, Point, object]:
@@ -175,11 +183,11 @@ def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, materia
     that cut, linked the cheaper way; the blade comes from and goes back to
     the clearance. A roughing pass (``rough``) is noted in ``material``.
     ``exact``: the same pass as an exact path (arcs), not split: the moves
-    follow it, split at ``steps`` too (``_Written``)."""
+    follow it, split at ``steps`` too (``_Written``); None: the chords."""
     w, r = geo.tool.width, geo.tool.corner_radius
     groups = _groups(pts, steps)
     runs = _stretches(pts, groups, material, w, r, top, env)
-    written = _Written(pts, groups, exact, steps)
+    written = _Written(pts, groups, exact, steps, runs)
     if rough:
         us = [u for u, _v in pts] + ([material.passed[1], material.passed[2]] if material.passed else [])
         material.note_pass(env, min(us), max(us))
@@ -197,15 +205,13 @@ def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, materia
                 go("r", end[0], geo.clearance(end[0]))
                 here = None
             else:
-                for q, turn in written.moves(here, first):
-                    go("f", q[0], q[1], turn)
+                written.feed(go, here, first)
         if here is None:
             entry = _entry(geo, material, start)
             go("r", start[0], geo.clearance(start[0]))
             go("r", start[0], entry)
             go("f", *written.point(first))
-        for q, turn in written.moves(first, last):
-            go("f", q[0], q[1], turn)
+        written.feed(go, first, last)
         here = last
     if here is not None:
         end = pts[here]
