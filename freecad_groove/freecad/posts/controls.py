@@ -56,7 +56,7 @@ class Control:
 
     def grooves_summary(self) -> str:
         """How the post writes grooves, for its tooltip."""
-        return "grooves expanded into G0/G1 moves"
+        return "grooves expanded into G0/G1 moves and G2/G3 arcs"
 
     def comment(self, text: str) -> str:
         return paren_comment(text)
