@@ -59,7 +59,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 from freecad_groove.engine import GroovingTool, MachineState, Settings  # noqa: E402
 from freecad_groove.engine.cycles.cycle93 import Cycle93  # noqa: E402
-from freecad_groove.engine.moves import FEED, RAPID  # noqa: E402
+from freecad_groove.engine.moves import ARC_CW, ARCS, FEED, RAPID  # noqa: E402
 
 BLADE = GroovingTool(5.0, 0.2)
 START = (53.0, 5.0)  # radius X, Z
@@ -83,7 +83,11 @@ def lengths(moves, start):
     here = start
     for m in moves:
         step = math.dist(here, (m.x, m.z))
-        if m.kind == FEED:
+        if m.kind in ARCS:  # its length along the circle (G2 clockwise with Z right and X up)
+            (cx, cz), radius = m.centre, math.dist(here, m.centre)
+            turn = (math.atan2(m.x - cx, m.z - cz) - math.atan2(here[0] - cx, here[1] - cz)) % (2 * math.pi)
+            feed += radius * (2 * math.pi - turn if m.kind == ARC_CW else turn)
+        elif m.kind == FEED:
             feed += step
         elif m.kind == RAPID:
             rapid += step

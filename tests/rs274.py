@@ -6,12 +6,14 @@ as an independent reader of the programs we write.
     problems = canonical_matches(expansion.moves, canon, start=1)
     assert not problems, "\\n".join(problems)
 
-``kind`` is "G0" (STRAIGHT_TRAVERSE), "G1" (STRAIGHT_FEED), "G4" (DWELL) or
-"ARC" (ARC_FEED: we never emit arcs, so a comparison fails on it). x is the
+``kind`` is "G0" (STRAIGHT_TRAVERSE), "G1" (STRAIGHT_FEED), "G4" (DWELL),
+"G2" or "G3" (ARC_FEED turning clockwise or counter-clockwise: seen with Z to
+the right and X up in G18, X to the right and Y up in G17). x is the
 radius (rs274 converts G7 diameter words), z absolute, in the program's length
 unit. feed is the feed rate in force as rs274 last set it (None for G0, and
 before the first SET_FEED_RATE), dwell is seconds for G4 and 0.0 otherwise. A G4 carries
-the position it holds.
+the position it holds. An arc's tuple also has ``.centre``: (x radius, z) of
+its centre (G17: (x, y)); the other moves' ``.centre`` is None.
 
 rs274 reports an error by printing the message and the offending line (and,
 in the version tested, exiting 1); any output line that is not a numbered
@@ -90,6 +92,31 @@ def _numbers(args, count, line):
     return values
 
 
+class Canonical(tuple):
+    """A canonical move (a plain tuple, see the module notes) with ``centre``:
+    an arc's centre, None for the other moves."""
+
+    def __new__(cls, values, centre=None):
+        move = tuple.__new__(cls, values)
+        move.centre = centre
+        return move
+
+
+def _arc(values, x, y, z, feed, xyz, plane):
+    """An ARC_FEED's canonical move: in XZ (G18) its values are Z, X, centre Z,
+    centre X, rotation, Y; in XY (G17) X, Y, centre X, centre Y, rotation, Z."""
+    kind = "G3" if values[4] > 0 else "G2"
+    if plane == "XZ":
+        z, x = values[0], values[1]
+        centre = (values[3], values[2])
+    else:
+        x, y = values[0], values[1]
+        z = values[5] if len(values) > 5 else z
+        centre = (values[2], values[3])
+    move = (kind, x, y, z, feed, 0.0) if xyz else (kind, x, z, feed, 0.0)
+    return Canonical(move, centre), x, y, z
+
+
 def parse_canonical(output, rotary=False, xyz=False):
     """Canonical moves from rs274's standard output (see module docstring);
     ``rotary``: each straight move also carries C (degrees) as a 6th item;
@@ -98,6 +125,7 @@ def parse_canonical(output, rotary=False, xyz=False):
     y = 0.0
     x = z = 0.0  # the interpreter starts at the origin
     feed = None
+    plane = "XY"
     for raw in output.splitlines():
         if not raw.strip():
             continue
@@ -118,12 +146,14 @@ def parse_canonical(output, rotary=False, xyz=False):
         elif name == "DWELL":
             seconds = _numbers(args, 1, raw)[0]
             moves.append(("G4", x, y, z, feed, seconds) if xyz else ("G4", x, z, feed, seconds))
+        elif name == "SELECT_PLANE":
+            plane = "XZ" if "XZ" in args else "XY" if "XY" in args else args
         elif name == "ARC_FEED":
-            # XZ plane: first_end (Z), second_end (X), first_axis, second_axis, rotation, ...
-            values = _numbers(args, 5, raw)
-            z, x = values[0], values[1]
-            moves.append(("ARC", x, z, feed, 0.0))
-    return moves
+            if plane not in ("XZ", "XY"):
+                raise RS274Error("an arc in the plane %s" % plane, line=raw)
+            move, x, y, z = _arc(_numbers(args, 6, raw), x, y, z, feed, xyz, plane)
+            moves.append(move)
+    return [m if isinstance(m, Canonical) else Canonical(m) for m in moves]
 
 
 def tool_table_text(tools):
@@ -190,20 +220,19 @@ def run_rs274(program_text, timeout=60, tool_table=None, files=None, xyz=False, 
     return moves
 
 
-def canonical_matches(engine_moves, canon, start=0, tol=1e-4, trailing=False):
+def canonical_matches(engine_moves, canon, start=0, tol=1e-4, trailing=False, centre_tol=2e-4):
     """Compare engine moves (moves.Move, x radius) with rs274's ``canon``
     moves pairwise, from ``canon[start]`` on (``start`` skips the moves a test
     program makes before the cycle). Kinds must match (RAPID "G0", FEED "G1",
-    DWELL "G4"; any "ARC" is a mismatch), x and z within ``tol``, a FEED's f
-    (when not None) the feed in force, a DWELL's seconds. Unless ``trailing``,
-    canon must have no moves after the last engine move. Returns a list of
-    mismatch descriptions (empty: they match).
+    DWELL "G4", ARC_CW "G2", ARC_CCW "G3"), x and z within ``tol``, an arc's
+    centre within ``centre_tol`` (its I/K are written from the start as
+    written, both rounded), a FEED's or an arc's f (when not None) the feed in
+    force, a DWELL's seconds. Unless ``trailing``, canon must have no moves
+    after the last engine move. Returns a list of mismatch descriptions
+    (empty: they match).
     """
     problems = []
     canon = list(canon)
-    arcs = [i for i, c in enumerate(canon) if c[0] == "ARC"]
-    for i in arcs:
-        problems.append("canonical move %d is an ARC_FEED to X%.4f Z%.4f" % (i, canon[i][1], canon[i][2]))
     part = canon[start:]
     engine = list(engine_moves)
     for i, (m, c) in enumerate(zip(engine, part)):
@@ -214,8 +243,11 @@ def canonical_matches(engine_moves, canon, start=0, tol=1e-4, trailing=False):
             continue
         if abs(m.x - x) > tol or abs(m.z - z) > tol:
             problems.append("%s %s: engine X%.6f Z%.6f, rs274 X%s Z%s" % (where, kind, m.x, m.z, x, z))
-        if kind == "G1" and m.f is not None and (feed is None or abs(m.f - feed) > tol):
-            problems.append("%s G1: engine F%g, rs274 feed %s" % (where, m.f, feed))
+        if kind in ("G2", "G3") and (m.centre is None or max(abs(m.centre[0] - c.centre[0]),
+                                                              abs(m.centre[1] - c.centre[1])) > centre_tol):
+            problems.append("%s %s: engine centre %s, rs274 centre X%.4f Z%.4f" % (where, kind, m.centre, *c.centre))
+        if kind in ("G1", "G2", "G3") and m.f is not None and (feed is None or abs(m.f - feed) > tol):
+            problems.append("%s %s: engine F%g, rs274 feed %s" % (where, kind, m.f, feed))
         if kind == "G4" and abs(m.p - dwell) > tol:
             problems.append("%s G4: engine P%g s, rs274 dwell %g s" % (where, m.p, dwell))
     if len(part) < len(engine):

@@ -144,6 +144,25 @@ def test_hand_derived_groove_figures(tmp_path):
 
 
 
+@pytest.mark.parametrize("metric", [True, False])
+def test_a_cycle93_with_radii_verifies_clean_its_arcs_recorded_as_fine_chords(metric):
+    """The four-R2-corner groove (its passes write G2/G3), in mm and as the same groove in inch: the
+    record keeps the cycle's arcs as chords within the simulation's 1e-5 mm; the check finds no
+    gouge, no leftover the blade could reach, no rapid through stock."""
+    call = "CYCLE93(20, -10, 12, 5, 0, 0, 0, 2, 2, 2, 2, 0.2, 0.2, 2, 0, 5, 0)"
+    if not metric:  # the same groove in inch: every length / 25.4
+        call = "CYCLE93(%s)" % ", ".join(
+            repr(float(v) / 25.4) if k not in (4, 5, 6, 14, 15) else v for k, v in enumerate(call[8:-1].split(", ")))
+    program = "%s\nG95 S500 M3\nG0 X60 Z5\nF0.1\n%s\nM30\n" % ("G710" if metric else "G700", call)
+    unit = 1.0 if metric else 25.4
+    record = record_program(program, "sinumerik", DEFAULT_SETTINGS.with_tool(3.0 / unit, 0.4 / unit, None))
+    moves = [m for step in record.steps if step.cycle for m in step.moves]
+    assert {m.kind for m in moves} == {"G0", "G1"}
+    result = check_program("part.mpf", record)
+    assert result.ok, report(result)
+    assert result.job.ops[-1].leftover == pytest.approx(0.0, abs=1e-6)
+
+
 def test_inch_program_is_checked_in_mm():
     """The same groove in inch: 0.1 in blade (2.54 mm), 0.2 in deep (5.08 mm),
     0.004 in/rev at 500 rpm over 0.2 in: 6 s; figures in mm."""

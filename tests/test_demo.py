@@ -125,7 +125,8 @@ def test_linuxcnc_program_runs_in_rs274(run, summary):
         raise AssertionError("rs274 refused %s: %s\n%s" % (entry["file"], e, text)) from None
     feeds = [c for c in canon if c[0] == "G1"]
     assert len(feeds) > 20
-    assert all(c[0] in ("G0", "G1") for c in canon)  # no arcs, no dwells in this job
+    assert all(c[0] in ("G0", "G1", "G2", "G3") for c in canon)  # no dwells in this job
+    assert any(c[0] in ("G2", "G3") for c in canon)  # the finishing passes over the 0.3 mm edge radii
     # the cut-off: the blade's reference corner reaches the axis, never past it
     assert min(c[1] for c in feeds) == pytest.approx(0.0, abs=1e-9)
     assert min(c[1] for c in canon) >= -1e-9

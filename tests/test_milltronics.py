@@ -1,6 +1,8 @@
 """Milltronics G33 facing and G34 rectangular pocket autoroutines (seed 004): the
 engine's model, its rules, hand-derived moves, and the tool's swept area with shapely."""
 
+import math
+
 import pytest
 from hypothesis import given
 from hypothesis import settings as hsettings
@@ -10,8 +12,7 @@ from shapely.ops import unary_union
 
 from freecad_groove.engine.cycles.milltronics import G33, G34
 from freecad_groove.engine.errors import CycleError
-from freecad_groove.engine.moves import FEED, RAPID, MachineState
-from freecad_groove.engine.numbers import ARC_CHORD_TOLERANCE
+from freecad_groove.engine.moves import ARC_CCW, ARC_CW, FEED, RAPID, MachineState
 from freecad_groove.engine.registry import cycle_for, entry
 from freecad_groove.engine.settings import Settings
 
@@ -27,16 +28,40 @@ def moves_of(moves):
     return [(m.kind, round(m.x, 6), round(m.y, 6), round(m.z, 6), m.f) for m in moves]
 
 
+ARC_STEP = 1e-5  # the chords the helpers follow an arc move along stay this close to it
+
+
+def along(moves):
+    """The moves as (x, y, z) points, each arc (G2 clockwise, G3 counter-clockwise, X right and Y
+    up, about its centre) as points within ARC_STEP of it."""
+    points, here = [], None
+    for move in moves:
+        end = (move.x, move.y, move.z)
+        if move.kind in (ARC_CW, ARC_CCW):
+            (cx, cy), (x0, y0) = move.centre, here[:2]
+            radius = math.hypot(x0 - cx, y0 - cy)
+            assert radius == pytest.approx(math.hypot(move.x - cx, move.y - cy), abs=1e-9)
+            a0, a1 = math.atan2(y0 - cy, x0 - cx), math.atan2(move.y - cy, move.x - cx)
+            turn = (a1 - a0) % (2 * math.pi)
+            turn = turn - 2 * math.pi if move.kind == ARC_CW else turn
+            count = max(1, math.ceil(abs(turn) / (2 * math.acos(1 - ARC_STEP / radius))))
+            points += [(cx + radius * math.cos(a0 + turn * k / count), cy + radius * math.sin(a0 + turn * k / count),
+                        move.z) for k in range(1, count)]
+        points.append(end)
+        here = end
+    return points
+
+
 def swept(moves, depth, radius):
     """The area the tool's disc sweeps while feeding at ``depth``."""
     shapes, previous = [], None
-    for move in moves:
-        here = (move.x, move.y)
-        if move.z == depth:
+    for point in along(moves):
+        here = point[:2]
+        if point[2] == depth:
             shapes.append(Point(here).buffer(radius, quad_segs=64))
             if previous is not None and previous[2] == depth and previous[:2] != here:
                 shapes.append(LineString([previous[:2], here]).buffer(radius, quad_segs=64))
-        previous = (move.x, move.y, move.z)
+        previous = point
     return unary_union(shapes)
 
 
@@ -44,9 +69,9 @@ def inside(moves, cx, cy, half_x, half_y, corner, radius):
     """Every tool centre (and so, the region being convex, every segment) lies where the tool's disc
     stays inside the rectangle with rounded corners: exactly, not on shapely's polygons."""
     corner = max(corner, radius)
-    for move in moves:
-        dx = max(abs(move.x - cx) - (half_x - corner), 0.0)
-        dy = max(abs(move.y - cy) - (half_y - corner), 0.0)
+    for x, y, _z in along(moves):
+        dx = max(abs(x - cx) - (half_x - corner), 0.0)
+        dy = max(abs(y - cy) - (half_y - corner), 0.0)
         if (dx * dx + dy * dy) ** 0.5 > corner - radius + 1e-9:
             return False
     return True
@@ -138,12 +163,12 @@ def test_the_pocket_is_cleared_at_every_depth_and_the_tool_never_leaves_it(text)
     assert moves[0].x == 1.0 and moves[0].y == 2.0  # the plunge is at the centre
     for depth in depths:
         area = swept(moves, depth, 0.125)
-        # cleared, to the chords of the corners (ARC_CHORD_TOLERANCE)
-        assert rough.buffer(-ARC_CHORD_TOLERANCE - 1e-4).difference(area).area < 1e-7
+        # cleared, its corners too (arcs)
+        assert rough.buffer(-1e-4).difference(area).area < 1e-7
     assert inside(moves, 1, 2, half_x, half_y, corner, 0.125)  # never beyond the walls
     final = swept(moves, model.Z, 0.125)
     # the finishing lap cuts the walls at Z
-    assert pocket.buffer(-ARC_CHORD_TOLERANCE - 1e-4).difference(final).area < 1e-7
+    assert pocket.buffer(-1e-4).difference(final).area < 1e-7
 
 
 def test_a_small_square_pocket_by_hand():
@@ -275,6 +300,40 @@ def test_generated_pockets_and_facings_cover_their_rectangle_and_stay_inside(dat
     target = box(1 - size_x / 2, 2 - size_y / 2, 1 + size_x / 2, 2 + size_y / 2)
     shown = max(corner, radius)
     target = target.buffer(-shown).buffer(shown, quad_segs=64) if min(size_x, size_y) > 2 * shown else area
-    # the facing leaves the step-over's scallop at its short sides; the pocket its corners' chords
-    margin = radius - (radius ** 2 - (width / 2) ** 2) ** 0.5 if not pocket else ARC_CHORD_TOLERANCE
+    # the facing leaves the step-over's scallop at its short sides; the pocket nothing (arcs at its corners)
+    margin = radius - (radius ** 2 - (width / 2) ** 2) ** 0.5 if not pocket else 0.0
     assert target.buffer(-margin - 1e-4).difference(area).area < 1e-7
+
+
+def test_a_pocket_with_rounded_corners_by_hand():
+    # 0.75 x 0.75, corner radius P150 0.25, tool 0.25 (radius 0.125): the centre runs inset 0.125 (half
+    # side 0.25), the outer lap's corners the offset of the wall's, radius 0.25 - 0.125 = 0.125 about
+    # (+-0.125, +-0.125). Out to it in laps at most 0.85 tool diameters (0.2125) apart: two, the first
+    # half side 0.125 with sharp corners (the corner radius less the step is nothing). Counter-
+    # clockwise (no G42): each rounded corner a quarter arc G3 (X right, Y up) about its centre.
+    model = G34.parse("P151=.75\nP152=.75\nP155=.25\nP150=.25\nG34 G99 R.1 Z-.1 V-.1 F5")
+    moves = model.expand(start(x=0.0, y=0.0, z=0.1), QUARTER)
+    assert [(m.kind, round(m.x, 9), round(m.y, 9), m.z, m.f, m.centre) for m in moves] == [
+        (FEED, 0.0, 0.0, -0.1, 5.0, None),
+        (FEED, 0.125, 0.0, -0.1, 20.0, None),  # the first lap, square
+        (FEED, 0.125, 0.125, -0.1, 20.0, None),
+        (FEED, -0.125, 0.125, -0.1, 20.0, None),
+        (FEED, -0.125, -0.125, -0.1, 20.0, None),
+        (FEED, 0.125, -0.125, -0.1, 20.0, None),
+        (FEED, 0.125, 0.0, -0.1, 20.0, None),
+        (FEED, 0.25, 0.0, -0.1, 20.0, None),  # the outer lap, from its right side's middle
+        (FEED, 0.25, 0.125, -0.1, 20.0, None),
+        (ARC_CCW, 0.125, 0.25, -0.1, 20.0, (0.125, 0.125)),
+        (FEED, -0.125, 0.25, -0.1, 20.0, None),
+        (ARC_CCW, -0.25, 0.125, -0.1, 20.0, (-0.125, 0.125)),
+        (FEED, -0.25, -0.125, -0.1, 20.0, None),
+        (ARC_CCW, -0.125, -0.25, -0.1, 20.0, (-0.125, -0.125)),
+        (FEED, 0.125, -0.25, -0.1, 20.0, None),
+        (ARC_CCW, 0.25, -0.125, -0.1, 20.0, (0.125, -0.125)),
+        (FEED, 0.25, 0.0, -0.1, 20.0, None),
+        (RAPID, 0.25, 0.0, 0.1, None, None),  # G99: to the clearance plane
+    ]
+    g42 = G34.parse("P151=.75\nP152=.75\nP155=.25\nP150=.25\nG34 G42 R.1 Z-.1 V-.1 F5")
+    outer = g42.expand(start(x=0.0, y=0.0, z=0.1), QUARTER)[8:10]  # G42 runs clockwise: G2, first corner lower right
+    assert [(m.kind, round(m.x, 9), round(m.y, 9), m.centre) for m in outer] == [
+        (FEED, 0.25, -0.125, None), (ARC_CW, 0.125, -0.25, (0.125, -0.125))]

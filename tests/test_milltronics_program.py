@@ -319,3 +319,19 @@ def test_a_tool_change_keeps_the_diameter_register_in_force():
     tools = read_mill_tool_table(TWO_TOOLS, "tools.tbl")
     lines = translate_program(text, "milltronics", Settings(), target="linuxcnc", tools=tools).splitlines()
     assert "(G33 G99 G41 R.1 Z-.5 V-.3 Q.1 F5: tool diameter 0.25, D1 of tools.tbl)" in lines
+
+
+def test_a_pocket_with_rounded_corners_runs_in_linuxcnc_with_the_engine_arcs():
+    require_rs274()
+    text = ("G21 G90\nG0 X0 Y0 Z5.\nF300\nP151=40\nP152=30\nP155=5\nP150=8\nG34 G99 G42 R2. Z-3. V-1.5 Q1.5 F100\n"
+            "M30\n")
+    canon = run_rs274(translate_program(text, "milltronics", Settings(mill_tool_diameter=10.0), target="linuxcnc"),
+                      xyz=True)
+    model = G34.parse("P151=40\nP152=30\nP155=5\nP150=8\nG34 G99 G42 R2. Z-3. V-1.5 Q1.5 F100")
+    moves = model.expand(MachineState(x=0.0, y=0.0, z=5.0, feed=300.0, diameter_mode=False),
+                         Settings(mill_tool_diameter=10.0))
+    assert [c[0] for c in canon[1:]] == [m.kind for m in moves]
+    assert {"G2"} <= {c[0] for c in canon}  # G42: clockwise laps, their corners G2
+    for c, m in zip(canon[1:], moves):
+        assert c[1:4] == pytest.approx((m.x, m.y, m.z), abs=1e-4)
+        assert c.centre == (None if m.centre is None else pytest.approx(m.centre, abs=2e-4))

@@ -57,7 +57,7 @@ def test_ops_read_from_modelled_grooves_cut_exactly_the_modelled_groove(modelled
         part = Polygon(case["part"]).buffer(0)
         target = bar.difference(part)
         assert target.area > 1.0, name  # the modelled groove is there
-        moves = [Move(kind, x, z, None, p) for kind, x, z, p in case["moves"]]
+        moves = [Move(kind, x, z, None, p, centre=centre and tuple(centre)) for kind, x, z, p, centre in case["moves"]]
         result = sim.simulate(moves, blade, case["plunge"], tuple(case["start"]), bar)
         verdict = sim.check_groove(result, target, blade, tol=0.001, plunge=case["plunge"], label=name)
         sim.assert_clean(verdict, allow_infeasible=True)

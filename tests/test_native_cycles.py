@@ -105,7 +105,7 @@ M30
 """
 
 
-def test_a_gsk_g71_region_is_written_for_gsk_block_by_block():
+def test_a_gsk_g7_1_region_is_written_for_gsk_block_by_block():
     text = assert_reads_back(GSK_SLOT, "gsk", "gsk", rotary=True, linuxcnc="linuxcnc-c")
     assert lines_after(text, "G07.1 C20. J-4. R2. K0.4 L2 ...", 5) == [
         "G07.1 C20. J-4. R2. K0.4 L2", "G1 Z-10. F100.", "G1 C90.", "G07.1 C0", "G00 X60."]

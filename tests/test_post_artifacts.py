@@ -36,12 +36,12 @@ from shapely.ops import unary_union
 
 from freecad_groove import verify as sim
 from freecad_groove.engine import GroovingTool, Settings
-from freecad_groove.engine.moves import DWELL, FEED, RAPID, Move
+from freecad_groove.engine.moves import ARC_CCW, ARC_CW, DWELL, FEED, RAPID, Move
 from freecad_groove.engine.translator import translate_program
 
 POSTS = ["linuxcnc", "sinumerik", "ab9", "fanuc", "haas"]
 START_TOL = 1e-3  # how close a canonical move must end to the start point (3-decimal output)
-KINDS = {"G0": RAPID, "G1": FEED, "G4": DWELL}
+KINDS = {"G0": RAPID, "G1": FEED, "G4": DWELL, "G2": ARC_CW, "G3": ARC_CCW}
 WRITER_CODE = exec_code("tests/freecad/write_post_artifacts.py")
 WRITE_TIMEOUT = 600  # seconds for one FreeCAD's run (about 20 s on a 2-core machine)
 
@@ -103,10 +103,8 @@ def judge(case, canon, index, label):
     """Sweep the canonical moves after ``index`` through the stock: the oracle's verdict."""
     tool = case["tool"]
     blade = GroovingTool(tool["width"], tool["corner_radius"], reference=tool["reference"])
-    moves = []
-    for kind, x, z, _feed, dwell in canon[index + 1:]:
-        assert kind != "ARC", "%s: an arc in a groove program" % label
-        moves.append(Move(KINDS[kind], x, z, None, dwell if kind == "G4" else 0.0))
+    moves = [Move(KINDS[c[0]], c[1], c[2], None, c[4] if c[0] == "G4" else 0.0, centre=c.centre)
+             for c in canon[index + 1:]]
     stock = unary_union([Polygon([(z, x) for x, z in g["stock"]]) for g in case["grooves"]])
     target = unary_union([Polygon([(z, x) for x, z in g["region"]]).buffer(0) for g in case["grooves"]])
     start = tuple(canon[index][1:3])
@@ -116,16 +114,23 @@ def judge(case, canon, index, label):
     return verdict
 
 
+def expected_move(row, feed=True):
+    """An engine move of a case's "expected" list: [kind, x, z, f, p, centre]."""
+    kind, x, z, f, p, centre = row
+    return Move(kind, x, z, f if feed else None, p, centre=None if centre is None else tuple(centre))
+
+
 def check_inch_moves(case, canon, post, name):
     """An --inches program: rs274 reports inches to 4 decimals (0.00254 mm), coarser than the oracle's
     0.001 mm; the LinuxCNC program's moves, in mm, must still be the engine's to that resolution."""
     if post != "linuxcnc":
         return
-    canon = [(k, x * 25.4, z * 25.4, None, d) for k, x, z, _f, d in canon]
+    canon = [rs274.Canonical((c[0], c[1] * 25.4, c[2] * 25.4, None, c[4]),
+                             None if c.centre is None else (c.centre[0] * 25.4, c.centre[1] * 25.4)) for c in canon]
     index = next(i for i, c in enumerate(canon) if c[0] in ("G0", "G1") and
                  math.dist(c[1:3], case["start"]) <= 0.003)
-    expected = [Move(k, x, z, None, p) for k, x, z, _f, p in case["expected"]]
-    problems = canonical_matches(written_moves(expected), canon, start=index, tol=0.003)
+    expected = [expected_move(m, feed=False) for m in case["expected"]]
+    problems = canonical_matches(written_moves(expected), canon, start=index, tol=0.003, centre_tol=0.006)
     assert not problems, "%s:\n%s" % (name, "\n".join(problems[:8]))
 
 
@@ -154,7 +159,7 @@ def test_posted_grooves_run_in_rs274_and_cut_cleanly(posted, label, post):
             continue
         index = arrival(canon, case["start"])
         if post == "linuxcnc":
-            expected = [Move(k, x, z, f, p) for k, x, z, f, p in case["expected"]]
+            expected = [expected_move(m) for m in case["expected"]]
             problems = canonical_matches(written_moves(expected), canon, start=index)
             assert not problems, "%s:\n%s" % (name, "\n".join(problems[:8]))
         judge(case, canon, index, name)

@@ -4,7 +4,7 @@ a hand-written lathe program into the moves we expect, and rejects bad ones."""
 import pytest
 from rs274 import RS274Error, canonical_matches, parse_canonical, require_rs274, run_rs274
 
-from freecad_groove.engine.moves import dwell, feed, rapid
+from freecad_groove.engine.moves import arc, dwell, feed, rapid
 
 
 @pytest.fixture
@@ -105,12 +105,29 @@ def test_unknown_word_raises(rs274):
         run_rs274("G18 G7 G21 G90\nG77 X10 Z-5\nM2\n")
 
 
-def test_arcs_come_back_as_ARC_and_fail_the_comparison(rs274):
-    program = "G18 G7 G21 G90\nG0 X60 Z0\nG2 X50 Z-5 R5 F100\nM2\n"
+def test_arcs_come_back_as_g2_and_g3_with_their_centre(rs274):
+    # From X60 Z0 (radius 30): G2 R5 to radius 25 Z-5. Seen with Z to the right and X up, the minor
+    # arc turning clockwise (its angle about the centre falling) from (z 0, x 30) to (z -5, x 25) has
+    # its centre at (x 30, z -5): from angle 0 to -90 degrees. Then G3 I0 K5 back: centre (x 25, z 0).
+    program = "G18 G7 G21 G90\nG0 X60 Z0\nG2 X50 Z-5 R5 F100\nG3 X60 Z0 I0 K5\nM2\n"
     canon = run_rs274(program)
-    assert same(canon[-1:], [("ARC", 25.0, -5.0, 100.0, 0.0)])
-    problems = canonical_matches([rapid(30.0, 0.0), feed(25.0, -5.0)], canon)
-    assert any("ARC" in p for p in problems)
+    assert same(canon[-2:], [("G2", 25.0, -5.0, 100.0, 0.0), ("G3", 30.0, 0.0, 100.0, 0.0)])
+    assert [c.centre for c in canon[-2:]] == [pytest.approx((30.0, -5.0)), pytest.approx((25.0, 0.0))]
+    assert canon[0].centre is None
+    engine = [rapid(30.0, 0.0), arc(True, 25.0, -5.0, (30.0, -5.0)), arc(False, 30.0, 0.0, (25.0, 0.0))]
+    assert canonical_matches(engine, canon) == []
+    turned = [engine[0], arc(False, 25.0, -5.0, (30.0, -5.0)), engine[2]]  # the other way round
+    assert any("G3" in p and "G2" in p for p in canonical_matches(turned, canon))
+    moved = [engine[0], arc(True, 25.0, -5.0, (25.0, 0.0)), engine[2]]  # the other circle through both ends
+    assert any("centre" in p for p in canonical_matches(moved, canon))
+    assert any("G1" in p for p in canonical_matches([engine[0], feed(25.0, -5.0), engine[2]], canon))
+
+
+def test_arcs_in_the_xy_plane_come_back_with_their_centre(rs274):
+    # G17 from X10 Y0 counter-clockwise about the origin to X0 Y10, at Z-1.
+    canon = run_rs274("G17 G21 G90\nG0 X10 Y0 Z-1\nG3 X0 Y10 I-10 J0 F100\nM2\n", xyz=True)
+    assert same(canon[-1:], [("G3", 0.0, 10.0, -1.0, 100.0, 0.0)])
+    assert canon[-1].centre == pytest.approx((0.0, 0.0))
 
 
 def test_engine_moves_match_rs274(rs274):

@@ -430,7 +430,7 @@ def test_dwell_away_from_the_tool_position_is_reported():
 
 def test_unknown_move_kind_is_an_error():
     with pytest.raises(ValueError):
-        simulate([Move("G2", 1.0, 2.0)], TOOL, MINUS_X, START, STOCK)
+        simulate([Move("G5", 1.0, 2.0)], TOOL, MINUS_X, START, STOCK)
     with pytest.raises(ValueError):
         simulate([feed(float("nan"), 0.0)], TOOL, MINUS_X, START, STOCK)
 

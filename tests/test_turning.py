@@ -8,7 +8,7 @@ import math
 
 import pytest
 
-from freecad_groove.engine.moves import MINUS_X, GroovingTool, dwell, feed, rapid
+from freecad_groove.engine.moves import MINUS_X, GroovingTool, arc, dwell, feed, rapid
 from freecad_groove.verify.machining_time import Feeds, clock_text, machining_time
 from freecad_groove.verify.section import bar_section, groove_region, part_to_leave, rings_section
 from freecad_groove.verify.turning import GrooveRun, OpInput, check_ops
@@ -101,6 +101,17 @@ def test_feed_per_minute_and_rapid_rates():
 def test_feed_per_rev_at_a_fixed_speed():
     t = machining_time((20, 0), [feed(10, 0)], Feeds(feed=0.1, per_rev=True, rpm=500.0))
     assert t.feed == pytest.approx(10 / (0.1 * 500) * 60)
+
+
+def test_an_arc_is_timed_along_its_length():
+    # A half circle of radius 5 (G2 from X(radius)10 Z0 over X15 Z5 to X10 Z10): 5 pi long at 60 mm/min;
+    # the G3 the other way round the same centre is as long.
+    for clockwise in (True, False):
+        t = machining_time((10, 0), [arc(clockwise, 10, 10, (10, 5))], FEEDS)
+        assert t.feed == pytest.approx(5 * math.pi / 60 * 60, rel=1e-4)  # timed along chords within 0.001 mm
+    # per revolution at a fixed speed: length / (feed x rpm)
+    t = machining_time((10, 0), [arc(True, 15, 5, (10, 5))], Feeds(feed=0.1, per_rev=True, rpm=500.0))
+    assert t.feed == pytest.approx(2.5 * math.pi / (0.1 * 500) * 60, rel=1e-4)
 
 
 @pytest.mark.parametrize("x0, x1", [(20, 10), (10, 0), (3, 20), (-2, 6), (15, 15)])

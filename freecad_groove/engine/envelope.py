@@ -14,23 +14,52 @@ of a roughing cut and the path of a contour-parallel finishing cut.
 
 It is built once per envelope from closed-form contact curves
 (``envelope_contacts``) as their upper envelope (``envelope_curves``): lines
-and circles, each chorded directly to the tolerance when traced.
+and circles. ``trace`` chords each circle directly to a tolerance (the
+stretches the passes decide on); ``path`` gives the same boundary exactly,
+each point carrying the circle of the move that reaches it (``PathPoint``),
+and ``path_moves`` the moves a program writes along it: arcs, and the chords
+of those too flat to write as arcs.
 """
 
 import math
 from bisect import bisect_right
-from typing import Dict, List, Optional, Set, Tuple
+from typing import Dict, Iterator, List, Optional, Sequence, Set, Tuple
 
 from .envelope_contacts import EDGE_EPS, Arc, top_curves
-from .envelope_curves import Curve, chords, slope, upper_envelope, value
+from .envelope_curves import CUP, LINE, Curve, chords, slope, upper_envelope, value
+from .numbers import MIN_ARC_CHORD
 
 Point = Tuple[float, float]
+# A move along a circle of the groove frame: its centre (u, v) and whether it
+# turns counter-clockwise (u to the right, v up); None for a straight move.
+Turn = Optional[Tuple[float, float, bool]]
 
-__all__ = ["EDGE_EPS", "Arc", "Envelope", "arc_points"]
+__all__ = ["EDGE_EPS", "Arc", "Envelope", "PathPoint", "arc_points", "on_circles", "path_moves", "reversed_path",
+           "writes_arcs"]
 
 JUMP = 1e-9  # a change of level this large where two pieces meet is a wall: move straight along it
 SAME_U = 1e-7  # points closer than this along u are at the same u (no sliver moves)
 KINK = 1e-9  # two pieces whose slopes differ more than this where they meet make a kink
+# An arc's ends lie on its circle: moved at most SAME_U along u (slivers), or
+# JUMP along v where a piece starts.
+ON_CIRCLE = 1e-6
+
+
+class PathPoint(tuple):
+    """A point (u, v) of an exact path; ``arc`` is the circle the move that
+    reaches it follows: the envelope's CAP or CUP curve (a half circle over
+    u), None for a straight move. Unpacks and compares as (u, v)."""
+
+    arc: Optional[Curve] = None  # a straight move's point holds no attribute of its own
+
+    def __new__(cls, u: float, v: float, arc: Optional[Curve] = None) -> "PathPoint":
+        point = tuple.__new__(cls, (u, v))
+        if arc is not None:
+            point.arc = arc
+        return point
+
+    def __repr__(self) -> str:
+        return "PathPoint(%r, %r%s)" % (self[0], self[1], "" if self.arc is None else ", arc")
 
 
 class Envelope:
@@ -66,14 +95,9 @@ class Envelope:
             level = max(level, value(pieces[index - 1], u))  # where two pieces meet, the higher
         return level
 
-    def trace(self, lo: float, hi: float, tol: float = 0.0002) -> List[Point]:
-        """Points (u, lowest(u)) from lo to hi, close enough that the straight
-        moves between them stay within ``tol`` of the true boundary and never
-        below it; straight along u where the boundary jumps (a wall)."""
-        if hi < lo:
-            return [(u, v) for u, v in reversed(self.trace(hi, lo, tol))]
+    def _runs(self, lo: float, hi: float) -> Iterator[Tuple[float, float, Curve]]:
+        """(a, b, piece): the pieces of the lowest level over [lo, hi] in order, each over [a, b]."""
         starts, pieces = self._built()
-        out = [(lo, self.lowest(lo))]
         index = max(bisect_right(starts, lo) - 1, 0)
         span_hi = self._span[1]
         while index < len(pieces):
@@ -81,17 +105,54 @@ class Envelope:
             b = min(starts[index + 1] if index + 1 < len(starts) else span_hi, hi)
             piece = pieces[index]
             if b > a and piece is not None:
-                level = value(piece, a)
-                if abs(level - out[-1][1]) > JUMP:
-                    out.append((a, level))
-                out.extend(chords(piece, a, b, tol))
+                yield a, b, piece
             if b >= hi:
                 break
             index += 1
+
+    def trace(self, lo: float, hi: float, tol: float = 0.0002) -> List[Point]:
+        """Points (u, lowest(u)) from lo to hi, close enough that the straight
+        moves between them stay within ``tol`` of the true boundary and never
+        below it; straight along u where the boundary jumps (a wall)."""
+        return self.traces(lo, hi, tol)[0]
+
+    def path(self, lo: float, hi: float) -> List[PathPoint]:
+        """The boundary ``trace`` chords, exactly: from lo to hi, a point where
+        one piece meets the next, each reached along its piece (PathPoint.arc:
+        the circle of a CAP or CUP piece, None along a line or a wall)."""
+        return self.traces(lo, hi, None)[1]
+
+    def traces(self, lo: float, hi: float, tol: Optional[float]) -> Tuple[List[Point], Optional[List[PathPoint]]]:
+        """(``trace`` with ``tol``, ``path``) from lo to hi, in one walk over
+        the pieces: no chords for ``tol`` None; with ``tol``, the path None
+        when none of its arcs is written as one (``path_moves``: all within
+        ``tol`` of their chords or shorter than MIN_ARC_CHORD), the chords
+        being what it writes."""
+        if hi < lo:
+            chorded, exact = self.traces(hi, lo, tol)
+            return [(u, v) for u, v in reversed(chorded)], exact and reversed_path(exact)
+        start = self.lowest(lo)
+        chorded, ends = [(lo, start)], [(lo, start, None)]
+        worth = tol is None
+        for a, b, piece in self._runs(lo, hi):
+            level = value(piece, a)
+            if abs(level - ends[-1][1]) > JUMP:  # the last point of both: (a, the last piece's level there)
+                chorded.append((a, level))
+                ends.append((a, level, None))
+            if tol is not None:
+                chorded.extend(chords(piece, a, b, tol))
+            arc = piece if piece.kind != LINE and piece.size > 0 else None
+            end = value(piece, b)
+            worth = worth or (arc is not None and _writable(arc, (a, level), (b, end), tol))
+            ends.append((b, end, arc))
         end = self.lowest(hi)
-        if abs(end - out[-1][1]) > JUMP:
-            out.append((hi, end))
-        return _drop_collinear(_without_slivers(out))
+        if abs(end - ends[-1][1]) > JUMP:
+            chorded.append((hi, end))
+            ends.append((hi, end, None))
+        chorded = _drop_collinear(_without_slivers(chorded)) if tol is not None else []
+        if not worth:
+            return chorded, None
+        return chorded, _drop_collinear(_without_slivers([PathPoint(*point) for point in ends]))
 
     def walls(self, lo: float, hi: float) -> Set[float]:
         """Blade positions in (lo, hi) where a side edge passes a vertical step of the top."""
@@ -122,37 +183,54 @@ class Envelope:
         return out
 
 
+def _moved(point: Point, u: float, v: float, arc: bool = False) -> Point:
+    """``point`` moved less than SAME_U along u to (u, v): a point of an exact
+    path is then reached straight (the move no longer spans its circle over
+    u), or along its circle still with ``arc`` (the move keeps its span)."""
+    if not isinstance(point, PathPoint):
+        return (u, v)
+    return PathPoint(u, v, point.arc if arc else None)
+
+
 def _without_slivers(pts: List[Point]) -> List[Point]:
     """The points with those less than SAME_U along u from the one before
     moved to its u (a wall as wide as the blade is a dip EDGE_EPS wide), and
     those less than SAME_U from it both ways dropped; the trace still ends
     exactly where asked (the last run along a wall moves there)."""
     out = [pts[0]]
-    for u, v in pts[1:]:
+    for point in pts[1:]:
+        u, v = point
         pu, pv = out[-1]
         if abs(u - pu) < SAME_U:
             if abs(v - pv) < SAME_U:
                 continue
-            u = pu
-        out.append((u, v))
+            point = _moved(point, pu, v)
+        out.append(point)
     end = pts[-1]
     run = out[-1][0]
     if len(out) > 1 and run != end[0] and abs(run - end[0]) < SAME_U:
         k = len(out) - 1
         while k > 0 and out[k][0] == run:
-            out[k] = (end[0], out[k][1])
+            out[k] = _moved(out[k], end[0], out[k][1], arc=True)
             k -= 1
-    out[-1] = end
+    if out[-1] is not end:  # the end dropped beside the last point, or the last run moved to it
+        out[-1] = _moved(end, end[0], end[1]) if getattr(out[-1], "arc", None) is None else \
+            PathPoint(end[0], end[1], out[-1].arc)
     return out
 
 
 def _drop_collinear(pts: List[Point], eps: float = 1e-9) -> List[Point]:
     """The points without those less than eps off the line through their
-    neighbours (a distance, so that short chords keep their corners)."""
+    neighbours (a distance, so that short chords keep their corners); a
+    point an arc reaches or leaves stays."""
     if len(pts) < 3:
         return pts
+    exact = isinstance(pts[0], PathPoint)
     out = [pts[0]]
     for i in range(1, len(pts) - 1):
+        if exact and (pts[i].arc is not None or pts[i + 1].arc is not None):
+            out.append(pts[i])
+            continue
         (u0, v0), (u1, v1), (u2, v2) = out[-1], pts[i], pts[i + 1]
         cross = (u1 - u0) * (v2 - v0) - (v1 - v0) * (u2 - u0)
         turns_back = (u1 - u0) * (u2 - u1) + (v1 - v0) * (v2 - v1) < 0
@@ -184,3 +262,68 @@ def arc_points(center: Point, radius: float, a0: float, a1: float, outside: bool
             pts.append((cx + radius * math.cos(a), cy + radius * math.sin(a)))
     pts.append((cx + radius * math.cos(a1), cy + radius * math.sin(a1)))
     return pts
+
+
+def on_circles(pts: Sequence[Point], tol: float = ON_CIRCLE) -> bool:
+    """Whether every arc of the exact path ``pts`` starts and ends on its
+    circle (within ``tol``): the path a program may write as it is."""
+    for here, point in zip(pts, pts[1:]):
+        arc = getattr(point, "arc", None)
+        if arc is not None and not all(abs(math.dist(p, (arc.cu, arc.cv)) - arc.size) <= tol for p in (here, point)):
+            return False
+    return True
+
+
+def reversed_path(pts: Sequence[PathPoint]) -> List[PathPoint]:
+    """The exact path run the other way: each move follows the circle the
+    move it retraces followed."""
+    out = [PathPoint(*pts[-1])]
+    for k in range(len(pts) - 2, -1, -1):
+        out.append(PathPoint(*pts[k], getattr(pts[k + 1], "arc", None)))
+    return out
+
+
+def _arc_chords(arc: Curve, start: Point, end: Point, tol: float) -> List[Point]:
+    """The moves ``trace`` makes along ``arc`` from start to end (end last)."""
+    if end[0] >= start[0]:
+        return chords(arc, start[0], end[0], tol)[:-1] + [end]
+    back = chords(arc, end[0], start[0], tol)
+    return list(reversed(back[:-1])) + [end]
+
+
+def path_moves(start: Point, pts: Sequence[Point], tol: float) -> Iterator[Tuple[Point, Turn]]:
+    """The moves from ``start`` through the points ``pts`` of an exact path
+    (plain points: straight moves): (end, turn), ``turn`` (cu, cv,
+    counter-clockwise) for a move along a circle, None for a straight one.
+    An arc whose sagitta is within ``tol``, or shorter than MIN_ARC_CHORD,
+    is its chords as ``trace`` makes them instead (outside a cap, inside a
+    cup: never below the boundary)."""
+    here = start
+    for point in pts:
+        arc = getattr(point, "arc", None)
+        if arc is None:
+            yield point, None
+        elif not _writable(arc, here, point, tol):
+            for chord_end in _arc_chords(arc, here, point, tol):
+                yield chord_end, None
+        else:
+            # A cup (lower half circle) runs counter-clockwise toward +u, a cap clockwise.
+            yield point, (arc.cu, arc.cv, (arc.kind == CUP) == (point[0] > here[0]))
+        here = point
+
+
+def _writable(arc: Curve, start: Point, end: Point, tol: float) -> bool:
+    """Whether the move along ``arc`` from start to end is written as an arc:
+    its sagitta over ``tol`` and its chord at least MIN_ARC_CHORD."""
+    half = 0.5 * math.dist(start, end)
+    sagitta = arc.size - math.sqrt(max(arc.size * arc.size - half * half, 0.0))
+    return sagitta > tol and 2 * half >= MIN_ARC_CHORD
+
+
+def writes_arcs(pts: Sequence[Point], tol: float, lo: float = -math.inf, hi: float = math.inf) -> bool:
+    """Whether ``path_moves`` may write an arc along the exact path ``pts``
+    over (lo, hi) along u: an arc whose whole move is written as one (split
+    in pieces, it is no less flat, nor longer) reaching into (lo, hi)."""
+    return any(point.arc is not None and min(here[0], point[0]) < hi and max(here[0], point[0]) > lo
+               and _writable(point.arc, here, point, tol)
+               for here, point in zip(pts, pts[1:]) if isinstance(point, PathPoint))

@@ -31,6 +31,12 @@ MAX_MOVES = 1_000_000
 ARC_IJK_TOLERANCE = 0.01
 ARC_R_TOLERANCE = 0.001
 
+# The shortest arc a cycle writes as one G2/G3 (its chord, in the program's
+# units): a shorter one's end, rounded to the output's resolution, could fall
+# behind its start and turn it the other way round the whole circle; it is
+# written as chords instead.
+MIN_ARC_CHORD = 0.002
+
 # An arc expanded into straight segments (GSK G7.1's arcs in the developed
 # plane of a cylinder): the largest distance between a segment and the arc it
 # replaces, in mm on the developed surface (converted in inch programs). A tenth of

@@ -4,7 +4,8 @@ Feeds per minute take length / feed. Feeds per revolution take
 length / (feed x rpm); with constant surface speed V (m/min) the spindle
 turns at rpm(x) = min(max_rpm, 1000 V / (2 pi x)) at radius x, so the time
 of a straight move is its length times the mean of 1 / (feed x rpm) along it,
-integrated in closed form. Dwells take their seconds. Rapids take
+integrated in closed form; an arc (G2/G3) is timed along its chords
+(arcs.TIME_TOL). Dwells take their seconds. Rapids take
 max(|dx| / rapid_x, |dz| / rapid_z) (each axis at its own rapid rate) when
 both rates are known, else they are not timed (``rapids_timed`` False).
 """
@@ -17,6 +18,8 @@ from dataclasses import dataclass
 from typing import Optional
 
 from freecad_groove.engine.moves import DWELL, FEED, RAPID, Move
+
+from .arcs import TIME_TOL, straight
 
 SECONDS_PER_MINUTE = 60.0
 
@@ -98,7 +101,7 @@ def machining_time(start: tuple[float, float], moves: Iterable[Move], feeds: Fee
     """The time of ``moves`` (x radius, z) from ``start`` (x, z)."""
     pos = (float(start[0]), float(start[1]))
     cut = dwell = rapid = 0.0
-    for move in moves:
+    for move in straight(moves, pos, TIME_TOL):
         end = (float(move.x), float(move.z))
         if move.kind == FEED:
             cut += feed_seconds(pos, end, feeds)

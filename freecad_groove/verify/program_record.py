@@ -15,9 +15,10 @@ geometry as lists of (x, z) points like ``moves.Move``.
 
 Choices (README, "Choices of verify and plot"):
 
-* An arc G2/G3 becomes chords no farther than ARC_CHORD_TOL from the arc.
-  Seen with Z to the right and X (the radius) up, G2 turns clockwise (the
-  plane G18 seen from +Y).
+* An arc G2/G3 becomes chords no farther than ARC_CHORD_TOL from the arc;
+  a cycle's arcs (CYCLE93's contour and finishing passes) become chords no
+  farther than arcs.SWEEP_TOL, the simulation's own. Seen with Z to the right
+  and X (the radius) up, G2 turns clockwise (the plane G18 seen from +Y).
 * A CYCLE93 call declares its groove by its profile (GrooveGeometry's
   region); a pecking cycle (G77/G76, G75/G74) one groove per plunge position:
   the blade's outline swept from the cycle's start to its bottom.
@@ -25,7 +26,6 @@ Choices (README, "Choices of verify and plot"):
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field, replace
 from typing import Optional
 
@@ -39,6 +39,8 @@ from freecad_groove.engine.numbers import MM_PER_INCH
 from freecad_groove.engine.tool_table import blade_for
 from freecad_groove.engine.translator import Translator, program_lines
 
+from . import arcs
+from .arcs import SWEEP_TOL, radius_centre, straightened
 from .blade import swept_area
 from .overlay import intersection
 
@@ -173,17 +175,30 @@ class RecordingTranslator(Translator):
             self._fail("verify needs the blade of %s: %s" % (entry.name, exc))
         step = Step("%s (line %d)" % (entry.name, self._line), self._line, start, self.state.tool, scale,
                     mm_blade(blade, scale), cycle=True)
-        step.moves = [move._replace(x=move.x * scale, z=move.z * scale) for move in moves]
-        step.lines = [self._line] * len(moves)
+        scaled = [mm_move(move, scale) for move in moves]
+        feeds = []
         for move in moves:  # a move without F runs at the last F before it
             feed = feed if move.f is None else move.f
-            step.speeds.append(self._speeds(feed))
+            feeds.append(feed)
+        for index, move in straightened(scaled, start, SWEEP_TOL):  # its arcs as chords, like a G2/G3 block's
+            step.moves.append(move)
+            step.speeds.append(self._speeds(feeds[index]))
+        step.lines = [self._line] * len(step.moves)
         step.plunge, grooves, air = declared_grooves(entry.name, model, machine, settings, blade)
         step.grooves = [[(x * scale, z * scale) for x, z in ring] for ring in grooves]
         step.air = [[(x * scale, z * scale) for x, z in ring] for ring in air]
         if self.first_approach is None:
             self.first_approach = start
         self.steps.append(step)
+
+
+def mm_move(move: Move, scale: float) -> Move:
+    """The move in mm (``scale`` mm per program unit): its end, an arc's centre and radius."""
+    if scale == 1.0:
+        return move
+    centre = None if move.centre is None else (move.centre[0] * scale, move.centre[1] * scale)
+    return move._replace(x=move.x * scale, z=move.z * scale, centre=centre,
+                         radius=None if move.radius is None else move.radius * scale)
 
 
 def mm_blade(blade: GroovingTool, scale: float) -> GroovingTool:
@@ -196,35 +211,9 @@ def mm_blade(blade: GroovingTool, scale: float) -> GroovingTool:
 # ---------------------------------------------------------------- geometry
 
 
-def radius_centre(start: Point, end: Point, radius: float, clockwise: bool) -> Point:
-    """The centre (x, z) of the arc of ``radius`` (at most half a turn) from start to end."""
-    (x0, z0), (x1, z1) = start, end
-    half = math.hypot(x1 - x0, z1 - z0) / 2.0
-    height = math.sqrt(max(radius * radius - half * half, 0.0))
-    mz, mx = (z0 + z1) / 2.0, (x0 + x1) / 2.0
-    dz, dx = (z1 - z0) / (2 * half), (x1 - x0) / (2 * half)
-    side = -1.0 if clockwise else 1.0  # (z, x) plane: a clockwise minor arc has its centre to the right
-    return (mx + side * height * dz, mz - side * height * dx)
-
-
 def arc_chords(start: Point, end: Point, centre: Point, clockwise: bool) -> list[Point]:
     """Points (x, z) along the arc from start to end (end included), chords within ARC_CHORD_TOL."""
-    cx, cz = centre
-    radius = math.hypot(start[0] - cx, start[1] - cz)
-    a0 = math.atan2(start[0] - cx, start[1] - cz)  # angle in the (z, x) plane
-    a1 = math.atan2(end[0] - cx, end[1] - cz)
-    sweep = a1 - a0
-    if clockwise:
-        sweep = sweep - 2 * math.pi if sweep > 0 else sweep
-    else:
-        sweep = sweep + 2 * math.pi if sweep < 0 else sweep
-    if radius <= ARC_CHORD_TOL:
-        return [end]
-    step = 2.0 * math.acos(max(1.0 - ARC_CHORD_TOL / radius, -1.0))
-    count = max(1, math.ceil(abs(sweep) / step))
-    points = [(cx + radius * math.sin(a0 + sweep * k / count), cz + radius * math.cos(a0 + sweep * k / count))
-              for k in range(1, count)]
-    return points + [end]
+    return arcs.arc_chords(start, end, centre, clockwise, ARC_CHORD_TOL) or [end]
 
 
 Rings = list[list[Point]]
@@ -244,8 +233,15 @@ def declared_grooves(name: str, model, start, settings, blade: GroovingTool) -> 
         lo, hi, m = geometry.final_top[0][0], geometry.final_top[-1][0], geometry.slope
         above = [(lo, m * lo), (hi, m * hi), (hi, m * hi + CONTOUR_AIR), (lo, m * lo + CONTOUR_AIR)]
         air = [geometry.frame.point(u, v) for u, v in above]
-        return model.plunge_direction(), [geometry.region_world()], [air]
+        # the groove as declared, its arcs within the simulation's own tolerance (PATH_TOLERANCE is in
+        # the program's units: 0.005 mm in an inch program, as much as the exact arcs the passes cut)
+        return model.plunge_direction(), [geometry.region_world(SWEEP_TOL * _units(start))], [air]
     raise ProgramError("verify does not know the groove %s declares" % name)
+
+
+def _units(state) -> float:
+    """Program units per mm in ``state``."""
+    return 1.0 if state.metric else 1.0 / MM_PER_INCH
 
 
 def _plunge_groove(axis: str, plunge: str, blade: GroovingTool, p0: float, bottom: float, s: float) -> list[Point]:

@@ -1,6 +1,7 @@
 """Material-removal simulation: run expanded moves through the stock.
 
-FEED moves remove the area the blade sweeps; a RAPID is checked against the
+FEED moves remove the area the blade sweeps, arcs (G2/G3) too, as chords
+within arcs.SWEEP_TOL of them; a RAPID is checked against the
 stock still standing at that moment; a DWELL removes nothing and must be where
 the tool is. Tool positions are (x, z) like ``moves.Move``, x the radius; the
 stock and everything derived from it are shapely (z, x).
@@ -17,8 +18,9 @@ import numpy as np
 import shapely
 from shapely import Geometry
 
-from freecad_groove.engine.moves import DWELL, FEED, RAPID, GroovingTool, Move
+from freecad_groove.engine.moves import ARCS, DWELL, FEED, RAPID, GroovingTool, Move
 
+from .arcs import straightened
 from .blade import ARC_EXCESS, outline_at_origin
 from .overlay import difference, intersection, union_all
 
@@ -29,7 +31,7 @@ RAPID_SKIN = ARC_EXCESS + 1e-5
 RAPID_AREA_TOL = 1e-9
 
 Point = tuple[float, float]  # (x, z), x the radius
-Segment = tuple[int, Point, Point]  # (index of the move, start, end)
+Segment = tuple[int, Point, Point, bool]  # (index of the move, start, end, a rapid); an arc is several
 
 
 @dataclass
@@ -90,46 +92,45 @@ class SimulationResult:
 
 
 def _check_coords(i: int, move: Move) -> None:
-    if not (math.isfinite(move.x) and math.isfinite(move.z)):
+    values = (move.x, move.z) + (tuple(move.centre) if move.kind in ARCS and move.centre is not None else ())
+    if not all(math.isfinite(value) for value in values):
         raise ValueError("move #%d %r has a non-finite coordinate" % (i, move))
 
 
 def _walk(moves: list[Move], start: Point) -> tuple[list[Segment], list[DwellMismatch], Point]:
-    """Follow the moves from ``start``: the segments the tool sweeps (rapids
-    and feeds), the dwells that are not where the tool is (by more than
-    1e-9), and the final position."""
+    """Follow the moves from ``start``: the segments the tool sweeps (rapids,
+    feeds, the chords of arcs), the dwells that are not where the tool is (by
+    more than 1e-9), and the final position."""
     pos = (float(start[0]), float(start[1]))
     segments = []
     dwell_mismatches = []
     for i, m in enumerate(moves):
         _check_coords(i, m)
+        if m.kind not in (RAPID, FEED, DWELL) and m.kind not in ARCS:
+            raise ValueError("move #%d has unknown kind %r" % (i, m.kind))
+    for i, m in straightened(moves, pos):
         if m.kind in (RAPID, FEED):
             end = (float(m.x), float(m.z))
-            segments.append((i, pos, end))
+            segments.append((i, pos, end, m.kind == RAPID))
             pos = end
-        elif m.kind == DWELL:
-            if abs(m.x - pos[0]) > 1e-9 or abs(m.z - pos[1]) > 1e-9:
-                dwell_mismatches.append(DwellMismatch(i, m, pos))
-        else:
-            raise ValueError("move #%d has unknown kind %r" % (i, m.kind))
+        elif abs(m.x - pos[0]) > 1e-9 or abs(m.z - pos[1]) > 1e-9:
+            dwell_mismatches.append(DwellMismatch(i, m, pos))
     return segments, dwell_mismatches, pos
 
 
-def _swept_hulls(segments: list[Segment], base: np.ndarray) -> dict[int, Geometry]:
-    """The area each segment sweeps, by move index: the convex hull of the
-    outline ``base`` at both ends, all segments in one vectorised call."""
-    hulls = {}
-    if segments:
-        nb = len(base)
-        ends = np.empty((len(segments), 2 * nb, 2))
-        for k, (_, a, b) in enumerate(segments):
-            ends[k, :nb] = base + (a[1], a[0])
-            ends[k, nb:] = base + (b[1], b[0])
-        indices = np.repeat(np.arange(len(segments)), 2 * nb)
-        points = shapely.multipoints(ends.reshape(-1, 2), indices=indices)
-        for (i, _, _), hull in zip(segments, shapely.convex_hull(points)):
-            hulls[i] = hull
-    return hulls
+def _swept_hulls(segments: list[Segment], base: np.ndarray) -> list[Geometry]:
+    """The area each segment sweeps: the convex hull of the outline ``base``
+    at both ends, all segments in one vectorised call."""
+    if not segments:
+        return []
+    nb = len(base)
+    ends = np.empty((len(segments), 2 * nb, 2))
+    for k, (_, a, b, _rapid) in enumerate(segments):
+        ends[k, :nb] = base + (a[1], a[0])
+        ends[k, nb:] = base + (b[1], b[0])
+    indices = np.repeat(np.arange(len(segments)), 2 * nb)
+    points = shapely.multipoints(ends.reshape(-1, 2), indices=indices)
+    return list(shapely.convex_hull(points))
 
 
 def _flush(remaining: Geometry, pending: list[Geometry]) -> Geometry:
@@ -152,7 +153,7 @@ def _rapid_overlap(hull: Geometry, remaining: Geometry, rapid_skin: float) -> Ge
 def _cut(
     moves: list[Move],
     segments: list[Segment],
-    hulls: dict[int, Geometry],
+    hulls: list[Geometry],
     stock: Geometry,
     rapid_area_tol: float,
     rapid_skin: float,
@@ -161,20 +162,19 @@ def _cut(
     """Remove the feeds' swept areas from ``stock`` in program order, checking
     each rapid against the stock standing when it runs (``attached`` of it:
     see simulate). Returns the stock left and the rapid collisions."""
-    starts = {i: a for i, a, _ in segments}
     remaining = stock
     pending = []
     collisions = []
-    for i, m in enumerate(moves):
-        if m.kind == FEED:
-            pending.append(hulls[i])
-        elif m.kind == RAPID:
-            remaining = _flush(remaining, pending)
-            pending = []
-            standing = remaining if attached is None else attached(remaining)
-            hit = _rapid_overlap(hulls[i], standing, rapid_skin)
-            if hit is not None and hit.area > rapid_area_tol:
-                collisions.append(RapidCollision(i, m, starts[i], hit.area, hit))
+    for (i, start, _end, is_rapid), hull in zip(segments, hulls):
+        if not is_rapid:
+            pending.append(hull)
+            continue
+        remaining = _flush(remaining, pending)
+        pending = []
+        standing = remaining if attached is None else attached(remaining)
+        hit = _rapid_overlap(hull, standing, rapid_skin)
+        if hit is not None and hit.area > rapid_area_tol:
+            collisions.append(RapidCollision(i, moves[i], start, hit.area, hit))
     return _flush(remaining, pending), collisions
 
 
@@ -192,7 +192,8 @@ def simulate(
     from ``start`` = (x, z) through ``stock`` (shapely (z, x) Polygon/MultiPolygon).
 
     FEED moves remove the area the tool sweeps (the convex hull of the tool
-    outline at both ends: exact for a straight move of a convex tool). A
+    outline at both ends: exact for a straight move of a convex tool), arcs
+    ARC_CW/ARC_CCW the areas of their chords (arcs.straightened). A
     RAPID whose swept area, shrunk by ``rapid_skin`` mm, overlaps the stock
     still standing at that moment by more than ``rapid_area_tol`` mm^2 is
     recorded. DWELL removes nothing; a dwell whose x, z differ from the tool

@@ -15,7 +15,7 @@ HOST_MOVES_FILE = "host_moves.json"
 
 
 def expand():
-    """The seed call's moves: a list of Move(kind, x, z, f, p)."""
+    """The seed call's moves: a list of Move (its arcs with their centres)."""
     settings = Settings(tool=GroovingTool(TOOL["width"], TOOL["corner_radius"]))
     return Cycle93.parse(SEED_CALL).expand(MachineState(**START), settings)
 
@@ -26,5 +26,5 @@ def as_json():
         "call": SEED_CALL,
         "start": dict(START),
         "tool": dict(TOOL),
-        "moves": [[m.kind, m.x, m.z, m.f, m.p] for m in expand()],
+        "moves": [[m.kind, m.x, m.z, m.f, m.p] + (list(m.centre) if m.centre else [None, None]) for m in expand()],
     }

@@ -31,29 +31,36 @@ def moves():
     return seed_case.expand()
 
 
-def command_of(move):
-    """The Path.Command an operation would put in its Path for this move."""
-    if move.kind == "G4":
-        return Path.Command("G4", {"P": move.p})
-    params = {"X": move.x, "Z": move.z}
-    if move.f is not None:
-        params["F"] = move.f
-    return Path.Command(move.kind, params)
+def with_starts(moves):
+    """(move, the position it starts from (x, z)) for the seed's moves, from its start point."""
+    here, out = (seed_case.START["x"], seed_case.START["z"]), []
+    for move in moves:
+        out.append((move, here))
+        here = here if move.kind == "G4" else (move.x, move.z)
+    return out
 
 
-def expected_params(move):
+def expected_params(move, here):
+    """The words of the Path.Command an operation puts in its Path for this move (an arc's I, K
+    its centre less its start ``here``)."""
     if move.kind == "G4":
         return {"P": move.p}
     params = {"X": move.x, "Z": move.z}
+    if move.kind in ("G2", "G3"):
+        params.update(I=move.centre[0] - here[0], K=move.centre[1] - here[1])
     if move.f is not None:
         params["F"] = move.f
     return params
 
 
+def commands_of(moves):
+    return [Path.Command(move.kind, expected_params(move, here)) for move, here in with_starts(moves)]
+
+
 def assert_same_commands(got, want_moves, tol, what):
     assert len(got) == len(want_moves), "%s: %d commands, expected %d" % (what, len(got), len(want_moves))
-    for i, (cmd, move) in enumerate(zip(got, want_moves)):
-        want = expected_params(move)
+    for i, (cmd, (move, here)) in enumerate(zip(got, with_starts(want_moves))):
+        want = expected_params(move, here)
         assert cmd.Name == move.kind, "%s: command %d is %s, expected %s" % (what, i, cmd.Name, move.kind)
         assert sorted(cmd.Parameters) == sorted(want), "%s: command %d %s has words %s, expected %s" % (
             what, i, cmd.Name, sorted(cmd.Parameters), sorted(want))
@@ -122,7 +129,7 @@ def test_seed_cycle93_expands_to_the_hosts_moves():
 
 def test_seed_moves_have_every_kind():
     kinds = {m.kind for m in moves()}
-    assert kinds == {"G0", "G1", "G4"}, kinds  # so the round trips below cover all three
+    assert kinds == {"G0", "G1", "G2", "G3", "G4"}, kinds  # so the round trips below cover all five
 
 
 # -- the moves survive FreeCAD's Path data ---------------------------------------------
@@ -130,12 +137,12 @@ def test_seed_moves_have_every_kind():
 
 def test_moves_survive_path_command():
     want = moves()
-    assert_same_commands([command_of(m) for m in want], want, TOL, "Path.Command")
+    assert_same_commands(commands_of(want), want, TOL, "Path.Command")
 
 
 def test_moves_survive_path_text_round_trip():
     want = moves()
-    text = Path.Path([command_of(m) for m in want]).toGCode()
+    text = Path.Path(commands_of(want)).toGCode()
     assert text.count("\n") >= len(want)
     again = Path.Path()
     again.setFromGCode(text)
@@ -147,7 +154,7 @@ def test_moves_survive_a_saved_and_reopened_document(tmp_path):
     doc = FreeCAD.newDocument("GrooveSeed")
     try:
         obj = doc.addObject("Path::Feature", "Seed")
-        obj.Path = Path.Path([command_of(m) for m in want])
+        obj.Path = Path.Path(commands_of(want))
         filename = str(tmp_path / "seed.FCStd")
         doc.saveAs(filename)
     finally:

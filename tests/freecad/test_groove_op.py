@@ -25,7 +25,7 @@ from parts import FACES, FEED_MM_MIN, face_name, make_shop, shaft_shape  # noqa:
 from freecad_groove import make_groove
 from freecad_groove.engine import GroovingTool, MachineState, Settings
 from freecad_groove.engine.cycles.cycle93 import Cycle93
-from freecad_groove.engine.moves import DWELL, FEED, RAPID
+from freecad_groove.engine.moves import ARC_CCW, ARC_CW, DWELL, FEED, RAPID
 from freecad_groove.freecad import faces as faces_mod
 from freecad_groove.ops.groove import op as groove_op
 from freecad_groove.ops.groove.cutting import DEFAULT_FEED_PER_REV, DEFAULT_RPM
@@ -156,11 +156,16 @@ FEED_MM_S = FEED_MM_MIN / 60.0  # the tool controller's feed as the Path holds i
 # A tool controller without feed or speed (a new Job's): the op's defaults, 0.05 mm/rev at 500 rpm, in mm/s
 DEFAULT_FEED_MM_S = DEFAULT_FEED_PER_REV * DEFAULT_RPM / 60.0
 
-# The Path's form of each kind of engine move, spelled out: (command, words).
+# The Path's form of each kind of engine move from ``here`` (x, z), spelled out: (command, words); an
+# arc's I and K its centre less its start.
 PATH_FORM = {
-    RAPID: lambda move, feed: ("G0", {"X": move.x, "Z": move.z}),
-    FEED: lambda move, feed: ("G1", {"X": move.x, "Z": move.z, "F": feed}),
-    DWELL: lambda move, feed: ("G4", {"P": move.p}),
+    RAPID: lambda move, feed, here: ("G0", {"X": move.x, "Z": move.z}),
+    FEED: lambda move, feed, here: ("G1", {"X": move.x, "Z": move.z, "F": feed}),
+    DWELL: lambda move, feed, here: ("G4", {"P": move.p}),
+    ARC_CW: lambda move, feed, here: ("G2", {"X": move.x, "Z": move.z, "I": move.centre[0] - here[0],
+                                             "K": move.centre[1] - here[1], "F": feed}),
+    ARC_CCW: lambda move, feed, here: ("G3", {"X": move.x, "Z": move.z, "I": move.centre[0] - here[0],
+                                              "K": move.centre[1] - here[1], "F": feed}),
 }
 
 
@@ -172,9 +177,10 @@ def groove_path(link, call, start, tool=TOOL, feed=FEED_MM_S, retreat=()):
     def rapids(steps):
         return [("G0", {axis: value for axis, value in zip("XZ", step) if value is not None}) for step in steps]
 
-    path = rapids(link)
+    path, here = rapids(link), start
     for move in call.expand(MachineState(x=start[0], z=start[1]), Settings(tool=tool)):
-        path.append(PATH_FORM[move.kind](move, feed))
+        path.append(PATH_FORM[move.kind](move, feed, here))
+        here = here if move.kind == DWELL else (move.x, move.z)
     return path + rapids(retreat)
 
 

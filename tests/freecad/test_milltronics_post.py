@@ -25,7 +25,7 @@ from pylib import require_shapely
 
 from freecad_groove.engine.cycles.milltronics import G33, G34
 from freecad_groove.engine.mill_tool_table import MillToolTable
-from freecad_groove.engine.moves import FEED, MachineState
+from freecad_groove.engine.moves import ARC_CCW, ARC_CW, FEED, MachineState
 from freecad_groove.engine.settings import Settings
 from freecad_groove.engine.translator import translate_program
 from freecad_groove.freecad.posts.errors import PostError
@@ -178,6 +178,21 @@ def _path_points(op):
     return points
 
 
+def _engine_points(moves):
+    """The engine's moves as (x, y, z) points like _path_points: arcs (G2, G3 about their centres) in
+    short chords, a rapid's point at RAPID_Z."""
+    points, here = [], (START.x, START.y, START.z)
+    for m in moves:
+        end = (m.x, m.y, m.z)
+        if m.kind in (ARC_CW, ARC_CCW):
+            offsets = {"I": m.centre[0] - here[0], "J": m.centre[1] - here[1]}
+            points += _arc_points(here, end, offsets, m.kind == ARC_CW)
+        else:
+            points.append(end if m.kind == FEED else (m.x, m.y, RAPID_Z))
+        here = end
+    return points
+
+
 @pytest.mark.parametrize("corner", [0.0, 4.0])
 def test_the_cycles_sweep_what_the_ops_own_paths_sweep(corner):
     require_shapely()
@@ -192,8 +207,7 @@ def test_the_cycles_sweep_what_the_ops_own_paths_sweep(corner):
         if corner:
             outlines[1] = box(30 + corner, 20 + corner, 70 - corner, 40 - corner).buffer(corner, 64)
         for op, call, outline in zip((face, pocket), calls, outlines):
-            engine = [(m.x, m.y, m.z if m.kind == FEED else RAPID_Z)
-                      for m in call.expand(START, Settings(mill_tool_diameter=TOOL))]
+            engine = _engine_points(call.expand(START, Settings(mill_tool_diameter=TOOL)))
             cycle, own = _swept(engine, TOOL / 2), _swept(_path_points(op), TOOL / 2)
             assert sorted(cycle) == sorted(own), op.Label
             for depth in cycle:

@@ -38,7 +38,7 @@ from freecad_groove.engine import GroovingTool, Settings
 from freecad_groove.engine.cycles.ab_g77 import G76, G77
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.cycles.fanuc_g75 import FanucG74, FanucG75, HaasG74, HaasG75
-from freecad_groove.engine.moves import DWELL, FEED, RAPID
+from freecad_groove.engine.moves import DWELL, RAPID
 from freecad_groove.engine.output.writer import Writer
 from freecad_groove.engine.translator import translate_program
 from freecad_groove.freecad import posts, registration
@@ -83,8 +83,8 @@ _WORD = re.compile(r"([A-Z])(-?\d*\.?\d+)")
 
 
 def read(text, name, diameter=True):
-    """Events of a posted program: ("G0"/"G1", x radius or None, z or None, f),
-    ("G4", seconds), ("CALL", native call text), ("LINE", other block)."""
+    """Events of a posted program: ("G0"/"G1"/"G2"/"G3", x radius or None, z or None, f) (an arc's
+    centre or CR= left out), ("G4", seconds), ("CALL", native call text), ("LINE", other block)."""
     events = []
     motion, f = None, None
     lines = text.splitlines()
@@ -113,7 +113,7 @@ def read(text, name, diameter=True):
             seconds = values["F"] if name == "sinumerik" else values["P"] / (1000.0 if name == "fanuc" else 1.0)
             events.append(("G4", seconds))
             continue
-        if any(k in letters for k in ("T", "M", "S", "O")) or "CR" in line:
+        if any(k in letters for k in ("T", "M", "S", "O")):
             events.append(("LINE", line))
             continue
         for g in gs:
@@ -140,7 +140,7 @@ def positions(events):
         if e[0] == "G4":
             out.append(("G4", x, z, e[1]))
             continue
-        if e[0] not in ("G0", "G1"):
+        if e[0] not in ("G0", "G1", "G2", "G3"):
             continue
         nx = x if e[1] is None else e[1]
         nz = z if e[2] is None else e[2]
@@ -176,8 +176,8 @@ def expected_events(op, name, precision=None, diameter=True, shift=(0.0, 0.0)):
         for m in plan.cycle.expand(plan.start, plan.settings):
             if m.kind == DWELL:
                 out.append(("G4", m.p))
-            else:
-                out.append(("G0" if m.kind == RAPID else "G1", xr(m.x), zr(m.z), feed if m.kind == FEED else None))
+            else:  # an arc's end (its centre: test_groove_arcs.py)
+                out.append((m.kind, xr(m.x), zr(m.z), None if m.kind == RAPID else feed))
         for x, z in plan.retreat:  # the op's last groove: back to its safe start point
             out.append(("G0", xr(x), zr(z), None))
     return out

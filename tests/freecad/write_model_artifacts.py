@@ -57,7 +57,7 @@ def _artifact(case, call, op, part):
         "modelled": call.emit(), "derived": plan.cycle.emit(),
         "tool": {"width": tool.width, "corner_radius": tool.corner_radius, "reference": tool.reference},
         "plunge": plan.cycle.plunge_direction(), "start": [plan.start.x, plan.start.z],
-        "moves": [[m.kind, m.x, m.z, m.p] for m in plan.moves],
+        "moves": [[m.kind, m.x, m.z, m.p, m.centre and list(m.centre)] for m in plan.moves],  # an arc's centre
         "part": [list(p) for p in _section_polygon(part.Shape)],
         "bar": [list(p) for p in _bar_polygon(call)],
     }

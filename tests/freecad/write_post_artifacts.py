@@ -34,6 +34,14 @@ ARTIFACT_CASES = {  # name -> (groove key, keywords, post arguments)
     "left_end_plain": ("left_end", dict(width=5), ""),
     "cone_flanks_allowances": ("cone_up", dict(flank_angle1=10, base_corner2=0.3, base_corner2_type="Radius",
                                                base_allowance=0.1, flank_allowance=0.1), ""),
+    # arcs (base and edge radii): radius X words (--x-mode radius; the posts without it write diameters),
+    # a face groove's arcs from the other reference corner
+    "cylinder_radii_x_radius": ("cylinder", dict(base_corner1=1.0, base_corner1_type="Radius", base_corner2=1.0,
+                                                 base_corner2_type="Radius", edge_corner1=0.8,
+                                                 edge_corner1_type="Radius", flank_allowance=0.1), "--x-mode radius"),
+    "shoulder_radii_reference_override": ("shoulder", dict(base_corner1=0.5, base_corner1_type="Radius",
+                                                           edge_corner2=0.5, edge_corner2_type="Radius"),
+                                          "--reference-corner plus"),
     "cylinder_chamfer_dwell": ("cylinder", dict(edge_corner1=0.5, edge_corner1_type="Chamfer", dwell=0.3), ""),
     "cylinder_reference_override": ("cylinder", dict(width=5), "--reference-corner plus"),
     "bore_plus_op": ("bore", dict(reference_corner="plus"), ""),
@@ -47,25 +55,28 @@ ARTIFACT_CASES = {  # name -> (groove key, keywords, post arguments)
 
 
 def _expected_moves(plans, dx, dz, feed):
-    """The engine's moves from the first start point on (links included), shifted by dx, dz."""
-    from freecad_groove.engine.moves import DWELL, FEED, RAPID
+    """The engine's moves from the first start point on (links included), shifted by dx, dz: [kind,
+    x, z, f, p, centre] (centre: an arc's, shifted, else None)."""
+    from freecad_groove.engine.moves import ARCS, DWELL, FEED, RAPID
 
     first = plans[0]
-    expected = [[RAPID, first.start.x + dx, first.start.z + dz, None, 0.0]]
+    expected = [[RAPID, first.start.x + dx, first.start.z + dz, None, 0.0, None]]
     x, z = first.start.x, first.start.z
     for k, plan in enumerate(plans):
         if k:
             for lx, lz in plan.link:
                 x = x if lx is None else lx
                 z = z if lz is None else lz
-                expected.append([RAPID, x + dx, z + dz, None, 0.0])
+                expected.append([RAPID, x + dx, z + dz, None, 0.0, None])
         for mv in plan.moves:
-            expected.append([mv.kind, mv.x + dx, mv.z + dz, feed if mv.kind == FEED else None, mv.p])
+            centre = None if mv.centre is None else [mv.centre[0] + dx, mv.centre[1] + dz]
+            cuts = mv.kind == FEED or mv.kind in ARCS
+            expected.append([mv.kind, mv.x + dx, mv.z + dz, feed if cuts else None, mv.p, centre])
             if mv.kind != DWELL:
                 x, z = mv.x, mv.z
         for lx, lz in plan.retreat:  # the op's last groove: back to its safe start point
             x, z = lx, lz
-            expected.append([RAPID, x + dx, z + dz, None, 0.0])
+            expected.append([RAPID, x + dx, z + dz, None, 0.0, None])
     return expected
 
 
@@ -99,6 +110,8 @@ def _artifact(op, case, args):
     programs = {}
     for name in NAMES:
         own = args if name in PECKING else re.sub(r"\s*--retract [\d.]+", "", args)  # only they have it
+        if not posts.CONTROLS[name].has_x_mode:
+            own = re.sub(r"\s*--x-mode \w+", "", own)
         try:
             programs[name] = {"args": own, "text": export(name, [op], own), "error": None}
         except posts.PostError as e:

@@ -10,8 +10,8 @@ how the seed manual is read.
 import math
 from typing import TYPE_CHECKING, List, Optional, Tuple
 
-from ..envelope import Arc, Envelope, arc_points
-from ..moves import REFERENCE_PLUS, Move, feed, rapid
+from ..envelope import Envelope, Turn
+from ..moves import FEED, RAPID, REFERENCE_PLUS, Move, arc
 from ..numbers import MAX_WORD, format_given, format_value
 from ..settings import Settings
 from .cycle93_constants import (
@@ -29,6 +29,7 @@ from .cycle93_constants import (
 from .cycle93_material import MaterialTop
 from .cycle93_passes import feed_where_material
 from .cycle93_plunges import plunges
+from .cycle93_profile import FOLD_TOLERANCE, Corner, Frame, intersect, split_at, unit, without_float_folds
 from .cycle93_size import ExpansionSize, plunge_count
 from .cycle93_warnings import NoRoom, no_room
 
@@ -37,141 +38,7 @@ if TYPE_CHECKING:  # the model imports this module
 
 Point = Tuple[float, float]
 
-FOLD_TOLERANCE = 1e-9  # a profile stepping back further than this folds over itself
-
-
-class Frame:
-    """Maps the groove frame (u across the groove from the start point, v out
-    of the material) to world (x radius, z) and blade positions to the
-    reference corner."""
-
-    def __init__(
-        self, x0: float, z0: float, longitudinal: bool, su: float, sv: float, width: float, ref_plus: bool
-    ) -> None:
-        self.x0, self.z0 = x0, z0
-        self.longitudinal = longitudinal
-        self.su, self.sv = su, sv
-        self.width = width
-        self.ref_shift = width if ref_plus else 0.0
-
-    def point(self, u: float, v: float) -> Point:
-        """World (x, z) of a groove-frame point."""
-        if self.longitudinal:
-            return self.x0 + self.sv * v, self.z0 + self.su * u
-        return self.x0 + self.su * u, self.z0 + self.sv * v
-
-    def blade(self, u: float, v: float) -> Point:
-        """World reference corner (x, z) of the blade whose minus-u edge is at u."""
-        lo = u if self.su > 0 else -(u + self.width)
-        along = lo + self.ref_shift
-        if self.longitudinal:
-            return self.x0 + self.sv * v, self.z0 + along
-        return self.x0 + along, self.z0 + self.sv * v
-
-    def blade_of(self, x: float, z: float) -> Point:
-        """Inverse of blade(): the blade position (u, v) for a reference corner."""
-        if self.longitudinal:
-            along, v = z - self.z0, self.sv * (x - self.x0)
-        else:
-            along, v = x - self.x0, self.sv * (z - self.z0)
-        lo = along - self.ref_shift
-        u = lo if self.su > 0 else -lo - self.width
-        return u, v
-
-
-def _unit(du, dv):
-    n = math.hypot(du, dv)
-    return du / n, dv / n
-
-
-def _intersect(p, d, q, e):
-    """Intersection of lines p + t d and q + s e."""
-    den = d[0] * e[1] - d[1] * e[0]
-    if abs(den) < 1e-15:
-        return None
-    t = ((q[0] - p[0]) * e[1] - (q[1] - p[1]) * e[0]) / den
-    return p[0] + t * d[0], p[1] + t * d[1]
-
-
-def _without_float_folds(pts):
-    """The points with u never stepping back by rounding: an arc's end computed
-    from a large radius may lie FOLD_TOLERANCE behind the next point."""
-    out = [pts[0]]
-    for u, v in pts[1:]:
-        back = out[-1][0]
-        out.append((back, v) if back - FOLD_TOLERANCE <= u < back else (u, v))
-    return out
-
-
-def split_at(pts: List[Point], positions: List[float]) -> List[Point]:
-    """The trace with a point added, on the move's straight line, wherever a
-    move crosses one of ``positions`` (the plunges' u). Seed step 3: "Infeed
-    along the groove width is carried out in several steps if the flank width
-    is larger": the plunges across the opening are those steps (each stops on
-    the flank, leaving a tooth at most one width step wide), and the pass takes
-    the teeth one move per step, never more than a width step across."""
-    out = [pts[0]]
-    for (u0, v0), (u1, v1) in zip(pts, pts[1:]):
-        lo, hi = min(u0, u1), max(u0, u1)
-        for c in sorted((c for c in positions if lo + 1e-9 < c < hi - 1e-9), reverse=u1 < u0):
-            out.append((c, v0 + (v1 - v0) * (c - u0) / (u1 - u0)))
-        out.append((u1, v1))
-    return out
-
-
-class _Corner:
-    """A rounded (value > 0) or chamfered (value < 0) corner between the
-    incoming direction a and the outgoing direction b at vertex V."""
-
-    def __init__(self, vertex, a, b, value, chr_mode):
-        self.vertex = vertex
-        self.value = value
-        a, b = _unit(*a), _unit(*b)
-        self.a, self.b = a, b
-        cos_t = max(-1.0, min(1.0, a[0] * b[0] + a[1] * b[1]))
-        self.turn = math.acos(cos_t)  # deflection angle
-        self.left = a[0] * b[1] - a[1] * b[0] > 0
-        half = self.turn / 2
-        if value > 0:
-            self.length = value * math.tan(half)
-        elif value < 0:
-            self.length = -value if chr_mode else -value / (2 * math.cos(half))
-        else:
-            self.length = 0.0
-
-    def _arc_start(self):
-        """Where the corner's rounding or chamfer starts and ends (t_in, t_out),
-        and the centre of its arc."""
-        v, a, b, length = self.vertex, self.a, self.b, self.length
-        t_in = (v[0] - length * a[0], v[1] - length * a[1])
-        t_out = (v[0] + length * b[0], v[1] + length * b[1])
-        n = (-a[1], a[0]) if self.left else (a[1], -a[0])
-        r = self.value
-        return t_in, t_out, (t_in[0] + r * n[0], t_in[1] + r * n[1])
-
-    def points(self, tol=PATH_TOLERANCE):
-        """The corner as a polyline, its arc chorded to ``tol``."""
-        if self.length <= 0:
-            return [self.vertex]
-        t_in, t_out, c = self._arc_start()
-        if self.value < 0:
-            return [t_in, t_out]
-        r = self.value
-        a0 = math.atan2(t_in[1] - c[1], t_in[0] - c[0])
-        sweep = self.turn if self.left else -self.turn
-        # Material-side bumps (right turns) get a tangent polygon outside the
-        # arc, bowls get chords inside it: both err toward more material.
-        return arc_points(c, r, a0, a0 + sweep, outside=not self.left, tol=tol)
-
-    def element(self) -> Tuple[List[Point], Optional[Arc]]:
-        """The corner exactly: its vertex alone, or the two ends of its chamfer
-        or arc, and the arc (None for a vertex or a chamfer)."""
-        if self.length <= 0:
-            return [self.vertex], None
-        t_in, t_out, c = self._arc_start()
-        if self.value < 0:
-            return [t_in, t_out], None
-        return [t_in, t_out], Arc(c, self.value, not self.left)
+__all__ = ["Frame", "GrooveGeometry", "split_at"]
 
 
 class GrooveGeometry:
@@ -329,16 +196,16 @@ class GrooveGeometry:
                 ALARM_FORM,
             )
         p1 = (0.0, 0.0)
-        b1 = _intersect(p1, d1, (0.0, -depth), contour_dir)
+        b1 = intersect(p1, d1, (0.0, -depth), contour_dir)
         b2 = (b1[0] + width, b1[1] + m * width)
-        p2 = _intersect(b2, d2, p1, contour_dir)
+        p2 = intersect(b2, d2, p1, contour_dir)
         self.corners_sharp = (p1, b1, b2, p2)
         chr_mode = self.chr_mode
         final = [
-            _Corner(p1, contour_dir, d1, p["RCO1"], chr_mode),
-            _Corner(b1, d1, contour_dir, p["RCI1"], chr_mode),
-            _Corner(b2, contour_dir, d2, p["RCI2"], chr_mode),
-            _Corner(p2, d2, contour_dir, p["RCO2"], chr_mode),
+            Corner(p1, contour_dir, d1, p["RCO1"], chr_mode),
+            Corner(b1, d1, contour_dir, p["RCI1"], chr_mode),
+            Corner(b2, contour_dir, d2, p["RCI2"], chr_mode),
+            Corner(p2, d2, contour_dir, p["RCO2"], chr_mode),
         ]
         self._check_form(final, (p1, b1, b2, p2), p)
         self.final_corners = final
@@ -365,20 +232,20 @@ class GrooveGeometry:
         d2 = (t2, 1.0)
         chr_mode = self.chr_mode
         fal1, fal2 = p["FAL1"], p["FAL2"]
-        n1 = _unit(1.0, t1)
-        n2 = _unit(-1.0, t2)
+        n1 = unit(1.0, t1)
+        n2 = unit(-1.0, t2)
         q1 = (p1[0] + fal2 * n1[0], p1[1] + fal2 * n1[1])
         q2 = (b2[0] + fal2 * n2[0], b2[1] + fal2 * n2[1])
         base_r = (0.0, -depth + fal1)
-        r1 = _intersect(q1, d1, (0.0, 0.0), contour_dir)
-        rb1 = _intersect(q1, d1, base_r, contour_dir)
-        rb2 = _intersect(q2, d2, base_r, contour_dir)
-        r2 = _intersect(q2, d2, (0.0, 0.0), contour_dir)
+        r1 = intersect(q1, d1, (0.0, 0.0), contour_dir)
+        rb1 = intersect(q1, d1, base_r, contour_dir)
+        rb2 = intersect(q2, d2, base_r, contour_dir)
+        r2 = intersect(q2, d2, (0.0, 0.0), contour_dir)
         rough = [
-            _Corner(r1, contour_dir, d1, 0.0, chr_mode),
-            _Corner(rb1, d1, contour_dir, p["RCI1"], chr_mode),
-            _Corner(rb2, contour_dir, d2, p["RCI2"], chr_mode),
-            _Corner(r2, d2, contour_dir, 0.0, chr_mode),
+            Corner(r1, contour_dir, d1, 0.0, chr_mode),
+            Corner(rb1, d1, contour_dir, p["RCI1"], chr_mode),
+            Corner(rb2, contour_dir, d2, p["RCI2"], chr_mode),
+            Corner(r2, d2, contour_dir, 0.0, chr_mode),
         ]
         # When the allowances leave no room for the blade, rough to the final
         # profile (without its edge features) rather than not at all, and say why.
@@ -387,7 +254,7 @@ class GrooveGeometry:
         self.no_room = reason if fal1 > 0 or fal2 > 0 else None
         self.roughs_to_final = reason is not None
         if reason is not None:
-            rough = [_Corner(p1, contour_dir, d1, 0.0, chr_mode)] + final[1:3] + [_Corner(p2, d2, contour_dir, 0.0,
+            rough = [Corner(p1, contour_dir, d1, 0.0, chr_mode)] + final[1:3] + [Corner(p2, d2, contour_dir, 0.0,
                                                                                          chr_mode)]
         return rough
 
@@ -428,7 +295,7 @@ class GrooveGeometry:
                 arcs[len(points)] = arc
             points.extend(ends)
         points.append(top[-1])
-        return Envelope(_without_float_folds(points), self.tool.width, self.tool.corner_radius, arcs)
+        return Envelope(without_float_folds(points), self.tool.width, self.tool.corner_radius, arcs)
 
     def _material_top(self, corners):
         pts = []
@@ -437,7 +304,7 @@ class GrooveGeometry:
         m = self.slope
         reach = self.tool.width + self.params["VRT"] + 1.0
         lo, hi = pts[0][0] - reach, pts[-1][0] + reach
-        return [(lo, m * lo)] + _without_float_folds(pts) + [(hi, m * hi)]
+        return [(lo, m * lo)] + without_float_folds(pts) + [(hi, m * hi)]
 
     # -- derived quantities -------------------------------------------------
     def opening(self, top: List[Point]) -> Point:
@@ -453,14 +320,19 @@ class GrooveGeometry:
         """The level VRT above the contour under the blade at u."""
         return self.contour_top(u) + self.params["VRT"]
 
-    def region_uv(self) -> List[Point]:
-        """The finished groove region (closed polygon, groove frame)."""
-        top = self.final_top[1:-1]
+    def region_uv(self, tol: Optional[float] = None) -> List[Point]:
+        """The finished groove region (closed polygon, groove frame), its arcs
+        chorded toward more material within ``tol`` (None: PATH_TOLERANCE, in
+        the program's units)."""
+        if tol is None:
+            top = self.final_top[1:-1]
+        else:
+            top = without_float_folds([p for c in self.final_corners for p in c.points(tol)])
         return top + [top[0]]
 
-    def region_world(self) -> List[Point]:
-        """The finished groove region as world (x, z) points."""
-        return [self.frame.point(u, v) for u, v in self.region_uv()]
+    def region_world(self, tol: Optional[float] = None) -> List[Point]:
+        """The finished groove region as world (x, z) points (``tol``: see region_uv)."""
+        return [self.frame.point(u, v) for u, v in self.region_uv(tol)]
 
     def stock_world(self, margin: Optional[float] = None) -> List[Point]:
         """A window of the part's material around the groove, world (x, z):
@@ -488,12 +360,18 @@ class GrooveGeometry:
     def expand(self, x_start: float, z_start: float) -> List[Move]:
         """Moves from the reference-corner position (x_start radius, z_start)."""
         frame = self.frame
+        blade = frame.blade
         out = []
         last = [None]
 
-        def go(kind, u, v):
-            x, z = frame.blade(u, v)
-            move = rapid(x, z) if kind == "r" else feed(x, z)
+        def go(kind: str, u: float, v: float, turn: Turn = None) -> None:
+            """A rapid ("r") or feed ("f") of the blade to (u, v); a feed along a
+            circle of the groove frame with ``turn`` (its centre, counter-clockwise)."""
+            x, z = blade(u, v)
+            if turn is None:
+                move = Move(RAPID if kind == "r" else FEED, x, z)
+            else:
+                move = arc(frame.clockwise(turn[2]), x, z, blade(turn[0], turn[1]))
             if not out or out[-1] != move:
                 out.append(move)
             last[0] = u
@@ -536,8 +414,9 @@ class GrooveGeometry:
         ub = right - w + r
         mid = 0.5 * (ua + ub)
         for start in (ua, ub):
-            pts = split_at(env.trace(start, mid, PATH_TOLERANCE), steps)
-            feed_where_material(self, pts, go, material, steps, top, env, top is self.rough_top)
+            chorded, exact = env.traces(start, mid, PATH_TOLERANCE)
+            pts = split_at(chorded, steps)
+            feed_where_material(self, pts, go, material, steps, top, env, top is self.rough_top, exact)
 
     def _leg_clear(self, u_from, u_to, level):
         """True when a blade moving along u at ``level`` stays above the contour."""

@@ -16,27 +16,36 @@ times as fast as the feed (the machining-time benchmark's rates: 10,000 and
 rises through the columns it has just cut, across at the clearance, and down
 only to REENTRY_CLEARANCE above the highest material the plunges left under
 the blade (an upper bound of what stands).
+
+The decisions are taken on the chorded trace, the moves written along the
+exact path (``Envelope.path``, split at the same plunge positions): arcs
+where the blade's corner rolls over a profile arc or round a vertex, between
+the same stretch bounds the chorded trace has (``_Written``).
 """
 
 import math
 from bisect import bisect_left, bisect_right
-from typing import TYPE_CHECKING, Callable, List, Tuple
+from typing import TYPE_CHECKING, Callable, Dict, List, Optional, Tuple
 
-from ..envelope import Envelope
-from .cycle93_constants import REENTRY_CLEARANCE_INCH, REENTRY_CLEARANCE_MM
+from ..envelope import Envelope, PathPoint, on_circles, path_moves, writes_arcs
+from .cycle93_constants import PATH_TOLERANCE, REENTRY_CLEARANCE_INCH, REENTRY_CLEARANCE_MM
 from .cycle93_material import SIDE_EPS, MaterialTop, lower_hull
+from .cycle93_profile import split_at
 
 if TYPE_CHECKING:  # the geometry imports this module
     from .cycle93_geometry import GrooveGeometry
 
 Point = Tuple[float, float]
-Go = Callable[[str, float, float], None]
+Go = Callable[..., None]  # go(kind, u, v, turn=None): "r" rapid or "f" feed to (u, v), along a circle with turn
 
 # Rapid rate over feed rate that decides between feeding through a gap and
 # rapiding around it (the benchmark's 10,000 and 100 mm/min).
 RAPID_FEED_RATIO = 100.0
 # A trace point this close to a plunge position along u is at it (split_at puts them there exactly).
 STEP_EPS = 1e-9
+# The chorded trace's and the exact path's stretch bounds are the same when they
+# lie this close along u (rounding apart, the same split points and walls).
+BOUND_EPS = 1e-6
 
 
 def _groups(pts: List[Point], steps: List[float]) -> List[Tuple[int, int]]:
@@ -51,6 +60,59 @@ def _groups(pts: List[Point], steps: List[float]) -> List[Tuple[int, int]]:
             bounds.append(k)
     bounds.append(len(pts) - 1)
     return list(zip(bounds, bounds[1:])) if len(pts) > 1 else [(0, 0)]
+
+
+def _bounds(groups: List[Tuple[int, int]]) -> List[int]:
+    """The point indexes where the stretches ``groups`` (``_groups``) begin and end."""
+    return [first for first, _last in groups] + [groups[-1][1]]
+
+
+class _Written:
+    """What a pass writes between two stretch bounds of its chorded trace
+    ``pts``: the moves along the exact path ``exact`` (split at ``steps``
+    when first asked) between the same bounds (its arcs), or, where the two
+    do not line up bound for bound or an arc of the path does not start and
+    end on its circle (not seen; a guard), the chords themselves."""
+
+    def __init__(self, pts: List[Point], groups: List[Tuple[int, int]], exact: Optional[List[PathPoint]],
+                 steps: List[float], runs: Optional[List[List[int]]] = None) -> None:
+        self.pts, self.groups, self.exact, self.steps = pts, groups, exact, steps
+        self._index: Optional[Dict[int, int]] = None
+        lo, hi = -math.inf, math.inf  # what is fed: the runs and, at most, the gaps between them (None: all)
+        if runs:
+            lo, hi = sorted((pts[runs[0][0]][0], pts[runs[-1][1]][0]))
+        if not exact or runs == [] or not writes_arcs(exact, PATH_TOLERANCE, lo + BOUND_EPS, hi - BOUND_EPS):
+            self.exact = None  # no arc to write there: the chords are what the exact path would write
+
+    @property
+    def index(self) -> Dict[int, int]:
+        """The exact path's point index at each stretch bound of ``pts`` (empty: they do not line up)."""
+        if self._index is None:
+            self._index = {}
+            if not self.exact:
+                return self._index
+            exact = self.exact = split_at(self.exact, self.steps)
+            if on_circles(exact):
+                chorded, along = _bounds(self.groups), _bounds(_groups(exact, self.steps))
+                if len(chorded) == len(along) and all(abs(self.pts[i][0] - exact[j][0]) <= BOUND_EPS
+                                                      for i, j in zip(chorded, along)):
+                    self._index = dict(zip(chorded, along))
+        return self._index
+
+    def point(self, i: int) -> Point:
+        """The point written at the chorded trace's bound ``i``."""
+        return self.exact[self.index[i]] if self.index else self.pts[i]
+
+    def feed(self, go: Go, i: int, j: int) -> None:
+        """Feed from bound ``i`` to bound ``j``: along the exact path (path_moves), or its chords."""
+        index = self.index
+        if not index:
+            for q in self.pts[i + 1:j + 1]:
+                go("f", q[0], q[1])
+            return
+        a, b = index[i], index[j]
+        for q, turn in path_moves(self.exact[a], self.exact[a + 1:b + 1], PATH_TOLERANCE):
+            go("f", q[0], q[1], turn)
 
 
 def _element(env: Envelope, x: float) -> Tuple[Point, Point, object]:
@@ -81,14 +143,14 @@ def covered(material: MaterialTop, env: Envelope, lo: float, hi: float) -> bool:
     return a - STEP_EPS <= lo and hi <= b + STEP_EPS and _same_profile(env, rough, lo + SIDE_EPS, hi + w - SIDE_EPS)
 
 
-def _stretches(pts: List[Point], material: MaterialTop, width: float, radius: float,
-               steps: List[float], top: List[Point], env: Envelope) -> List[List[int]]:
+def _stretches(pts: List[Point], groups: List[Tuple[int, int]], material: MaterialTop, width: float,
+               radius: float, top: List[Point], env: Envelope) -> List[List[int]]:
     """[first, last] point indexes of the runs of stretches that cut
     something; a stretch is tested whole (the blade swept along its lower
     hull, below it). A trace of one point (a blade as wide as the opening)
     is a plunge to it: [0, 0] when material stands above the blade there."""
     runs: List[List[int]] = []
-    for first, last in _groups(pts, steps):
+    for first, last in groups:
         part = pts[first:last + 1]
         lo, hi = min(u for u, _v in part), max(u for u, _v in part)
         if covered(material, env, lo, hi) or not material.cuts(lower_hull(part), width, radius, top):
@@ -115,12 +177,17 @@ def _length(pts: List[Point]) -> float:
 
 
 def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, material: MaterialTop,
-                        steps: List[float], top: List[Point], env: Envelope, rough: bool) -> None:
+                        steps: List[float], top: List[Point], env: Envelope, rough: bool,
+                        exact: Optional[List[PathPoint]] = None) -> None:
     """Feed the stretches of the trace ``pts`` on the envelope of ``top``
     that cut, linked the cheaper way; the blade comes from and goes back to
-    the clearance. A roughing pass (``rough``) is noted in ``material``."""
+    the clearance. A roughing pass (``rough``) is noted in ``material``.
+    ``exact``: the same pass as an exact path (arcs), not split: the moves
+    follow it, split at ``steps`` too (``_Written``); None: the chords."""
     w, r = geo.tool.width, geo.tool.corner_radius
-    runs = _stretches(pts, material, w, r, steps, top, env)
+    groups = _groups(pts, steps)
+    runs = _stretches(pts, groups, material, w, r, top, env)
+    written = _Written(pts, groups, exact, steps, runs)
     if rough:
         us = [u for u, _v in pts] + ([material.passed[1], material.passed[2]] if material.passed else [])
         material.note_pass(env, min(us), max(us))
@@ -138,15 +205,13 @@ def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, materia
                 go("r", end[0], geo.clearance(end[0]))
                 here = None
             else:
-                for q in gap[1:]:
-                    go("f", *q)
+                written.feed(go, here, first)
         if here is None:
             entry = _entry(geo, material, start)
             go("r", start[0], geo.clearance(start[0]))
             go("r", start[0], entry)
-            go("f", *start)
-        for q in pts[first + 1:last + 1]:
-            go("f", *q)
+            go("f", *written.point(first))
+        written.feed(go, first, last)
         here = last
     if here is not None:
         end = pts[here]

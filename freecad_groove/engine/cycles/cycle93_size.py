@@ -24,7 +24,8 @@ from ..numbers import MAX_MOVES
 from .cycle93_constants import EPS, PATH_TOLERANCE, WIDTH_STEP_FACTOR, cycle93_error
 
 if TYPE_CHECKING:  # the geometry imports this module
-    from .cycle93_geometry import GrooveGeometry, _Corner
+    from .cycle93_geometry import GrooveGeometry
+    from .cycle93_profile import Corner
 
 # Moves besides the plunges and the contour passes: the approach (at most 3)
 # and the retreat (at most 3) with a margin.
@@ -47,7 +48,7 @@ def arc_chords(radius: float, turn: float, tol: float = PATH_TOLERANCE) -> float
     return math.ceil(turn / step) if step > 0 else math.inf
 
 
-def trace_points(corners: Sequence["_Corner"], blade_radius: float) -> float:
+def trace_points(corners: Sequence["Corner"], blade_radius: float) -> float:
     """An upper bound of the points of the traces over one profile (its four
     corners between the contour's ends), however they split it."""
     vertices = 2 + 3 * len(corners)  # the contour's ends; two ends and a bump's top a corner

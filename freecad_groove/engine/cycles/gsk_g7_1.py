@@ -32,6 +32,10 @@ Choices the manual leaves open (README "GSK G7.1" table, each with a test):
   C in radians) upward (the G18 sense with C in place of X); R > 0 (over 180
   degrees is refused); arcs become straight segments within
   numbers.ARC_CHORD_TOLERANCE (0.001 mm; 0.001/25.4 in in inch programs) of the arc.
+  They stay segments (not moves.ARC_CW/ARC_CCW as CYCLE93's passes and G34's
+  corners write): these arcs lie on the developed surface of the rotary axis,
+  in Z and C; in the target's plane (X and Z, G18) they are helices around the
+  cylinder, which no G2/G3 of that plane describes.
 * Feeds: F is the feed along the developed path (mm/min, G98; G99 is
   refused). A move that turns C carries the feed as LinuxCNC reads it: along
   Z when Z moves, else in degrees per minute, so the tool runs the developed

@@ -33,34 +33,32 @@ row with a test), the tool an end mill of diameter ``Settings.mill_tool_diameter
   their corners those offsets of the corner radius P150 (0: cut at the tool
   radius); G41 (or none) climbs (counter-clockwise with M3), G42 runs
   clockwise. With P154 the depths stop P154 above Z and one more depth is cut
-  at Z; with P153 one finishing lap at the walls follows at Z. Arcs are written
-  as chords with their ends on the arc (ARC_CHORD_TOLERANCE): inside it, never
-  beyond the wall.
+  at Z; with P153 one finishing lap at the walls follows at Z. The laps'
+  rounded corners are arcs (G2 clockwise, G3 counter-clockwise, in G17 with
+  their centres), a quarter arc shorter than numbers.MIN_ARC_CHORD (its end
+  rounded could turn it the other way round) a chord, inside it.
+- The tool's moves are made in ``milltronics_paths``.
 - Before the first depth the tool goes to the clearance plane R, then over the
   start point, rapids to R and feeds down [choice]; at the end G99 rapids to R,
   without G99 the tool rises the lift above the last depth [choice]; X and Y
   stay where the cut ended.
 """
 
-import math
 import re
 from dataclasses import dataclass, fields, replace
-from typing import ClassVar, Dict, List, NamedTuple, Optional, Tuple
+from typing import ClassVar, Dict, List, Optional, Tuple
 
 from ..cycle import Cycle
 from ..errors import CycleError
-from ..moves import FEED, RAPID, MachineState, Move
-from ..numbers import ARC_CHORD_TOLERANCE, MAX_MOVES, MM_PER_INCH
+from ..moves import RAPID, MachineState, Move
+from ..numbers import MAX_MOVES, MM_PER_INCH
 from ..registry import G_WORD, register
 from ..settings import DEFAULT_SETTINGS, Settings
 from .cycle_words import check_number, word_value
+from .milltronics_paths import TOLERANCE, Cut, facing_moves, pocket_moves
 
 __all__ = ["G31", "G32", "G33", "G34", "MilltronicsCycle"]
 
-TOLERANCE = 1e-9
-# G34's laps step out at most this many tool diameters even when P155 allows more: between two laps with
-# sharp corners, a point on the corner's bisector is left uncut once the step exceeds (1 + 1/sqrt(2)) radii
-LAP_STEP_LIMIT = 0.85
 PARAMETERS = ("P150", "P151", "P152", "P153", "P154", "P155")
 LETTERS = ("R", "Z", "V", "Q", "F")
 COMPENSATION = ("G41", "G42")
@@ -68,25 +66,6 @@ Memory = Dict[str, float]  # "P151" -> value, "R" -> the last clearance plane
 
 _ASSIGNMENT = re.compile(r"^P(\d+)=([+-]?(?:\d+\.?\d*|\.\d+))$")
 _WORD = re.compile(r"([A-Z])([+-]?(?:\d+\.?\d*|\.\d+))")
-
-
-class Cut(NamedTuple):
-    """An autoroutine with every value resolved, in the program's units."""
-
-    cx: float  # the rectangle's centre: the XY position before the call
-    cy: float
-    z0: float  # Z before the call
-    size_x: float  # P151
-    size_y: float  # P152
-    width: float  # P155
-    radius: float  # the tool's radius
-    clearance: float  # R
-    depths: Tuple[float, ...]  # V .. Z
-    lift: float
-    xy_feed: float
-    z_feed: float
-    back_to_clearance: bool  # G99
-    clockwise: bool  # G42 (G34 laps)
 
 
 def _read_assignment(line: str, name: str, values: Dict[str, object]) -> None:
@@ -284,148 +263,6 @@ class MilltronicsCycle(Cycle):
         depths = self._depths(clearance, z if final is None else final)
         return Cut(state.x, state.y, state.z, size_x, size_y, width, diameter / 2.0, clearance, depths, lift,
                    state.feed, state.feed if self.F is None else self.F, self.G99, self.compensation == "G42")
-
-
-# ---------------------------------------------------------------- the tool's moves
-
-
-class _Tool:
-    """The tool's position as the moves are made; points relative to the centre."""
-
-    def __init__(self, cut: Cut, name: str) -> None:
-        self.cut = cut
-        self.name = name
-        self.x, self.y, self.z = cut.cx, cut.cy, cut.z0
-        self.moves: List[Move] = []
-
-    def _add(self, kind: str, x: float, y: float, z: float, f: Optional[float]) -> None:
-        if abs(x - self.x) <= TOLERANCE and abs(y - self.y) <= TOLERANCE and abs(z - self.z) <= TOLERANCE:
-            return
-        self.x, self.y, self.z = x, y, z
-        self.moves.append(Move(kind, x, z, f, 0.0, y))
-        if len(self.moves) > MAX_MOVES:
-            raise CycleError("P155", self.cut.width, "the cycle would make more than %d moves" % MAX_MOVES,
-                             cycle=self.name)
-
-    def rapid_z(self, z: float) -> None:
-        self._add(RAPID, self.x, self.y, z, None)
-
-    def rapid_xy(self, u: float, v: float) -> None:
-        self._add(RAPID, self.cut.cx + u, self.cut.cy + v, self.z, None)
-
-    def feed_z(self, z: float) -> None:
-        self._add(FEED, self.x, self.y, z, self.cut.z_feed)
-
-    def feed_xy(self, u: float, v: float) -> None:
-        self._add(FEED, self.cut.cx + u, self.cut.cy + v, self.z, self.cut.xy_feed)
-
-    def enter(self, u: float, v: float, depth: float, first: bool) -> None:
-        """To the start (u, v) of a depth: over it at the clearance plane first, else by the lift."""
-        if first:
-            self.rapid_z(max(self.z, self.cut.clearance))
-            self.rapid_xy(u, v)
-            self.rapid_z(self.cut.clearance)
-        else:
-            self.rapid_z(self.z + self.cut.lift)
-            self.rapid_xy(u, v)
-        self.feed_z(depth)
-
-    def leave(self) -> List[Move]:
-        """G99: to the clearance plane; else the lift above the last depth."""
-        self.rapid_z(self.cut.clearance if self.cut.back_to_clearance else self.z + self.cut.lift)
-        return self.moves
-
-
-def _even_steps(span: float, width: float, cycle: str) -> List[float]:
-    """0, s, 2s, ... span with s the largest equal step at most ``width``."""
-    if span <= TOLERANCE:
-        return [0.0]
-    count = max(1, math.ceil(span / width - 1e-9))
-    if count > MAX_MOVES:  # before the list is made: the moves' own limit would come too late
-        raise CycleError("P155", width, "the cut width is too small for the rectangle: more than %d passes"
-                         % MAX_MOVES, cycle=cycle)
-    return [span * index / count for index in range(count + 1)]
-
-
-def facing_moves(cut: Cut, name: str = "G33") -> List[Move]:
-    """G33: from the upper right corner, back and forth along the long side."""
-    tool = _Tool(cut, name)
-    half_x, half_y = cut.size_x / 2.0 - cut.radius, cut.size_y / 2.0 - cut.radius
-    along_x = cut.size_x >= cut.size_y
-    short = 2.0 * (half_y if along_x else half_x)
-    steps = _even_steps(short, cut.width, name)
-    for index, depth in enumerate(cut.depths):
-        tool.enter(half_x, half_y, depth, index == 0)
-        for number, step in enumerate(steps):
-            if along_x:
-                v = half_y - step
-                tool.feed_xy(tool.x - cut.cx, v)
-                tool.feed_xy(-half_x if number % 2 == 0 else half_x, v)
-            else:
-                u = half_x - step
-                tool.feed_xy(u, tool.y - cut.cy)
-                tool.feed_xy(u, -half_y if number % 2 == 0 else half_y)
-    return tool.leave()
-
-
-def _corner_points(cx: float, cy: float, radius: float, start: float, clockwise: bool) -> List[Tuple[float, float]]:
-    """Chord ends of a quarter arc of ``radius`` about (cx, cy) from angle ``start``, the first point left out."""
-    if radius <= TOLERANCE:
-        return [(cx, cy)]
-    count = max(1, math.ceil((math.pi / 2) / (2 * math.acos(max(-1.0, 1 - ARC_CHORD_TOLERANCE / radius)))))
-    sign = -1.0 if clockwise else 1.0
-    return [(cx + radius * math.cos(start + sign * math.pi / 2 * k / count),
-             cy + radius * math.sin(start + sign * math.pi / 2 * k / count)) for k in range(1, count + 1)]
-
-
-def lap_points(half_x: float, half_y: float, corner: float, clockwise: bool) -> List[Tuple[float, float]]:
-    """A closed lap of a rectangle with rounded corners about (0, 0), from (half_x, 0) back to it."""
-    corner = min(max(corner, 0.0), half_x, half_y)
-    ix, iy = half_x - corner, half_y - corner
-    # corner centres and the angle each arc starts at, counter-clockwise from the right side
-    corners = [((ix, iy), 0.0), ((-ix, iy), math.pi / 2), ((-ix, -iy), math.pi), ((ix, -iy), 1.5 * math.pi)]
-    points: List[Tuple[float, float]] = [(half_x, 0.0)]  # each lap starts and ends at the right side's middle
-    if clockwise:
-        for (x, y), start in reversed(corners):
-            points.append((x + corner * math.cos(start + math.pi / 2), y + corner * math.sin(start + math.pi / 2)))
-            points += _corner_points(x, y, corner, start + math.pi / 2, True)
-    else:
-        for (x, y), start in corners:
-            points.append((x + corner * math.cos(start), y + corner * math.sin(start)))
-            points += _corner_points(x, y, corner, start, False)
-    points.append((half_x, 0.0))
-    return points
-
-
-def pocket_laps(cut: Cut, stock: float, corner: float, name: str = "G34") -> List[List[Tuple[float, float]]]:
-    """The tool centre's paths at one depth, from the centre outward (see the module notes)."""
-    half_x = cut.size_x / 2.0 - cut.radius - stock
-    half_y = cut.size_y / 2.0 - cut.radius - stock
-    outer_corner = max(corner - cut.radius - stock, 0.0) if corner > 0 else 0.0
-    inset = min(half_x, half_y)
-    spine_x, spine_y = half_x - inset, half_y - inset
-    paths = [[(0.0, 0.0), (-spine_x, -spine_y), (spine_x, spine_y)]]
-    for offset in _even_steps(inset, min(cut.width, LAP_STEP_LIMIT * 2 * cut.radius), name)[1:]:
-        rest = inset - offset
-        paths.append(lap_points(half_x - rest, half_y - rest, max(outer_corner - rest, 0.0), cut.clockwise))
-    return paths
-
-
-def pocket_moves(cut: Cut, stock: float, corner: float, finish_depth: Optional[float], name: str = "G34") -> List[Move]:
-    """G34: at each depth the centre line and the laps; the last depth and the finishing lap."""
-    tool = _Tool(cut, name)
-    depths = cut.depths + ((finish_depth,) if finish_depth is not None else ())
-    laps = pocket_laps(cut, stock, corner, name)
-    for index, depth in enumerate(depths):
-        tool.enter(0.0, 0.0, depth, index == 0)
-        for lap in laps:
-            for u, v in lap:
-                tool.feed_xy(u, v)
-    if stock > 0:
-        finish = pocket_laps(cut._replace(width=max(cut.size_x, cut.size_y)), 0.0, corner, name)[-1]
-        for u, v in finish:
-            tool.feed_xy(u, v)
-    return tool.leave()
 
 
 @register

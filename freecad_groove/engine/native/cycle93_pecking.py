@@ -72,6 +72,12 @@ def corner_shift(groove: Any, reference: Optional[str]) -> Shift:
     return Shift(0.0, d) if groove.cycle.kind()[0] else Shift(d, 0.0)
 
 
+def shifted(move: Move, shift: Shift, f: Optional[float]) -> Move:
+    """``move`` measured from the other corner: its end and an arc's centre shifted, its feed ``f``."""
+    centre = None if move.centre is None else (move.centre[0] + shift.dx, move.centre[1] + shift.dz)
+    return Move(move.kind, move.x + shift.dx, move.z + shift.dz, f, move.p, centre=centre, radius=move.radius)
+
+
 def corner_settings(groove: Any, reference: Optional[str]) -> Settings:
     """The groove's settings with the tool measured from ``reference`` (None: its own)."""
     return groove.settings if reference is None else groove.settings.with_tool(reference=reference)

@@ -136,7 +136,7 @@ class Control:
             return "grooves as native CYCLE93 calls"
         if self.native == NATIVE_PECKING:
             return "plain grooves as native %s calls, others expanded" % self.pecking_codes
-        return "grooves expanded into G0/G1 moves"
+        return "grooves expanded into G0/G1 moves and G2/G3 arcs"
 
     def retract_help(self) -> str:
         """How --retract reaches the control, for its help."""

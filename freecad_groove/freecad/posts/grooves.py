@@ -7,7 +7,7 @@ from dataclasses import replace
 from typing import TYPE_CHECKING, Any, Callable, List, Optional
 
 from ...engine import DWELL, FEED, CycleError, ProgramError
-from ...engine.moves import Move
+from ...engine.moves import ARCS
 from ...engine.native.cycle93_pecking import retract_note
 from ...engine.numbers import MM_PER_INCH
 from ...ops.groove.cutting import CuttingData, cutting_data
@@ -16,7 +16,7 @@ from .controls import NATIVE_CYCLE93, NATIVE_PECKING
 from .errors import PostError
 from .objects import label_of
 from .pecking import NotNative, PeckingCall, PeckingCalls
-from .reference_corner import corner_shift
+from .reference_corner import corner_shift, shifted
 
 if TYPE_CHECKING:
     from .program import Program
@@ -120,15 +120,14 @@ class GrooveOutput:
             self.expanded(plan, None)
 
     def expanded(self, plan: Any, why: Optional[str]) -> None:
-        """The plan's moves as G0/G1 (``why``: the reason it is not a native call, for a comment)."""
+        """The plan's moves as G0/G1/G2/G3 (``why``: the reason it is not a native call, for a comment)."""
         program = self.program
         program.note("%s groove %d: %s" % (plan.face.name, plan.index + 1, call_text(plan.cycle)))
         if why:
             program.note("expanded: " + why)
         self.link(plan)
         shift = corner_shift(plan, program.options.reference)
-        moves = [Move(m.kind, m.x + shift.dx, m.z + shift.dz, self.feed if m.kind == FEED else None, m.p)
-                 for m in plan.moves]
+        moves = [shifted(m, shift, self.feed if m.kind == FEED or m.kind in ARCS else None) for m in plan.moves]
         if program.x is None or program.z is None:  # the link always ends at the start point; this is a guard
             self.rapid_to(plan, plan.start, force=True)
         try:

@@ -44,7 +44,8 @@ def _add_groove_options(parser: PostParser, control: Control) -> None:
         cycles.add_argument("--native-cycles", dest="cycles", action="store_const", const="native",
                             help="write grooves as the control's own cycle calls where it has one (default)")
     cycles.add_argument("--expand-cycles", dest="cycles", action="store_const", const="expand",
-                        help="write every groove as G0/G1 moves (the op's own path)" + control.expand_help_note)
+                        help="write every groove as G0/G1 moves and G2/G3 arcs (the op's own path)"
+                        + control.expand_help_note)
     if control.native == NATIVE_PECKING:
         parser.add_argument("--retract", type=float, metavar="E",
                             help="peck retract e of the %s cycles, mm (default: the op's Retract, 0 = 1 mm); %s"

@@ -6,6 +6,6 @@ axis (Z for longitudinal grooves, X for face grooves), the blade does not.
 The engine's native-call decision does the same (engine/native/cycle93_pecking.py).
 """
 
-from ...engine.native.cycle93_pecking import Shift, corner_settings, corner_shift
+from ...engine.native.cycle93_pecking import Shift, corner_settings, corner_shift, shifted
 
-__all__ = ["Shift", "corner_settings", "corner_shift"]
+__all__ = ["Shift", "corner_settings", "corner_shift", "shifted"]

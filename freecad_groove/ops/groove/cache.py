@@ -60,7 +60,9 @@ from .links import LinkMove
 from .plan import GroovePlan
 from .properties import DERIVED, PROPERTIES
 
-FORMAT = 3  # of the saved data (2: a plan keeps its retreat; 3: column-wise); a new format never reads an old one
+# Of the saved data (2: a plan keeps its retreat; 3: column-wise; 4: arcs, their centres): a new format never
+# reads an old one (the op plans again), and an older release never reads a newer one.
+FORMAT = 4
 # Property types left out of an object's fingerprint: outputs (Path), shapes
 # (digested on their own), the proxy, expressions (their results are values).
 SKIPPED_TYPES = ("Part::PropertyPartShape", "Path::PropertyPath", "App::PropertyPythonObject",
@@ -168,10 +170,12 @@ def fingerprint(op: object, job: object, memo: Optional[dict] = None) -> str:
 
 
 # -- the saved plans ----------------------------------------------------------------
-# Format 2 is column-wise, to read fast (the first post after reopening reads
+# The format is column-wise, to read fast (the first post after reopening reads
 # every op's plans): each dataclass's fields named once, the moves' X and Z
 # as packed IEEE doubles (exact), their kinds as one string, the few feeds and
-# dwell times they carry as [move number, value]. JSON keeps int, float and None apart.
+# dwell times they carry as [move number, value], an arc's centre as [move
+# number, x, z] and a radius arc's radius as [move number, radius]. JSON keeps
+# int, float and None apart.
 DATACLASSES = {"face": GrooveFace, "cycle": Cycle93, "start": MachineState, "settings": Settings,
                "tool": GroovingTool}
 
@@ -199,7 +203,7 @@ def _indexed(rows: list, row: object) -> int:
 
 def _moves_data(plans: list[GroovePlan]) -> dict:
     kinds: list = []
-    codes, numbers, feeds, dwells, counts = [], [], [], [], []
+    codes, numbers, feeds, dwells, counts, centres, radii = [], [], [], [], [], [], []
     for plan in plans:
         counts.append(len(plan.moves))
         for move in plan.moves:
@@ -208,10 +212,14 @@ def _moves_data(plans: list[GroovePlan]) -> dict:
                 feeds.append([len(codes) - 1, move.f])
             if move.p != 0.0 or math.copysign(1.0, move.p) < 0:  # -0.0 kept as it was
                 dwells.append([len(codes) - 1, move.p])
+            if move.centre is not None:
+                centres.append([len(codes) - 1, move.centre[0], move.centre[1]])
+            if move.radius is not None:
+                radii.append([len(codes) - 1, move.radius])
             numbers += (float(move.x), float(move.z))
     return {"kinds": kinds, "codes": "".join(chr(48 + code) for code in codes), "counts": counts,
             "xz": base64.b64encode(struct.pack("<%dd" % len(numbers), *numbers)).decode("ascii"),
-            "f": feeds, "p": dwells}
+            "f": feeds, "p": dwells, "c": centres, "r": radii}
 
 
 def pack(plans: list[GroovePlan], stamp: str) -> str:
@@ -268,6 +276,10 @@ def _moves(data: dict) -> list[list[Move]]:
     for k, p in data["p"]:
         dwells[k] = p
     moves = list(map(Move, kinds, numbers[0::2], numbers[1::2], feeds, dwells))
+    for k, x, z in data["c"]:
+        moves[k] = moves[k]._replace(centre=(x, z))
+    for k, radius in data["r"]:
+        moves[k] = moves[k]._replace(radius=radius)
     out, first = [], 0
     for count in data["counts"]:
         out.append(moves[first:first + count])

@@ -13,7 +13,8 @@ Here the Job is read into plain data:
   that fits in it; Z: its Z range); a Job without stock: a bar of the model's
   largest radius over the model's Z range;
 * per op (in the Job's order, inactive ops left out): its Path's G0/G1/G4
-  moves split at its comments into one run per planned groove (groove/plan.py),
+  moves and arcs G2/G3 (G18: centre I, K from the start) split at its
+  comments into one run per planned groove (groove/plan.py),
   each swept with the op's blade (ObjectGroove.settings, as the tool
   controller gives it now) in the groove's plunge direction; the planned
   finished groove and the engine's reach warnings; the feeds and speeds
@@ -35,7 +36,7 @@ from typing import TYPE_CHECKING, Optional
 import FreeCAD
 
 from ...engine.cycles.cycle93_reach import unreachable_regions
-from ...engine.moves import DWELL, FEED, RAPID, Move
+from ...engine.moves import ARC_CCW, ARC_CW, ARCS, DWELL, FEED, RAPID, Move
 from ...freecad.units import feed_mm_per_min, length_mm
 from ..groove.cutting import cutting_data
 
@@ -49,7 +50,8 @@ SHAPELY_MISSING = (
     "Debian/Ubuntu FreeCAD: sudo apt install python3-shapely; any other FreeCAD: install it into "
     "FreeCAD's own Python (its python -m pip install shapely), then restart FreeCAD"
 )
-MOTION = {"G0": RAPID, "G00": RAPID, "G1": FEED, "G01": FEED}
+MOTION = {"G0": RAPID, "G00": RAPID, "G1": FEED, "G01": FEED, "G2": ARC_CW, "G02": ARC_CW, "G3": ARC_CCW,
+          "G03": ARC_CCW}
 MODAL = {"G18", "G90", "G21", "G40", "G80"}  # words that move nothing
 
 
@@ -105,8 +107,9 @@ def stock_bar(job: object, shapes: list) -> tuple[float, float, float, str]:
 
 def path_runs(op: object) -> list[list[tuple[int, Move]]]:
     """The op's Path as runs of (command number, Move), a new run at each
-    comment followed by motion. TurningCheckError on a command the check
-    cannot sweep (an arc, a Y move) or a move before X and Z are known."""
+    comment followed by motion (an arc G2/G3 with its centre, I and K from its
+    start). TurningCheckError on a command the check cannot sweep (a Y move,
+    another code) or a move before X and Z are known."""
     runs, comment, pos = [], True, [None, None]
     for number, command in enumerate(op.Path.Commands, 1):
         name, words = command.Name, command.Parameters
@@ -117,17 +120,19 @@ def path_runs(op: object) -> list[list[tuple[int, Move]]]:
             continue
         what = "%s: Path command %d (%s)" % (op.Label, number, command.toGCode().strip())
         if name not in MOTION and name != "G4":
-            raise TurningCheckError("%s: not a straight move or dwell (G0, G1, G4): cannot be swept" % what)
-        if abs(words.get("Y", 0.0)) > 1e-9:
+            raise TurningCheckError("%s: not a move or dwell (G0, G1, G2, G3, G4): cannot be swept" % what)
+        if abs(words.get("Y", 0.0)) > 1e-9 or abs(words.get("J", 0.0)) > 1e-9:
             raise TurningCheckError("%s: moves in Y; the lathe's moves are X (radius) and Z" % what)
-        pos = [words.get("X", pos[0]), words.get("Z", pos[1])]
-        if None in pos:
+        start, pos = pos, [words.get("X", pos[0]), words.get("Z", pos[1])]
+        kind = MOTION.get(name, DWELL)
+        if None in pos or (kind in ARCS and None in start):
             raise TurningCheckError("%s: where the tool is (X and Z) is not known yet" % what)
         if comment or not runs:
             runs.append([])
             comment = False
-        kind = MOTION.get(name, DWELL)
-        runs[-1].append((number, Move(kind, pos[0], pos[1], None, words.get("P", 0.0) if kind == DWELL else 0.0)))
+        centre = (start[0] + words.get("I", 0.0), start[1] + words.get("K", 0.0)) if kind in ARCS else None
+        runs[-1].append((number, Move(kind, pos[0], pos[1], None, words.get("P", 0.0) if kind == DWELL else 0.0,
+                                      centre=centre)))
     return runs
 
 

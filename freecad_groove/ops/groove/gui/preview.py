@@ -3,7 +3,8 @@ task panel is open, from the panel's values (the document is not touched).
 
 Drawn in the XZ plane at Y = 0 (X = radius), the plane the op's Path uses:
 - the finished groove's cross-section of every groove (orange, thick),
-- the expanded toolpath: rapids (red, dashed) and feeds (blue).
+- the expanded toolpath: rapids (red, dashed) and feeds (blue), arcs as
+  chords within PREVIEW_ARC_TOL of them.
 
 It sits in an SoAnnotation, drawn over the part: the section plane runs
 through the solid, where the part's own faces would hide it.
@@ -11,10 +12,12 @@ through the solid, where the part's own faces would hide it.
 
 from pivy import coin
 
-from ....engine.moves import FEED, RAPID
+from ....engine.arcs import arc_chords
+from ....engine.moves import ARC_CW, ARCS, FEED, RAPID
 from ....gui.lines import FEED_COLOR, RAPID_COLOR, fill_lines, line_nodes
 
 SECTION_COLOR = (1.0, 0.55, 0.0)
+PREVIEW_ARC_TOL = 0.001  # mm: the chords an arc is drawn with stay this close to it
 
 
 def polylines(plans):
@@ -37,11 +40,14 @@ def polylines(plans):
         cur = (p.start.x, 0.0, p.start.z)
         prev_start = (p.start.x, p.start.z)
         for m in p.moves:
-            if m.kind not in (RAPID, FEED):
+            if m.kind in ARCS:
+                points = arc_chords((cur[0], cur[2]), (m.x, m.z), m.centre, m.kind == ARC_CW, PREVIEW_ARC_TOL)
+                feeds.append([cur] + [(x, 0.0, z) for x, z in points])
+            elif m.kind not in (RAPID, FEED):
                 continue
-            nxt = (m.x, 0.0, m.z)
-            (rapids if m.kind == RAPID else feeds).append([cur, nxt])
-            cur = nxt
+            else:
+                (rapids if m.kind == RAPID else feeds).append([cur, (m.x, 0.0, m.z)])
+            cur = (m.x, 0.0, m.z)
     return sections, rapids, feeds
 
 
