@@ -37,7 +37,8 @@ def run_child(path: str, root: str) -> tuple:
     seconds = time.perf_counter() - t0
     err = proc.stderr.decode()
     if proc.returncode not in (0, 1):
-        raise SystemExit("verify failed (%d): %s" % (proc.returncode, err))
+        said = [line for line in err.splitlines() if line.strip() and not line.startswith("maxrss")]
+        raise SystemExit("verify failed (%d): %s" % (proc.returncode, said[-1] if said else "-"))
     return seconds, int(err.split("maxrss")[-1]) / 1024.0, proc.returncode, proc.stdout.decode()
 
 
