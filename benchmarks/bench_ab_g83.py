@@ -6,18 +6,22 @@ A G83 of growing size (picks of 0.002 mm over a depth of 0.1 to 0.4 mm,
 crossover 0..300 mm in picks of 2 mm, strokes between X0 and X400): expand,
 then write as a LinuxCNC mill program. Reports the moves, the best of 3
 times, output moves per second (the engine's target for the cycles: at
-least 100,000 a second on one core).
+least 100,000 a second on one core; issue 22: 1,000,000). --json: the
+figures as JSON lines (benchmarks/figures.py).
 """
 
-import os
-import sys
+import argparse
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import figures
+
+figures.use_package(__file__)
 
 from freecad_groove.engine.cycles.ab_g83 import G83  # noqa: E402
 from freecad_groove.engine.moves import MachineState  # noqa: E402
-from freecad_groove.engine.output.program import write_program  # noqa: E402
+
+write_program = figures.first_of("write_program", "freecad_groove.engine.output.program",
+                                 "freecad_groove.engine.targets")
 
 
 def best_of(fn, rounds=3):
@@ -30,6 +34,9 @@ def best_of(fn, rounds=3):
 
 
 def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    figures.add_json_option(parser)
+    figures.start(parser.parse_args())
     state = MachineState(x=0.0, y=0.0, z=0.0, diameter_mode=False, feed=20.0, feed_per_rev=False)
     print("%8s %9s %10s %10s %12s" % ("depth", "moves", "expand s", "write s", "moves/s"))
     for depth in (0.1, 0.2, 0.4):
@@ -37,6 +44,8 @@ def main():
         moves, expand = best_of(lambda model=model: model.expand(state))
         _text, write = best_of(lambda moves=moves: write_program(moves, "linuxcnc-mill", state))
         print("%8.1f %9d %10.3f %10.3f %12.0f" % (depth, len(moves), expand, write, len(moves) / (expand + write)))
+        figures.record("G83 expand + write, %g mm deep" % depth, len(moves) / (expand + write), "moves/s",
+                       figures.HIGHER, ">= 1,000,000")
 
 
 if __name__ == "__main__":

@@ -1,13 +1,14 @@
 """Command-line verify benchmark: prints figures, asserts nothing.
 
-    python3 benchmarks/bench_cli_verify.py [--calls 20 200] [--root CHECKOUT]
+    python3 benchmarks/bench_cli_verify.py [--calls 20 200] [--root CHECKOUT] [--json]
 
 Writes a Siemens program of N featured CYCLE93 calls (bench_cli_memory's
 grooves: one every 40 mm along one bar, flank angles, edge radii, base
 chamfers, allowances), runs ``python3 -m freecad_groove verify PROGRAM`` on it
 in a child process (one per run, so each figure is its own) and prints its
 time, its peak resident memory (``ru_maxrss``), its exit status and the
-number of moves simulated.
+number of moves simulated. Issue 22's goal: 200 calls verified in 1 s.
+--json: the figures as JSON lines (benchmarks/figures.py).
 """
 
 import argparse
@@ -17,9 +18,10 @@ import sys
 import tempfile
 import time
 
+import figures
 from bench_cli_memory import program
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+ROOT = figures.package_root(__file__)
 CHILD = ("import resource, sys; sys.argv[0] = 'freecad_groove'; "
          "from freecad_groove import cli; code = cli.main(sys.argv[1:]); "
          "sys.stderr.write('maxrss %d\\n' % resource.getrusage(resource.RUSAGE_SELF).ru_maxrss); "
@@ -35,7 +37,8 @@ def run_child(path: str, root: str) -> tuple:
     seconds = time.perf_counter() - t0
     err = proc.stderr.decode()
     if proc.returncode not in (0, 1):
-        raise SystemExit("verify failed (%d): %s" % (proc.returncode, err))
+        said = [line for line in err.splitlines() if line.strip() and not line.startswith("maxrss")]
+        raise SystemExit("verify failed (%d): %s" % (proc.returncode, said[-1] if said else "-"))
     return seconds, int(err.split("maxrss")[-1]) / 1024.0, proc.returncode, proc.stdout.decode()
 
 
@@ -43,7 +46,9 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--calls", type=int, nargs="+", default=[20, 200])
     parser.add_argument("--root", default=ROOT, help="the checkout whose freecad_groove runs")
+    figures.add_json_option(parser)
     args = parser.parse_args()
+    figures.start(args)
     print("%7s %9s %9s %6s %s" % ("calls", "seconds", "peak MiB", "exit", "total line"))
     with tempfile.TemporaryDirectory() as folder:
         for calls in args.calls:
@@ -54,6 +59,9 @@ def main() -> None:
             total = [line for line in report.splitlines() if ": total: " in line]
             print("%7d %9.2f %9.1f %6d %s" % (calls, seconds, mib, status,
                                                total[0].split(": total: ")[1][:90] if total else "-"))
+            name = "command line verify, %s featured CYCLE93 calls" % figures.thousands(calls)
+            figures.record(name, seconds, "s", figures.LOWER, "<= 1" if calls == 200 else None)
+            figures.record(name + ": peak memory", mib, "MiB", figures.LOWER)
 
 
 if __name__ == "__main__":

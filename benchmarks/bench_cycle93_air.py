@@ -29,17 +29,14 @@ own cuts not tracked):
 
 The target (issue 9 item 11: a CYCLE93 call under 3 ms, the tracking well
 under 1 ms of it) is met on these grooves and on bench_cycle93_radii.py's.
+--json: the figures as JSON lines (benchmarks/figures.py).
 """
 
 import argparse
-import os
-import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-
-from bench_machining_time import BASE, BLADE, GROOVES, START  # noqa: E402
+import figures
+from bench_machining_time import BASE, BLADE, GROOVES, START  # (puts the package on sys.path)
 
 from freecad_groove.engine import MachineState, Settings  # noqa: E402
 from freecad_groove.engine.cycles import cycle93_geometry  # noqa: E402
@@ -85,7 +82,9 @@ def per_call_ms(call, settings, calls, rounds=5):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--calls", type=int, default=50, help="calls per timing round (default 50)")
+    figures.add_json_option(ap)
     args = ap.parse_args()
+    figures.start(args)
     settings = Settings(tool=BLADE)
     print("CYCLE93 time per call, ms (best of 5 rounds of %d calls)" % args.calls)
     print("%-10s %9s %9s %9s %7s" % ("groove", "tracked", "full", "tracking", "moves"))
@@ -100,6 +99,11 @@ def main():
         finally:
             cycle93_geometry.MaterialTop = tracked_class
         print("%-10s %9.3f %9.3f %9.3f %7d" % (name, tracked, full, tracked - full, moves))
+        label = "every-feature" if name == "all" else name
+        figures.record("CYCLE93 expand with material tracking, %s groove: CPU per call" % label, tracked, "ms",
+                       figures.LOWER, "< 3")
+        figures.record("CYCLE93 material tracking alone, %s groove: CPU per call" % label, tracked - full, "ms",
+                       figures.LOWER, "< 1")
 
 
 if __name__ == "__main__":

@@ -14,16 +14,18 @@ same with ``warnings()`` after it (what the command line and the op do per
 call), and the number of moves.
 
 Target (issue 9, item 11): under 3 ms a call on the 2-core test machine
-with any radii and chamfers.
+with any radii and chamfers. --json: the figures as JSON lines
+(benchmarks/figures.py).
 """
 
 import argparse
-import os
 import statistics
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import figures
+
+figures.use_package(__file__)
 
 from freecad_groove.engine import GroovingTool, MachineState, Settings  # noqa: E402
 from freecad_groove.engine.cycles.cycle93 import Cycle93, _cached_geometry  # noqa: E402
@@ -62,7 +64,9 @@ def time_per_call(call, settings, calls, warnings=False):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--calls", type=int, default=200)
+    figures.add_json_option(ap)
     args = ap.parse_args()
+    figures.start(args)
     settings = Settings(tool=BLADE)
     print("CYCLE93 expand, 5 mm blade r0.4, W25 DEPG10 (Python %s, median of %d calls)"
           % (sys.version.split()[0], args.calls))
@@ -72,6 +76,9 @@ def main():
         secs, moves = time_per_call(call, settings, args.calls)
         with_warnings, _moves = time_per_call(call, settings, args.calls, warnings=True)
         print("%-12s %10.2f %18.2f %7d" % (name, secs * 1000, with_warnings * 1000, moves))
+        figures.record("CYCLE93 expand, %s: median" % name, secs * 1000, "ms", figures.LOWER, "< 3")
+        figures.record("CYCLE93 expand + warnings, %s: median" % name, with_warnings * 1000, "ms", figures.LOWER,
+                       "< 3")
 
 
 if __name__ == "__main__":

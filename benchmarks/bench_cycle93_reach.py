@@ -14,14 +14,15 @@ the cost; each the best of 5 rounds):
 - warning after expand: ``cycle93_warnings`` on a geometry already expanded,
   as the translator and the FreeCAD op run it (validate, expand and warnings
   of one call share one geometry).
+--json: the figures as JSON lines (benchmarks/figures.py).
 """
 
 import argparse
-import os
-import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import figures
+
+figures.use_package(__file__)
 
 from freecad_groove.engine import GroovingTool, Settings  # noqa: E402
 from freecad_groove.engine.cycles.cycle93 import Cycle93  # noqa: E402
@@ -85,7 +86,9 @@ def measure(call: Cycle93, settings: Settings, repeat: int) -> tuple:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=50)
+    figures.add_json_option(parser)
     args = parser.parse_args()
+    figures.start(args)
     settings = Settings(tool=GroovingTool(5.0, 0.4))
     cases = [("%d R2 corners" % n, groove(n)) for n in range(5)] + [("seed example", Cycle93.parse(SEED))]
     print("CYCLE93 warnings, 5 mm r0.4 blade, best of %d rounds of %d calls (ms per call)" % (ROUNDS, args.repeat))
@@ -97,6 +100,9 @@ def main() -> None:
                         if w.parameter in RADII])
         print("%-16s %9.2f %9.2f %15.2f %21.2f  %d" % (name, 1e3 * geometry, 1e3 * expand, 1e3 * alone, 1e3 * after,
                                                        reported))
+        figures.record("CYCLE93 geometry + expand, %s: best per call" % name, 1e3 * expand, "ms", figures.LOWER)
+        figures.record("CYCLE93 unreachable-material warning after expand, %s: best per call" % name, 1e3 * after,
+                       "ms", figures.LOWER)
 
 
 if __name__ == "__main__":

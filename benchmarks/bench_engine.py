@@ -8,21 +8,24 @@
 2. A program of 200 CYCLE93 calls (seed-like grooves along a shaft) run
    through the same translator the command-line tool uses.
 Target (issue 2): at least 100,000 output moves per second on one core,
-memory growing linearly with the number of grooves.
+memory growing linearly with the number of grooves; issue 22: 1,000,000.
+--json: the figures as JSON lines (benchmarks/figures.py).
 """
 
 import argparse
-import os
 import sys
 import time
 import tracemalloc
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import figures
+
+figures.use_package(__file__)
 
 from freecad_groove.engine import GroovingTool, MachineState, Settings  # noqa: E402
 from freecad_groove.engine.cycles.ab_g77 import G77  # noqa: E402
-from freecad_groove.engine.output.program import write_moves  # noqa: E402
 from freecad_groove.engine.translator import translate_program  # noqa: E402
+
+write_moves = figures.first_of("write_moves", "freecad_groove.engine.output.program", "freecad_groove.engine.targets")
 
 
 def measure(fn):
@@ -72,7 +75,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--grooves", type=int, default=10000)
     ap.add_argument("--calls", type=int, default=200)
+    figures.add_json_option(ap)
     args = ap.parse_args()
+    figures.start(args)
     print("freecad-groove engine benchmark (Python %s, one core)" % sys.version.split()[0])
     print("G77 pattern: expand + write LinuxCNC")
     for n in (args.grooves // 4, args.grooves // 2, args.grooves):
@@ -81,6 +86,10 @@ def main():
             "  %6d grooves: %7d moves, %7d lines in %.3f s = %9.0f moves/s, peak memory %6.1f MiB (%.0f bytes/move)"
             % (n, moves, lines, secs, moves / secs, peak / 2**20, peak / moves)
         )
+        name = "G77 expand + write, %s grooves" % figures.thousands(n)
+        figures.record(name, moves / secs, "moves/s", figures.HIGHER,
+                       ">= 1,000,000" if n == args.grooves else None)
+        figures.record(name + ": peak memory", peak / 2**20, "MiB", figures.LOWER)
     print("CYCLE93 program: translate (parse, validate, expand, write)")
     for n in (args.calls // 2, args.calls):
         out_lines, secs, peak = measure(cycle93_program(n))
@@ -88,6 +97,8 @@ def main():
             "  %6d calls: %7d output lines in %.3f s = %9.0f lines/s, %.2f ms per call, peak memory %6.1f MiB"
             % (n, out_lines, secs, out_lines / secs, 1000 * secs / n, peak / 2**20)
         )
+        figures.record("CYCLE93 program translated, %d featured calls: per call" % n, 1000 * secs / n, "ms",
+                       figures.LOWER)
 
 
 if __name__ == "__main__":

@@ -43,15 +43,23 @@ prints; FREECAD_GROOVE_BENCH_GROOVES changes the 500 of (b).
     our post and with FreeCAD's linuxcnc post.
 
 Targets (issue 3): (a) under 50 ms; (b) our post no slower than FreeCAD's own; (issue 10 item 11) the
-first post after reopening as fast as before saving (CPU medians within 10 %).
+first post after reopening as fast as before saving (CPU medians within 10 %); (issue 22) a Job of 500
+single-groove ops posted at least 5 times faster than FreeCAD's linuxcnc post does.
+
+FREECAD_GROOVE_BENCH_OPS=N makes (b)'s grooves N ops (default 5; 500 with
+FREECAD_GROOVE_BENCH_GROOVES=500: 500 ops of one groove each);
+FREECAD_GROOVE_BENCH_PARTS picks the parts: a (recompute), b (posting), r
+(saving, reopening and posting again; what (c) needs), default "abr". The
+figures also go, as JSON lines (benchmarks/figures.py, which the -c text puts
+on sys.path), to figures.jsonl in $FREECAD_GROOVE_SHARE; times there are CPU
+times (time.process_time, or this thread's where said): the machine may be
+shared.
 """
 
 
 def _freecad_groove_bench():
     import os
-    import statistics
     import sys
-    import time
 
     import FreeCAD
 
@@ -62,14 +70,13 @@ def _freecad_groove_bench():
             sys.path.insert(0, path)
     sys.dont_write_bytecode = True  # the checkout may be mounted read-only
 
-    import parts  # tests/freecad/parts.py: the stepped shaft and its Job
-
-    from freecad_groove import demo, make_groove
-    from freecad_groove.ops.groove.op import op_error
+    import figures
 
     share = os.environ.get("FREECAD_GROOVE_SHARE", "")
+    if share:
+        figures.to_file(os.path.join(share, "figures.jsonl"))
     out_path = os.environ.get("FREECAD_GROOVE_BENCH_OUT") or os.path.join(share or os.getcwd(), "bench_freecad.txt")
-    total_grooves = int(os.environ.get("FREECAD_GROOVE_BENCH_GROOVES", "500"))
+    parts_run = os.environ.get("FREECAD_GROOVE_BENCH_PARTS", "abr")
     lines = []
 
     def emit(text=""):
@@ -78,29 +85,52 @@ def _freecad_groove_bench():
         with open(out_path, "w") as f:
             f.write("\n".join(lines) + "\n")
 
-    def ms(seconds):
-        return "%8.1f ms" % (seconds * 1000.0)
-
-    def timed(fn, repeat):
-        times, result = [], None
-        for _ in range(repeat):
-            t0 = time.perf_counter()
-            result = fn()
-            times.append(time.perf_counter() - t0)
-        return times, result
-
-    def new_doc(name):
-        doc = FreeCAD.newDocument(name)
-        FreeCAD.setActiveDocument(doc.Name)
-        return doc
-
     emit("freecad-groove FreeCAD benchmark: FreeCAD %s, Python %s, %s" % (
         ".".join(FreeCAD.Version()[:3]), sys.version.split()[0], os.uname().machine))
+    if "a" in parts_run:
+        _bench_recompute(emit, figures)
+    if "b" in parts_run:
+        _bench_posting(emit, figures, "r" in parts_run)
 
-    # -- (a) recompute of one groove ------------------------------------------------------
+
+def _ms(seconds):
+    return "%8.1f ms" % (seconds * 1000.0)
+
+
+def _timed(fn, repeat):
+    """([wall seconds], [CPU seconds], the last result) of ``repeat`` calls."""
+    import time
+
+    walls, cpus, result = [], [], None
+    for _ in range(repeat):
+        t0, c0 = time.perf_counter(), time.process_time()
+        result = fn()
+        cpus.append(time.process_time() - c0)
+        walls.append(time.perf_counter() - t0)
+    return walls, cpus, result
+
+
+def _new_doc(name):
+    import FreeCAD
+
+    doc = FreeCAD.newDocument(name)
+    FreeCAD.setActiveDocument(doc.Name)
+    return doc
+
+
+def _bench_recompute(emit, figures):
+    """(a) the recompute of one Groove op per kind of face."""
+    import statistics
+
+    import FreeCAD
+    import parts  # tests/freecad/parts.py: the stepped shaft and its Job
+
+    from freecad_groove import make_groove
+    op_error = figures.first_of("op_error", "freecad_groove.ops.groove.op", "freecad_groove.freecad.groove_op")
+
     emit()
     emit("(a) Groove op recompute, one groove (Position 5 <-> 6 mm, doc.recompute()), 20 runs")
-    doc = new_doc("BenchRecompute")
+    doc = _new_doc("BenchRecompute")
     _doc, shaft, job, tc = parts.make_shop(doc)
     kinds = [("cylinder", {}), ("bore", dict(position=10, depth=1.5)), ("shoulder", dict(position=1, width=3.5)),
              ("cone_up", dict(position=3)), ("left_end", dict(position=2))]
@@ -113,38 +143,49 @@ def _freecad_groove_bench():
             emit("  %-9s op invalid: %s" % (key, op_error(op)))
             continue
         base = op.Position.Value
-        times = []
-        for i in range(20):
-            op.Position = base + (1.0 if i % 2 == 0 else 0.0)
-            t0 = time.perf_counter()
+        moved = [0]
+
+        def recompute(op=op, base=base, moved=moved):
+            op.Position = base + (1.0 if moved[0] % 2 == 0 else 0.0)
+            moved[0] += 1
             doc.recompute()
-            times.append(time.perf_counter() - t0)
+
+        times, cpus, _result = _timed(recompute, 20)
         op.Position = base
         doc.recompute()
         valid = op_error(op) is None
-        plan_times, plans = timed(lambda op=op: op.Proxy.plan(op), 20)
-        moves = sum(len(p.moves) for p in plans)
+        plan_times, _cpu, plans = _timed(lambda op=op: [op.Proxy.plan(op)], 20)
         med = statistics.median(times)
         if headline is None:
             headline = med
-        emit("  %-9s %-34s median %s (min %.1f, max %.1f ms); plan() alone %s; %d moves%s" % (
-            key, op.GrooveKind, ms(med), min(times) * 1000, max(times) * 1000,
-            ms(statistics.median(plan_times)).strip(), moves, "" if valid else " (INVALID after the runs)"))
+        emit("  %-9s %-34s median %s (min %.1f, max %.1f ms), CPU %s; plan() alone %s; %d moves%s" % (
+            key, op.GrooveKind, _ms(med), min(times) * 1000, max(times) * 1000, _ms(statistics.median(cpus)).strip(),
+            _ms(statistics.median(plan_times)).strip(), sum(len(p.moves) for p in plans[0]),
+            "" if valid else " (INVALID after the runs)"))
+        figures.record("recompute of one plain Groove op, %s face: median CPU" % key.replace("_", " "),
+                       1000 * statistics.median(cpus), "ms", figures.LOWER, "< 50")
     FreeCAD.closeDocument(doc.Name)
     if headline is not None:
         emit("  target: under 50 ms for one groove -> cylinder groove %s: %s" % (
-            ms(headline).strip(), "met" if headline < 0.050 else "NOT met"))
+            _ms(headline).strip(), "met" if headline < 0.050 else "NOT met"))
 
-    # -- (b) posting 500 grooves -------------------------------------------------------------
-    emit()
-    ops_count = 5
-    per_op = max(1, total_grooves // ops_count)
+
+def _post_job(emit, ops_count, per_op):
+    """(doc, job, [tool controller, op, ...]) of (b): ``ops_count`` Groove ops of
+    ``per_op`` grooves each on a bar R20; None when an op is invalid."""
+    import time
+
+    import parts
+
+    from freecad_groove import make_groove
+    op_error = figures.first_of("op_error", "freecad_groove.ops.groove.op", "freecad_groove.freecad.groove_op")
+
     pitch = 5.0
     span = per_op * pitch
     length = ops_count * span + 10.0
     emit("(b) posting %d grooves: %d ops x GrooveCount %d on a bar R20 x %g mm, median of 3" % (
         ops_count * per_op, ops_count, per_op, length))
-    doc = new_doc("BenchPost")
+    doc = _new_doc("BenchPost")
     shape = parts.shaft_shape([(0, 0), (20, 0), (20, length), (0, length), (0, 0)])
     _doc, bar, job, tc = parts.make_shop(doc, shape=shape)
     face = parts.face_name(bar.Shape, "cylinder", {"cylinder": lambda f: f.surface == "cylinder"})
@@ -158,62 +199,124 @@ def _freecad_groove_bench():
     build = time.perf_counter() - t0
     bad = ["%s: %s" % (op.Label, op_error(op)) for op in ops if op_error(op)]
     if bad:
-        emit("  ops invalid: %s" % ", ".join(bad))
-        return
-    commands = sum(len(op.Path.Commands) for op in ops)
-    grooves = sum(len(op.Proxy.plan(op)) for op in ops)
+        emit("  ops invalid: %s" % ", ".join(bad[:5]))
+        return None
     emit("  job: %d grooves, %d Path commands; creating and recomputing the ops took %.2f s" % (
-        grooves, commands, build))
-    objects = [tc] + ops
+        sum(len(op.Proxy.plan(op)) for op in ops), sum(len(op.Path.Commands) for op in ops), build))
+    return doc, job, [tc] + ops
 
-    ours = demo.load_post("linuxcnc")
-    import Path.Post.scripts.linuxcnc_post as fc_linuxcnc
 
-    rows = []
+def _post_row(emit, label, fn):
+    """Time a post 3 times: (wall median, CPU median), or None when it does not run here."""
+    import statistics
 
-    def row(label, fn):
-        try:
-            times, text = timed(fn, 3)
-        except Exception as e:  # a post that does not run here: say so, go on
-            emit("  %-58s does not run: %s: %s" % (label, type(e).__name__, e))
-            return None
-        if isinstance(text, list):  # PostProcessorFactory: [(section, gcode)]
-            text = "".join(g or "" for _s, g in text)
-        med = statistics.median(times)
-        rows.append((label, med))
-        emit("  %-58s %s  (%d lines)" % (label, ms(med), (text or "").count("\n")))
-        return med
+    try:
+        times, cpus, text = _timed(fn, 3)
+    except Exception as e:  # a post that does not run here: say so, go on
+        emit("  %-58s does not run: %s: %s" % (label, type(e).__name__, e))
+        return None
+    if isinstance(text, list):  # PostProcessorFactory: [(section, gcode)]
+        text = "".join(g or "" for _s, g in text)
+    med, cpu = statistics.median(times), statistics.median(cpus)
+    emit("  %-58s %s  (%d lines; CPU %s)" % (label, _ms(med), (text or "").count("\n"), _ms(cpu).strip()))
+    return med, cpu
 
-    plan_med = statistics.median(timed(lambda: [op.Proxy.plan(op) for op in ops], 3)[0])
-    mine = row("ours: linuxcnc_lathe_post.export(objects, '-', '')", lambda: ours.export(objects, "-", ""))
-    emit("  %-58s %s" % ("  (op.Proxy.plan() of every op, which a post of up-to-date ops skips)", ms(plan_med)))
-    theirs = row("FreeCAD: linuxcnc_post.export(objects, '-', '--no-show-editor')",
-                 lambda: fc_linuxcnc.export(objects, "-", "--no-show-editor"))
 
+def _via_factories(emit, job):
+    """Both posts through FreeCAD's PostProcessorFactory, as the Job's Post command runs them."""
     try:
         from Path.Post.Processor import PostProcessorFactory
     except ImportError as e:
-        PostProcessorFactory = None
         emit("  PostProcessorFactory: not in this FreeCAD (%s)" % e)
-    if PostProcessorFactory is not None:
-        for name, args in (("linuxcnc_lathe", ""), ("linuxcnc", "--no-show-editor"), ("refactored_linuxcnc", "")):
-            def via_factory(name=name, args=args):
-                job.PostProcessorArgs = args
-                post = PostProcessorFactory.get_post_processor(job, name)
-                if post is None:
-                    raise LookupError("PostProcessorFactory found no post %r" % name)
-                return post.export()
+        return
+    for name, args in (("linuxcnc_lathe", ""), ("linuxcnc", "--no-show-editor"), ("refactored_linuxcnc", "")):
+        def via_factory(name=name, args=args):
+            job.PostProcessorArgs = args
+            post = PostProcessorFactory.get_post_processor(job, name)
+            if post is None:
+                raise LookupError("PostProcessorFactory found no post %r" % name)
+            return post.export()
 
-            row("PostProcessorFactory(job, %r).export()" % name, via_factory)
-    reopened = _post_after_reopening(doc, ours, emit, ms)
+        _post_row(emit, "PostProcessorFactory(job, %r).export()" % name, via_factory)
+
+
+def _bench_posting(emit, figures, reopen):
+    """(b) posting the Job with our post and FreeCAD's; with ``reopen``, then after saving and reopening."""
+    import os
+    import statistics
+
+    from freecad_groove import demo
+
+    total = int(os.environ.get("FREECAD_GROOVE_BENCH_GROOVES", "500"))
+    ops_count = int(os.environ.get("FREECAD_GROOVE_BENCH_OPS", "5"))
+    per_op = max(1, total // ops_count)
+    emit()
+    made = _post_job(emit, ops_count, per_op)
+    if made is None:
+        return
+    doc, job, objects = made
+    ops = objects[1:]
+    what = ("post a Job of %d single-groove ops" % ops_count if per_op == 1
+            else "post a Job of %d grooves in %d ops" % (ops_count * per_op, ops_count))
+    ours = demo.load_post("linuxcnc")
+    import Path.Post.scripts.linuxcnc_post as fc_linuxcnc
+
+    mine = _post_row(emit, "ours: linuxcnc_lathe_post.export(objects, '-', '')", lambda: ours.export(objects, "-", ""))
+    plan_med = statistics.median(_timed(lambda: [op.Proxy.plan(op) for op in ops], 3)[0])
+    emit("  %-58s %s" % ("  (op.Proxy.plan() of every op, which a post of up-to-date ops skips)", _ms(plan_med)))
+    theirs = _post_row(emit, "FreeCAD: linuxcnc_post.export(objects, '-', '--no-show-editor')",
+                       lambda: fc_linuxcnc.export(objects, "-", "--no-show-editor"))
+    _via_factories(emit, job)
+    if mine is not None:
+        figures.record(what + ": ours (linuxcnc_lathe), median CPU", 1000 * mine[1], "ms", figures.LOWER)
+    if theirs is not None:
+        figures.record(what + ": FreeCAD's linuxcnc post, median CPU", 1000 * theirs[1], "ms", figures.LOWER)
     if mine is not None and theirs is not None:
         emit("  target: ours no slower than FreeCAD's linuxcnc post -> %.2f x its time: %s" % (
-            mine / theirs, "met" if mine <= theirs else "NOT met"))
-        emit("  a post of touched (not recomputed) ops plans them again: about %s" % ms(mine + plan_med).strip())
+            mine[0] / theirs[0], "met" if mine[0] <= theirs[0] else "NOT met"))
+        emit("  a post of touched (not recomputed) ops plans them again: about %s" % _ms(mine[0] + plan_med).strip())
+        figures.record(what + ": FreeCAD's linuxcnc post / ours, CPU time", theirs[1] / mine[1], "x",
+                       figures.HIGHER, ">= 5" if per_op == 1 else ">= 1")
+    reopened = _post_after_reopening(doc, ours, emit, _ms) if reopen else None
     if reopened is not None:
-        first, before = reopened
+        first, before, opening = reopened
         emit("  target: the first post after saving and reopening as fast as before saving (CPU medians, within 10 %%)"
              " -> %.2f x: %s" % (first / before, "met" if first <= 1.10 * before else "NOT met"))
+        figures.record(what + ", reopened: opening it, median thread CPU", 1000 * opening, "ms", figures.LOWER)
+        figures.record(what + ", reopened: the first post, median thread CPU", 1000 * first, "ms", figures.LOWER)
+        figures.record(what + ": first post after reopening / before saving, thread CPU", first / before, "x",
+                       figures.LOWER, "<= 1.10")
+
+
+def _cpu(fn):
+    """This thread's CPU seconds of fn()."""
+    import time
+
+    t0 = time.thread_time()
+    fn()
+    return time.thread_time() - t0
+
+
+class _FullCollections:
+    """The full collections (gen2) of Python's cyclic garbage collector, as
+    [(start, seconds)] in this thread's CPU time, while installed."""
+
+    def __init__(self):
+        self.full = []
+        self.started = 0.0
+
+    def __call__(self, phase, info):
+        import time
+
+        if info["generation"] == 2:
+            if phase == "start":
+                self.started = time.thread_time()
+            else:
+                self.full.append((self.started, time.thread_time() - self.started))
+
+    def since(self, t0):
+        """(count, seconds) of the full collections that started after ``t0``."""
+        return sum(1 for at, _s in self.full if at >= t0), sum(seconds for at, seconds in self.full if at >= t0)
 
 
 def _post_after_reopening(doc, post, emit, ms, rounds=5):
@@ -225,78 +328,72 @@ def _post_after_reopening(doc, post, emit, ms, rounds=5):
     other processes on a shared machine do not count), the post before saving
     timed the same way for the comparison, with the full collections of
     Python's cyclic garbage collector (gen2) that fell into the posts. Returns
-    (first post, post before saving) CPU medians, or None when it does not run."""
+    (first post, post before saving, opening) CPU medians, or None when it does not run."""
     import gc
     import os
     import statistics
     import tempfile
-    import time
-
-    import FreeCAD
-
-    def cpu(fn):
-        t0 = time.thread_time()
-        fn()
-        return time.thread_time() - t0
-
-    full = []  # [(start, seconds)] of each gen2 collection
-    started = [0.0]
-
-    def gc_watch(phase, info):
-        if info["generation"] == 2:
-            if phase == "start":
-                started[0] = time.thread_time()
-            else:
-                full.append((started[0], time.thread_time() - started[0]))
-
-    def posted(objects, into):
-        t0 = time.thread_time()
-        into.append(cpu(lambda: post.export(objects, "-", "")))
-        return sum(1 for at, _s in full if at >= t0), sum(seconds for at, seconds in full if at >= t0)
 
     objects = [obj for obj in doc.Objects if hasattr(obj, "GrooveCount")]
     objects.insert(0, objects[0].ToolController)
     share = os.environ.get("FREECAD_GROOVE_SHARE")
     path = os.path.join(share or tempfile.mkdtemp(), "bench_post.FCStd")
-    before, first, after, opening, collected = [], [], [], [], [[0, 0.0], [0, 0.0]]
-    gc.callbacks.append(gc_watch)
+    times = {"before": [], "first": [], "after": [], "opening": []}
+    collections = _FullCollections()
+    gc.callbacks.append(collections)
     try:
         for _ in range(rounds):
-            posted(objects, before)
+            times["before"].append(_cpu(lambda: post.export(objects, "-", "")))
         doc.saveAs(path)
         size = os.path.getsize(path)
-        FreeCAD.closeDocument(doc.Name)
-        for _ in range(rounds):
-            again = []
-            opening.append(cpu(lambda again=again: again.append(FreeCAD.openDocument(path))))
-            try:
-                ops = [o for o in again[0].Objects if hasattr(o, "GrooveCount")]
-                for k, into in enumerate((first, after)):
-                    count, seconds = posted([ops[0].ToolController] + ops, into)
-                    collected[k][0] += count
-                    collected[k][1] += seconds
-            finally:
-                FreeCAD.closeDocument(again[0].Name)
+        collected = _reopen_and_post(doc, path, post, rounds, times, collections)
     except Exception as e:  # shown, not fatal
         emit("  %-58s does not run: %s: %s" % ("ours after reopening", type(e).__name__, e))
         return None
     finally:
-        gc.callbacks.remove(gc_watch)
+        gc.callbacks.remove(collections)
         if not share and os.path.exists(path):
             os.remove(path)
 
-    def figures(times):
-        return "median %s (min %.1f, max %.1f ms)" % (ms(statistics.median(times)), min(times) * 1e3, max(times) * 1e3)
+    def spread(values):
+        return "median %s (min %.1f, max %.1f ms)" % (ms(statistics.median(values)), min(values) * 1e3,
+                                                      max(values) * 1e3)
 
     emit("  saved and reopened %d times (%.0f kB saved); CPU time of this thread (time.thread_time):" % (
         rounds, size / 1000.0))
-    emit("    %-56s %s" % ("ours before saving, for comparison", figures(before)))
-    emit("    %-56s %s" % ("opening the document (FreeCAD.openDocument)", figures(opening)))
-    emit("    %-56s %s" % ("ours after opening: the first post", figures(first)))
-    emit("    %-56s %s" % ("ours after opening: the next one", figures(after)))
+    emit("    %-56s %s" % ("ours before saving, for comparison", spread(times["before"])))
+    emit("    %-56s %s" % ("opening the document (FreeCAD.openDocument)", spread(times["opening"])))
+    emit("    %-56s %s" % ("ours after opening: the first post", spread(times["first"])))
+    emit("    %-56s %s" % ("ours after opening: the next one", spread(times["after"])))
     emit("    full garbage collections (gen2) in the first posts: %d, %.0f ms in all; in the next ones: %d, %.0f ms" % (
         collected[0][0], collected[0][1] * 1e3, collected[1][0], collected[1][1] * 1e3))
-    return statistics.median(first), statistics.median(before)
+    return tuple(statistics.median(times[key]) for key in ("first", "before", "opening"))
+
+
+def _reopen_and_post(doc, path, post, rounds, times, collections):
+    """Close ``doc``, then ``rounds`` times open ``path`` and post twice;
+    returns [[count, seconds], [count, seconds]]: the full collections in the
+    first posts and in the next ones."""
+    import time
+
+    import FreeCAD
+
+    collected = [[0, 0.0], [0, 0.0]]
+    FreeCAD.closeDocument(doc.Name)
+    for _ in range(rounds):
+        again = []
+        times["opening"].append(_cpu(lambda again=again: again.append(FreeCAD.openDocument(path))))
+        try:
+            ops = [o for o in again[0].Objects if hasattr(o, "GrooveCount")]
+            for k, key in enumerate(("first", "after")):
+                t0 = time.thread_time()
+                times[key].append(_cpu(lambda ops=ops: post.export([ops[0].ToolController] + ops, "-", "")))
+                count, seconds = collections.since(t0)
+                collected[k][0] += count
+                collected[k][1] += seconds
+        finally:
+            FreeCAD.closeDocument(again[0].Name)
+    return collected
 
 
 try:

@@ -17,8 +17,8 @@ cd "$(dirname "$(readlink -f "$0")")/.."
 . benchmarks/freecad_run.sh
 
 # Short: FreeCAD 1.1 crashes on a -c text of 256 characters or more.
-CODE="import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT'] + '/benchmarks/bench_freecad.py').read())"
-FRESH="import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT'] + '/benchmarks/bench_freecad_fresh.py').read())"
+CODE="$(bench_code bench_freecad.py)"
+FRESH="$(bench_code bench_freecad_fresh.py)"
 # (a), (b), then (c): a fresh FreeCAD for each post's first post after opening the document (b) saved
 run_benchmark bench_freecad "${1:-1.1}" 'freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$1" &&
     FREECAD_GROOVE_BENCH_FRESH=ours freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$2" &&

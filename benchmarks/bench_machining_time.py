@@ -48,14 +48,18 @@ Contour and finishing passes fed only where material remains (issue 9 item
   ANGC 12     68.58   56.17
   narrow       7.10    7.10
   deep        83.61   83.61
+
+--json: the figures as JSON lines (benchmarks/figures.py): each groove's
+total seconds, and the six grooves' total over their lower bounds' total
+(feed + rapid; issue 22's goal: at most 1.15).
 """
 
 import argparse
 import math
-import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import figures
+
+figures.use_package(__file__)
 
 from freecad_groove.engine import GroovingTool, MachineState, Settings  # noqa: E402
 from freecad_groove.engine.cycles.cycle93 import Cycle93  # noqa: E402
@@ -134,15 +138,24 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--feed", type=float, default=100.0, help="feed rate, mm/min (default 100)")
     ap.add_argument("--rapid", type=float, default=10000.0, help="rapid rate, mm/min (default 10000)")
+    figures.add_json_option(ap)
     args = ap.parse_args()
+    figures.start(args)
     print("CYCLE93 machining time: feed %g mm/min, rapid %g mm/min, blade %g mm (r %g)"
           % (args.feed, args.rapid, BLADE.width, BLADE.corner_radius))
     print("%-10s %9s %9s %6s %9s %9s %9s | %9s %9s %7s"
           % ("groove", "feed mm", "rapid mm", "breaks", "feed s", "rapid s", "total s",
              "feed >= s", "rapid >=", "bound/feed"))
+    total = bound = 0.0
     for name, kw in GROOVES:
         row = measure(name, kw, args.feed, args.rapid)
         print("%-10s %9.2f %9.2f %6d %9.2f %9.2f %9.2f | %9.2f %9.2f %6.0f %%" % (row[:9] + (100 * row[9],)))
+        figures.record("CYCLE93 machining time, %s groove" % name, row[6], "s", figures.LOWER)
+        total += row[6]
+        bound += row[7] + row[8]
+    print("six grooves: %.2f s against a lower bound of %.2f s (feed + rapid): %.3f x" % (total, bound, total / bound))
+    figures.record("CYCLE93 machining time / lower bound, six reference grooves", total / bound, "x", figures.LOWER,
+                   "<= 1.15")
 
 
 if __name__ == "__main__":

@@ -6,19 +6,23 @@ A G33 facing and a G34 pocket (corner radius 5 mm) of growing size, 10 mm end
 mill, cut width 2 mm, depth 10 mm in steps of 1 mm (metric): expand, then
 write as a LinuxCNC mill program. Reports the moves, the best of 3 times and
 output moves per second (the engine's target for the cycles: at least
-100,000 a second on one core).
+100,000 a second on one core; issue 22: 1,000,000). --json: the figures as
+JSON lines (benchmarks/figures.py).
 """
 
-import os
-import sys
+import argparse
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import figures
+
+figures.use_package(__file__)
 
 from freecad_groove.engine.cycles.milltronics import G33, G34  # noqa: E402
 from freecad_groove.engine.moves import MachineState  # noqa: E402
-from freecad_groove.engine.output.program import write_program  # noqa: E402
 from freecad_groove.engine.settings import Settings  # noqa: E402
+
+write_program = figures.first_of("write_program", "freecad_groove.engine.output.program",
+                                 "freecad_groove.engine.targets")
 
 
 def best_of(fn, rounds=3):
@@ -31,6 +35,9 @@ def best_of(fn, rounds=3):
 
 
 def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    figures.add_json_option(parser)
+    figures.start(parser.parse_args())
     state = MachineState(x=0.0, y=0.0, z=5.0, diameter_mode=False, feed=600.0, feed_per_rev=False)
     settings = Settings(mill_tool_diameter=10.0)
     print("%6s %7s %9s %10s %10s %12s" % ("cycle", "size", "moves", "expand s", "write s", "moves/s"))
@@ -42,6 +49,8 @@ def main():
             _text, write = best_of(lambda moves=moves: write_program(moves, "linuxcnc-mill", state))
             print("%6s %7.0f %9d %10.3f %10.3f %12.0f" % (cycle.NAME, size, len(moves), expand, write,
                                                           len(moves) / (expand + write)))
+            figures.record("%s expand + write, %g x %g mm" % (cycle.NAME, size, size / 2),
+                           len(moves) / (expand + write), "moves/s", figures.HIGHER, ">= 1,000,000")
 
 
 if __name__ == "__main__":

@@ -15,5 +15,5 @@ cd "$(dirname "$(readlink -f "$0")")/.."
 . benchmarks/freecad_run.sh
 
 # Short: FreeCAD 1.1 crashes on a -c text of 256 characters or more.
-CODE="import os; exec(open(os.environ['FREECAD_GROOVE_CHECKOUT'] + '/benchmarks/bench_model_grooves.py').read())"
+CODE="$(bench_code bench_model_grooves.py)"
 run_benchmark bench_model_grooves "${1:-1.1}" 'exec freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$1"' "$CODE"

@@ -154,7 +154,7 @@ def measure(calls):
 
 def measured_in(tree, calls):
     """measure() run in its own process with ``tree``'s freecad_groove."""
-    proc = subprocess.run([sys.executable, os.path.abspath(__file__), "--json", "--tree", tree, "--calls", str(calls)],
+    proc = subprocess.run([sys.executable, os.path.abspath(__file__), "--rows", "--tree", tree, "--calls", str(calls)],
                           capture_output=True, text=True, timeout=3600, check=True)
     return json.loads(proc.stdout)
 
@@ -189,19 +189,27 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--against", metavar="REF", help="a git ref measured the same way, printed beside")
     ap.add_argument("--calls", type=int, default=60, help="expansions timed per groove (default 60)")
-    ap.add_argument("--json", action="store_true", help=argparse.SUPPRESS)
+    ap.add_argument("--rows", action="store_true", help=argparse.SUPPRESS)  # against(): one tree's rows
     ap.add_argument("--tree", default=ROOT, help=argparse.SUPPRESS)
+    sys.path.insert(0, HERE)
+    import figures
+
+    figures.add_json_option(ap)
     args = ap.parse_args()
-    if args.json:
+    figures.start(args)
+    if args.rows:
         sys.path.insert(0, args.tree)
         print(json.dumps(measure(args.calls)))
         return
     if not args.against:
-        sys.path.insert(0, ROOT)
+        sys.path.insert(0, figures.package_root(__file__))
         rows = measure(args.calls)
         print("%-17s %8s %6s %9s %9s" % ("groove", "blocks", "arcs", "elements", "ms/call"))
         for name, row in rows.items():
             print("%-17s %8d %6d %9d %9.2f" % (name, row["blocks"], row["arcs"], row["elements"], row["ms"]))
+            figures.record("CYCLE93 %s: motion blocks" % name, row["blocks"], "blocks", figures.LOWER)
+            figures.record("CYCLE93 %s: expand, fastest call" % name, row["ms"], "ms", figures.LOWER,
+                           "< 3" if name.startswith("4 x R2") else None)
         return
     ours, theirs = against(args.against, args.calls)
     print("motion blocks and expand time (CPU ms, the fastest of %d calls): %s (before) -> this checkout (after)"

@@ -8,7 +8,9 @@ benchmarks/bench_verify_job.sh provides it from the host, as the tests do):
 
 Figures: the time of verify_job(job) (median, min, max of 5 runs; each
 reads the Job, sweeps every op and sets CycleTime) and its summary. The
-figures go to bench_verify_job.txt in $FREECAD_GROOVE_SHARE.
+figures go to bench_verify_job.txt in $FREECAD_GROOVE_SHARE, and as JSON
+lines (benchmarks/figures.py, which the -c text puts on sys.path) to
+figures.jsonl there.
 """
 
 
@@ -22,9 +24,12 @@ def _freecad_groove_bench_verify():
     pylib = os.path.join(share, os.environ.get("FREECAD_GROOVE_PYLIB", "pylib"), "cp%d%d" % sys.version_info[:2])
     if os.path.isdir(pylib):
         sys.path.append(pylib)
+    import figures
     import FreeCAD
 
     from freecad_groove import demo, verify_job
+
+    figures.to_file(os.path.join(share, "figures.jsonl"))
 
     lines = []
     try:
@@ -42,6 +47,7 @@ def _freecad_groove_bench_verify():
         lines.append("verify_job(demo Job, %d ops, %d moves): median %.3f s, min %.3f s, max %.3f s"
                      % (len(result.ops), moves, statistics.median(times), min(times), max(times)))
         lines.append(result.summary())
+        figures.record("verify the demo Job: median", statistics.median(times), "s", figures.LOWER)
     except Exception:
         import traceback
 

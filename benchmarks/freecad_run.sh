@@ -6,6 +6,16 @@
 # runs `sh -c SCRIPT sh ARG...` in the root LABEL (1.1, 1.0) with a temporary
 # shared folder; the benchmark writes its figures to $SHARE/NAME.txt, which is
 # printed. FreeCAD's own output goes to a log shown only when it fails.
+#
+#   bench_code FILE
+#
+# prints the freecadcmd -c text that runs benchmarks/FILE with benchmarks/ on
+# sys.path (for figures.py). Short: FreeCAD 1.1 crashes on a -c text of 256
+# characters or more.
+
+bench_code() {
+    printf '%s' "import os, sys; B = os.environ['FREECAD_GROOVE_CHECKOUT'] + '/benchmarks'; sys.path.insert(0, B); exec(open(B + '/$1').read())"
+}
 
 run_benchmark() {
     local name="$1" label="$2" script="$3"
