@@ -103,6 +103,8 @@ TYP_CHR = 10  # added to TYP when chamfers are measured along their legs (CHR)
 class ObjectGroove(AddonOp):
     """Proxy of a Groove operation (Path::FeaturePython)."""
 
+    DECLARED_PROPERTIES = PROPERTIES
+
     # -- FreeCAD op API ---------------------------------------------------------
     def opOnChanged(self, obj: object, prop: str) -> None:
         """A model value set by hand while ModelGroove is on overrides the model's (ModelOverrides)."""

@@ -52,6 +52,7 @@ class ObjectCylinderSlot(AddonOp):
     """Proxy of a Cylinder slot operation (Path::FeaturePython)."""
 
     FEATURES = ("FeatureTool", "FeatureBaseFaces", "FeatureBaseEdges", "FeatureCoolant")
+    DECLARED_PROPERTIES = tuple((type_id, name, GROUP, tip, default) for type_id, name, tip, default in PROPERTIES)
 
     # -- FreeCAD op API ---------------------------------------------------------
     def _add_missing_properties(self, obj: object) -> None:
@@ -204,7 +205,10 @@ def sketch_edges(sketch: object) -> List[Tuple[object, str]]:
 
 
 def SetupProperties() -> list:
-    return [name for _t, name, _tip, _d in PROPERTIES if name not in DERIVED]
+    """The op properties a Job's SetupSheet may hold defaults for: the region's Depth, Passes, Allowance and
+    Retract (not DevelopedSketch: a link to one sketch is no default for every slot, and CAM's SetupSheet
+    editor has no editor for a link)."""
+    return [name for _t, name, _tip, _d in PROPERTIES if name not in DERIVED + ("DevelopedSketch",)]
 
 
 def Create(name: str, obj: object = None, parentJob: object = None, tool_controller: object = None) -> object:
