@@ -13,8 +13,10 @@ So they are post options without defaults, on the posts that write C:
     --switches-by-hand   (a comment in place of each switch not given)
 
 WORDS: program words, space separated (``M14``, ``"M64 P0"``, ``"M3 $1"``).
-Around a slot the post stops the main spindle (the control's spindle stop)
-if it turns, switches C axis mode on, starts the live tool in the tool
+The main spindle is never started for a slot (program.py: a tool
+controller's spindle waits for the op that uses it). Around a slot the post
+stops the main spindle (the control's spindle stop) if an earlier op left it
+turning, switches C axis mode on, starts the live tool in the tool
 controller's SpindleDir at its SpindleSpeed, writes the slot, then stops the
 live tool and switches C axis mode off. A switch whose option is not given
 is not guessed: the slot is refused (PostError naming the option), since a
@@ -40,7 +42,8 @@ WORDS = re.compile(r"^[A-Z$][-+]?[0-9]+(\.[0-9]+)?( +[A-Z$][-+]?[0-9]+(\.[0-9]+)
 # (option, attribute, help)
 OPTIONS = (
     ("--c-axis-on", "c_axis_on", "the words that switch the spindle into C axis mode before a Cylinder slot "
-                                 "(machine-specific; no default: a comment marks the missing switch)"),
+                                 "(machine-specific; no default: a Cylinder slot without it is refused, "
+                                 "or with --switches-by-hand a comment marks the missing switch)"),
     ("--c-axis-off", "c_axis_off", "the words that switch C axis mode off after a Cylinder slot (no default)"),
     ("--live-tool-cw", "live_tool_cw", "the words that start the live tool clockwise (SpindleDir Forward), "
                                        "written with S<rpm> of the tool controller (no default)"),
