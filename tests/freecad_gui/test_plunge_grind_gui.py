@@ -191,16 +191,20 @@ def test_a_scripted_op_gets_the_view_provider_and_opens_its_panel(shop):
     assert grind_ops(job) == [op] and FreeCAD.ActiveDocument is not None
 
 
-def test_the_command_sits_in_cams_toolbar_and_menu_after_turning_groove(shop):
+def test_the_commands_sit_in_cams_toolbar_and_menu_turning_groove_cylinder_slot_plunge_grind(shop):
     mw = FreeCADGui.getMainWindow()
     operations = next(tb for tb in mw.findChildren(QtGui.QToolBar) if tb.objectName() == "New Operations")
-    assert "Plunge grind" in [a.text() for a in operations.actions()]
+    buttons = [a.text() for a in operations.actions()]
+    at = buttons.index("Turning Groove")
+    assert buttons[at:at + 3] == ["Turning Groove", "Cylinder slot", "Plunge grind"], buttons
+    icons = [a.icon().pixmap(32, 32).toImage() for a in operations.actions()[at:at + 3]]
+    assert icons[0] != icons[1] and icons[1] != icons[2] and icons[0] != icons[2]  # each its own picture
     menus = [m for m in mw.menuBar().findChildren(QtGui.QMenu)  # CAM's menu: the one with the Turning Groove
              if "Turning Groove" in [a.text().replace("&", "") for a in m.actions()]]
     actions = menus[0].actions()
     texts = [a.text().replace("&", "") for a in actions]
     at = texts.index("Turning Groove")
-    assert texts[at + 1] == "Plunge grind" and actions[at + 2].isSeparator(), " | ".join(texts)
+    assert texts[at + 1:at + 3] == ["Cylinder slot", "Plunge grind"] and actions[at + 3].isSeparator(), texts
     FreeCADGui.Selection.clearSelection()
     assert grind_command.CommandPlungeGrind().IsActive()  # a Job in the document
 
