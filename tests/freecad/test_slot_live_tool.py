@@ -77,11 +77,14 @@ def test_words_that_are_not_program_words_are_refused(closing, args, message):
         _post("gsk_lathe", [job], args)
 
 
-def test_a_live_tool_without_speed_is_refused(closing):
+def test_a_live_tool_without_speed_turns_at_the_slots_default(closing):
     job, op = _helix_op(closing)
     op.ToolController.SpindleSpeed = 0
-    with pytest.raises(PostError, match="SpindleSpeed=0: the live tool of a Cylinder slot needs a speed"):
-        _post("gsk_lathe", [job], SWITCHES)
+    job.Document.recompute()
+    assert "M13 S1000" in _lines(_post("gsk_lathe", [job], SWITCHES))  # ops/slot/cutting.DEFAULT_LIVE_RPM
+    op.ToolController.SpindleSpeed = 2400
+    job.Document.recompute()
+    assert "M13 S2400" in _lines(_post("gsk_lathe", [job], SWITCHES))
 
 
 def test_posts_without_c_have_no_switch_options(closing):
