@@ -244,7 +244,7 @@ def test_cancel_of_an_existing_op_keeps_its_values_and_a_saved_op_reopens_with_i
         close_shop(doc)
 
 
-def test_the_panel_makes_a_grinding_wheel_tool_controller_in_one_click(shop):
+def test_the_panel_makes_a_grinding_wheel_tool_controller_in_one_click(shop, monkeypatch):
     doc, job, block = shop
     panel = start_command(doc, block)
     page = panel.groove_page
@@ -252,12 +252,21 @@ def test_the_panel_makes_a_grinding_wheel_tool_controller_in_one_click(shop):
     type_into(page.field("WheelWidth"), "12")
     type_into(page.field("WheelDiameter"), "150")
     settle(page)
+    asked = []  # the modal dialogs: only the wheel's speed is asked (its sizes are in the fields)
+
+    def typed(parent, title, label, *args):
+        asked.append(label)
+        return 2500.0, True
+
+    monkeypatch.setattr(QtGui.QInputDialog, "getDouble", typed)
     page.form.findChild(QtGui.QPushButton, grind_panel.NEW_WHEEL_BUTTON).click()
     settle(page)
+    assert asked == ["Speed of the grinding wheel (rpm; at most its rated speed):"]
     assert len(job.Tools.Group) == tool_controllers + 1
     tc = job.Tools.Group[-1]
     assert page.field("ToolController").currentData() == tc.Name
     assert (tc.Tool.Width.Value, tc.Tool.Diameter.Value) == (pytest.approx(12), pytest.approx(150))
+    assert (tc.SpindleSpeed, tc.SpindleDir) == (pytest.approx(2500), "Forward")
     # Its feeds are 0: the op says so until its own feeds are set.
     assert page.error == "PlungeFeed=0: no feed (the tool controller's VertFeed is 0.0): set PlungeFeed", page.error
     type_into(page.field("PlungeFeed"), "1")  # mm/s (FreeCAD's default unit schema): 60 mm/min
