@@ -291,15 +291,32 @@ def field_decimals(value: float, least: int) -> int:
     return max(least, FIELD_MAX_DECIMALS)
 
 
+SHOWN_VALUE = "grooveShownValue"  # the Qt property holding the exact value show_quantity put in a field
+SHOWN_TEXT = "grooveShownText"  # ... and the text the field showed for it
+
+
 def show_quantity(widget: object, value: float) -> None:
     """Show ``value`` (in the field's unit) in a Gui::QuantitySpinBox with as many decimals as it has. Its
-    rawValue keeps only the decimals shown (the user's preference, 2 by default), so a value from the model
-    (6.212132 mm) would reach the op rounded on OK, as a change (an override of the model's value)."""
+    rawValue keeps only the decimals shown (the user's preference, 2 by default; in the unit schema's unit:
+    5 mm in US customary shows 0.20", rawValue 5.08 mm), so the exact value and the text shown for it are kept
+    on the field: quantity_value gives the value, not its display, until the user types."""
     quantity = FreeCAD.Units.Quantity(float(value), widget.property("value").Unit)
     number_format = dict(quantity.Format)
     number_format["Precision"] = field_decimals(float(value), int(number_format["Precision"]))
     quantity.Format = number_format
     widget.setProperty("value", quantity)
+    widget.setProperty(SHOWN_VALUE, float(value))
+    widget.setProperty(SHOWN_TEXT, widget.text())
+
+
+def quantity_value(widget: object) -> float:
+    """A quantity field's value (mm, degrees): the exact value show_quantity showed while the field still shows
+    the text it showed for it (a value read from the model, the op's own: never its rounded display, written
+    back on OK as a change); otherwise what the user typed."""
+    shown = widget.property(SHOWN_VALUE)
+    if shown is not None and widget.text() == widget.property(SHOWN_TEXT):
+        return float(shown)
+    return float(widget.property("rawValue"))
 
 
 class QuantityFields:
@@ -328,4 +345,4 @@ class QuantityFields:
 
     def values(self) -> dict:
         """{property: value in mm or degrees} as the fields show them now."""
-        return {prop: float(widget.property("rawValue")) for prop, widget in self.widgets.items()}
+        return {prop: quantity_value(widget) for prop, widget in self.widgets.items()}
