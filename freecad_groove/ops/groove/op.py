@@ -278,6 +278,17 @@ class ObjectGroove(AddonOp):
             obj.FromModel = list(values)
         return model
 
+    def in_modelled_groove(self, obj: object) -> bool:
+        """Whether a picked face belongs to a groove of the model (the turning check then judges the op by the
+        model alone there)."""
+        for base, named, sub, _name in self._picked(obj):
+            try:
+                read_picked_groove([(base.Shape, sub, named.Label)])
+            except ValueError:
+                continue
+            return True
+        return False
+
     # -- deriving the grooves ---------------------------------------------------
     def _picked(self, obj: object) -> list[tuple]:
         """(part, its model object for names, "FaceN", "Label.FaceN") of every picked element."""

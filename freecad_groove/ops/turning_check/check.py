@@ -16,7 +16,10 @@ Here the Job is read into plain data:
   moves split at its comments into one run per planned groove (groove/plan.py),
   each swept with the op's blade (ObjectGroove.settings, as the tool
   controller gives it now) in the groove's plunge direction; the planned
-  finished groove and the engine's reach warnings; the feeds and speeds
+  finished groove and the engine's reach warnings; whether the groove is
+  the design's though the model does not show it (programmed by its values
+  on a plain face; never one in a face of a modelled groove: the model says
+  what the op must leave there); the feeds and speeds
   (groove/cutting.py) with the tool controller's rapid rates (HorizRapid for X,
   VertRapid for Z).
 
@@ -157,8 +160,10 @@ def op_input(op: object) -> OpInput:
         if len(runs) != len(plans):
             raise TurningCheckError("its Path has %d groove section(s) but the op plans %d groove(s): recompute it"
                                     % (len(runs), len(plans)))
+        programmed = not op.ModelGroove and not op.Proxy.in_modelled_groove(op)
         grooves = [GrooveRun([m for _n, m in run], [n for n, _m in run], tool, plan.cycle.plunge_direction(),
-                             plan.geometry.region_world(), sum(u.area for u in unreachable_regions(plan.geometry)))
+                             plan.geometry.region_world(), sum(u.area for u in unreachable_regions(plan.geometry)),
+                             programmed)
                    for run, plan in zip(runs, plans)]
         first = runs[0][0][1] if runs else Move(RAPID, 0.0, 0.0)
         return OpInput(op.Label, (first.x, first.z), grooves, _feeds(op))
