@@ -157,6 +157,7 @@ def test_the_groove_from_a_new_job_to_every_lathe_post(monkeypatch):
         press_ok(panel)
         (op,) = ops_of(job, "ObjectGroove")
         no_job_error("OK")
+        assert not op.ToolController.Tool.ViewObject.Visibility  # hidden as CAM hides its end mill
         assert "0.05 mm/rev" in op.FeedsAndSpeeds
         posts = ["sinumerik_lathe", "ab9_lathe", "fanuc_lathe", "haas_lathe", "gsk_lathe", "linuxcnc_lathe"]
         post_each(doc, job, posts, "groove")
@@ -184,6 +185,7 @@ def test_the_cylinder_slot_from_a_new_job_to_the_posts_with_a_c_axis():
         press_ok(panel)
         (op,) = ops_of(job, "ObjectCylinderSlot")
         no_job_error("OK")
+        assert not op.ToolController.Tool.ViewObject.Visibility  # CAM's own end mill, hidden by CAM
         assert op.FeedsAndSpeeds == feeds
         texts = post_each(doc, job, ["gsk_lathe", "linuxcnc_lathe"], "slot", SLOT_SWITCHES)
         assert "M13 S1000" in texts["gsk_lathe"].splitlines() and "M64 P1 S1000" in texts["linuxcnc_lathe"]
@@ -215,6 +217,7 @@ def test_the_plunge_grind_from_a_new_job_to_the_grinder_posts(monkeypatch):
         press_ok(panel)
         (op,) = ops_of(job, "ObjectPlungeGrind")
         no_job_error("OK")
+        assert not op.ToolController.Tool.ViewObject.Visibility  # no 200 mm disc over the part
         texts = post_each(doc, job, ["ab9_grind", "linuxcnc_grind"], "grind")
         assert "S1800 M03" in texts["ab9_grind"] and "S1800 M3" in texts["linuxcnc_grind"], texts
         second_job(doc, job)
