@@ -14,6 +14,7 @@ from gui_helpers import (
     process,
     roomy_task_panel,
     screenshot,
+    shown_message,
     task_button,
     type_into,
     version,
@@ -22,7 +23,7 @@ from gui_helpers import (
 from PySide import QtGui
 
 from freecad_groove.gui import qt_wrappers
-from freecad_groove.gui.widgets import ERROR_LABEL, INVALID_PROPERTY, WARNED_PROPERTY, WARNING_LABEL
+from freecad_groove.gui.widgets import INVALID_PROPERTY, WARNED_PROPERTY, WARNING_LABEL
 from freecad_groove.ops.grind.gui import command as grind_command
 from freecad_groove.ops.grind.gui import panel as grind_panel
 from freecad_groove.ops.grind.gui import view as grind_view
@@ -142,8 +143,7 @@ def test_an_invalid_value_refuses_ok_with_the_ops_message(shop):
     settle(page)
     message = "CrossPick=12: must be at most the wheel's width 10 (the strokes would leave ridges)"
     assert page.error == message
-    label = page.form.findChild(QtGui.QLabel, ERROR_LABEL)
-    shown, marked = label.isVisible() and label.text() == message, \
+    shown, marked = shown_message(page.form) == message, \
         page.field("CrossPick").property(INVALID_PROPERTY) is True
     ok_enabled = task_button(panel, QtGui.QDialogButtonBox.Ok).isEnabled()
     assert shown and marked and not ok_enabled
