@@ -146,14 +146,21 @@ class ObjectGroove(AddonOp):
         the op since (planning checks every link rapid against the model, the
         costly part of posting); after reopening the document, the plans it
         saved while their fingerprint still matches (cache.py); otherwise
-        a fresh plan."""
-        if getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)):
+        a fresh plan, kept (with its fingerprint, for the saved document too)
+        while the op stays untouched: a post after reopening a document whose
+        saved plans no longer match, or that saved none, plans once, not at
+        every post."""
+        untouched = getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State))
+        if untouched:
             plans = getattr(self, "_plans", None)
             if plans is None:
                 plans = self._restored_plans(obj)
             if plans is not None:
                 return plans
-        return self.plan(obj)
+        plans = self.plan(obj)
+        if untouched:
+            self._keep_plans(obj, plans)
+        return plans
 
     # -- the plans kept in the document (cache.py) ---------------------------
     def _keep_plans(self, obj: object, plans: list[GroovePlan]) -> None:
