@@ -22,6 +22,10 @@ about the Z axis, in mm)::
     Z 65..75   cone R18 -> R14 (shrinking toward +Z, ANGC 158.2 degrees)
     Z 50..75   bore R8, open at the +Z end
 
+The Job's stock is the part itself (CAM's stock from an existing solid: a
+clone of the Shaft): the demo only grooves, on a part already turned to its
+contour, so its own turning check (``verify_job``) runs clean on it.
+
 The Job holds one tool controller, "TC: Grooving blade 3 mm" (tool 3,
 800 rpm forward, 40 mm/min; its tool bit carries the blade's Width 3 mm and
 CornerRadius 0.2 mm, which the Groove ops read), and five Groove ops, all
@@ -176,14 +180,30 @@ def _remove_tree(doc, obj):
             doc.removeObject(name)
 
 
+def turned_stock(doc, job, part):
+    """The Job's stock made the part itself, as CAM's "existing solid" stock makes it (a clone of ``part``):
+    what the demo's grooving ops start from."""
+    import Path.Main.Job as PathJob
+    import Path.Main.Stock as PathStock
+
+    old = job.Stock
+    stock = PathJob.createResourceClone(job, part, "Stock", "Stock")
+    PathStock.SetupStockObject(stock, PathStock.StockType.Unknown)
+    stock.Proxy.execute(stock)
+    job.Stock = stock
+    if old is not None:
+        doc.removeObject(old.Name)
+
+
 def make_job(doc, part):
-    """A CAM Job for ``part`` with one tool controller for a 3 mm grooving
-    blade (replacing the default one the Job makes): (job, tool controller)."""
+    """A CAM Job for ``part`` with the part as its stock (turned_stock) and one tool controller for a 3 mm
+    grooving blade (replacing the default one the Job makes): (job, tool controller)."""
     import Path.Main.Job as PathJob
     import Path.Tool.Controller as PathToolController
 
     job = PathJob.Create("Job", [part])
     job.Label = "Demo part"
+    turned_stock(doc, job, part)
     default = list(job.Tools.Group)
     tc = PathToolController.Create("TC: Grooving blade 3 mm", toolNumber=TOOL_NUMBER, assignViewProvider=False)
     job.Proxy.addToolController(tc)

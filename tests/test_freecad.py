@@ -131,11 +131,15 @@ def test_freecad_gui_suite(label, tmp_path):
     # Only what this FreeCAD lacks may skip (a reason saying "FreeCAD 1.0 has no ...").
     skipped = [s for s in result["skipped"] if "FreeCAD %s has no " % label not in s["reason"]]
     assert not skipped, "%s: skipped %s" % (summary, skipped)
-    # the LinuxCNC program CAM's Post Process command wrote for a new Job (test_new_user_post.py)
-    posted = tmp_path / "posted" / "new_job_linuxcnc.ngc"
-    assert posted.exists(), "%s: CAM_Post wrote no LinuxCNC program" % summary
+    # the LinuxCNC programs CAM's Post Process command wrote for a new Job (test_new_user_post.py), and for each
+    # op's first hour (test_first_hour.py: the groove, the slot with its C axis, the grind)
+    names = ["new_job_linuxcnc.ngc"] + ["first_hour_%s.ngc" % what for what in
+                                        ("groove_linuxcnc_lathe", "slot_linuxcnc_lathe", "grind_linuxcnc_grind")]
     rs274.require_rs274()
-    text = posted.read_text()
-    tools = {int(t) for t in re.findall(r"^T(\d+) M6", text, re.M)}
-    canon = rs274.run_rs274(text, timeout=120, tool_table=tools)  # RS274Error when rs274 refuses it
-    assert any(move[0] == "G1" for move in canon), text
+    for name in names:
+        posted = tmp_path / "posted" / name
+        assert posted.exists(), "%s: CAM_Post wrote no %s" % (summary, name)
+        text = posted.read_text()
+        tools = {int(t) for t in re.findall(r"^T(\d+) M6", text, re.M)}
+        canon = rs274.run_rs274(text, timeout=120, tool_table=tools)  # RS274Error when rs274 refuses it
+        assert any(move[0] == "G1" for move in canon), (name, text)

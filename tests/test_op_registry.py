@@ -9,6 +9,7 @@ the declared class.
 
 import ast
 import os
+import re
 
 import pytest
 from conftest import ROOT
@@ -21,7 +22,7 @@ DECLARED = {
     "groove": ("Groove", "op.ObjectGroove", "gui.view.ViewProviderGroove", "gui.command.CommandGroove",
                "groove.svg"),
     "slot": ("CylinderSlot", "op.ObjectCylinderSlot", "gui.view.ViewProviderCylinderSlot",
-             "gui.command.CommandCylinderSlot", "groove.svg"),
+             "gui.command.CommandCylinderSlot", "cylinder_slot.svg"),
     "grind": ("PlungeGrind", "op.ObjectPlungeGrind", "gui.view.ViewProviderPlungeGrind",
               "gui.command.CommandPlungeGrind", "plunge_grind.svg"),
 }
@@ -69,6 +70,18 @@ def test_each_op_declares_its_parts_where_they_are(folder):
         assert defines(module, defined), kind.path(part)
     assert kind.path(kind.proxy) == "freecad_groove.ops.%s.op.%s" % (folder, proxy.split(".")[-1])
     assert os.path.isfile(os.path.join(ROOT, "resources", "icons", kind.icon))
+
+
+def test_every_command_of_the_add_on_has_its_own_icon():
+    """Each op's command and the Check turning command show their own picture (the Cylinder slot and Check
+    turning borrowed the Groove's), each an SVG file of resources/icons."""
+    check = re.search(r'icon_path\("([^"]+)"\)', open(os.path.join(ROOT, "freecad_groove", "ops", "turning_check",
+                                                                   "gui", "__init__.py")).read()).group(1)
+    icons = [kind.icon for kind in ops.KINDS] + [check]
+    assert len(set(icons)) == len(icons), icons
+    for icon in icons:
+        with open(os.path.join(ROOT, "resources", "icons", icon)) as f:
+            assert f.read().lstrip().startswith("<svg"), icon
 
 
 @pytest.mark.parametrize("stored", sorted(SHIMS))

@@ -36,22 +36,27 @@ def make_bit(doc: object, shape_file: str, load_shape: Callable, proxy_class: ob
              label: str) -> object:
     """A tool bit in ``doc`` from ``shape_file`` with the shape ``values``
     ({parameter: quantity}): in FreeCAD 1.1 (``proxy_class`` not None) an
-    asset bit of ``load_shape()``, else a plain Bit of the file."""
+    asset bit of ``load_shape()``, else a plain Bit of the file. Hidden in the
+    3D view, as CAM hides the end mill of a new Job's tool controller (shown,
+    a wheel's disc or a blade's body stands at the origin over the part)."""
     with active_document(doc):
         if proxy_class is not None:
             shape = load_shape()
             shape.set_parameters(**values)
             toolbit = proxy_class(shape)
             toolbit.label = label
-            return toolbit.attach_to_doc(doc, label=label)
-        import Path.Tool.Bit as PathToolBit
+            bit = toolbit.attach_to_doc(doc, label=label)
+        else:
+            import Path.Tool.Bit as PathToolBit
 
-        bit = PathToolBit.Factory.Create("ToolBit", shape_file)
-        for name, value in values.items():
-            setattr(bit, name, value)
-        bit.Proxy._updateBitShape(bit)  # push the values into the body
-        bit.Label = label
-        return bit
+            bit = PathToolBit.Factory.Create("ToolBit", shape_file)
+            for name, value in values.items():
+                setattr(bit, name, value)
+            bit.Proxy._updateBitShape(bit)  # push the values into the body
+            bit.Label = label
+    if getattr(bit, "ViewObject", None) is not None:
+        bit.ViewObject.Visibility = False
+    return bit
 
 
 def make_tool_controller(job: object, bit: object, name: str, tool_number: object = None) -> object:

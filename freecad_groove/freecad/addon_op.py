@@ -6,7 +6,9 @@ ones), and no milling depths; the one-line report of an op that cannot cut
 (report_error, op_error) and the Path comment it leaves; an op seen with a
 task panel's values (WithValues); making an op with its view provider
 (create_op) and registering its kind with CAM's SetupSheet (register_op_kind:
-when its proxy class is made, from its declaration, ops/registry.py).
+when its proxy class is made, from its declaration, ops/registry.py), with
+the prototype CAM's SetupSheet editor reads its defaults from
+(setup_prototype).
 
 Not stored in documents (each op's own class is): free to move.
 
@@ -64,10 +66,13 @@ class AddonOp(PathOp.ObjectOp):
     declaration as KIND (whose name is the op's kind, which CAM's SetupSheet
     registry looks it up by, not the object's name) and its kind joins CAM's
     SetupSheet registry (register_op_kind). It sets FEATURES (names of
-    Path.Op.Base feature flags) and _add_missing_properties."""
+    Path.Op.Base feature flags), DECLARED_PROPERTIES and _add_missing_properties."""
 
     KIND = None  # the op's declaration (registry.OpKind), set when the subclass is made
     FEATURES = ("FeatureTool", "FeatureBaseFaces", "FeatureCoolant")
+    # The op's own properties as declared, (type, name, group, tooltip, default) each: what a new op gets, and
+    # what CAM's SetupSheet editor shows of those the op's SetupProperties() name (setup_prototype).
+    DECLARED_PROPERTIES: tuple = ()
 
     def __init_subclass__(cls, **kwargs):
         super().__init_subclass__(**kwargs)
@@ -77,7 +82,7 @@ class AddonOp(PathOp.ObjectOp):
                                                                                           cls.__qualname__))
         if kind is not None:  # a subclass of a declared proxy keeps its kind
             cls.KIND = kind
-            register_op_kind(kind)
+            register_op_kind(kind, cls)
 
     def __init__(self, obj: object, name: str, parentJob: object = None, tool_controller: object = None):
         # The base class picks a tool controller while it is built; headless,
@@ -144,11 +149,46 @@ def create_op(proxy_class: type, name: str, obj: object, parent_job: object, too
     return obj
 
 
-def register_op_kind(kind: registry.OpKind) -> None:
+def register_op_kind(kind: registry.OpKind, proxy_class: type) -> None:
     """Register the op kind ``kind`` with CAM's SetupSheet, as FreeCAD's own ops are: a Job applies its
     SetupSheet to every new op by kind and logs "SetupSheet has no support for ..." for an unregistered one.
-    The SetupSheet editor's prototype of the op is the one it gives (none of the ops adds properties to it);
-    the op's SetupSheet properties are read from its op module when asked for."""
+    CAM's SetupSheet editor (the Job panel's "Operations" defaults, read on every Job panel's OK) asks the
+    kind's prototype for each property its SetupProperties() name: setup_prototype gives it them."""
     import Path.Base.SetupSheet as PathSetupSheet
 
-    PathSetupSheet.RegisterOperation(kind.name, lambda name, proto: proto, lambda: kind.load(kind.setup_properties)())
+    def setup_properties() -> list:  # read when asked: the op's module is still loading now
+        return kind.load(kind.setup_properties)()
+
+    PathSetupSheet.RegisterOperation(kind.name, lambda name, proto: setup_prototype(proxy_class, proto,
+                                                                                   setup_properties()),
+                                     setup_properties)
+
+
+def prototype_value(type_id: str, default: object) -> object:
+    """A declared default as CAM's prototype property holds it: lengths and angles as Quantities (its editor
+    and display read them so), an enumeration as its choices (then its first is set)."""
+    if type_id in ("App::PropertyLength", "App::PropertyDistance"):
+        return FreeCAD.Units.Quantity(float(default), FreeCAD.Units.Length)
+    if type_id == "App::PropertyAngle":
+        return FreeCAD.Units.Quantity(float(default), FreeCAD.Units.Angle)
+    return default
+
+
+def setup_prototype(proxy_class: type, proto: object, names: list) -> object:
+    """CAM's SetupSheet prototype ``proto`` (Path/Base/SetupSheetOpPrototype.OpPrototype) of the op
+    ``proxy_class``: each property of ``names`` as the op declares it (type, group, tooltip), its value the
+    op's default. A name the op does not declare is a bug of the op (ValueError naming it)."""
+    declared = {p[1]: p for p in proxy_class.DECLARED_PROPERTIES}
+    missing = [name for name in names if name not in declared]
+    if missing:
+        raise ValueError("%s: SetupProperties() names %s, which it does not declare"
+                         % (proxy_class.__qualname__, ", ".join(missing)))
+    for name in names:
+        type_id, _name, group, tooltip, default = declared[name]
+        proto.addProperty(type_id, name, group, tooltip)
+        if type_id == "App::PropertyEnumeration":
+            setattr(proto, name, list(default))
+            default = default[0]
+        if default is not None:
+            setattr(proto, name, prototype_value(type_id, default))
+    return proto

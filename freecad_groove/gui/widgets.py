@@ -10,6 +10,7 @@ objects are typed ``object``.
 """
 
 import os
+import re
 
 import FreeCAD
 import FreeCADGui
@@ -38,11 +39,12 @@ def load_form(name: str) -> object:
 
 
 FIELD_SAMPLE = "00.00 mm"  # a field always shows this much text whole
-FIELD_FRAME = 30  # px: a spin box's frame, margins and up/down buttons beside its text
+FIELD_FRAME = 30  # px: a spin box's frame, margins and up/down buttons beside its text (when its style cannot say)
+EDIT_MARGINS = 6  # px: a line edit's margins beside its text and the cursor
 BUTTON_PADDING = 16  # px: a push button's frame and margins beside its text
 COMBO_WIDE = 110  # px: a combo box wider than this (a tool controller's name) may elide
 COMBO_CHARS = 8  # its own width then, in characters
-FORM_ROW = 190  # px: a form row in a group box of 1.0's default combo view
+FORM_ROW = 180  # px: a form row in a group box of 1.0's default combo view
 WRAP_WIDER_THAN = 200  # px: a label whose one line is wider than this wraps
 
 
@@ -54,14 +56,18 @@ def fit_narrow_docks(form: object) -> None:
     A spin box's size hint is the text of its largest value with the unit
     (wider than any real value), so wide spin boxes take the width their row
     leaves, but never less than FIELD_SAMPLE; a form's labels go above its
-    fields when a row does not fit 1.0's dock; long one-line labels wrap; push buttons may
+    fields when a row does not fit 1.0's dock, and two fields side by side (a
+    corner's kind and size) one above the other; long one-line labels wrap; push buttons may
     shrink to their text (the style's 80 px minimum makes a row of three wider
     than the dock)."""
     for box in form.findChildren(QtGui.QAbstractSpinBox):
-        least = text_width(box, FIELD_SAMPLE) + FIELD_FRAME
+        least = text_width(box, FIELD_SAMPLE) + spin_frame(box)
         if box.sizeHint().width() > least or box.sizePolicy().horizontalPolicy() == QtGui.QSizePolicy.Ignored:
             box.setSizePolicy(QtGui.QSizePolicy.Ignored, box.sizePolicy().verticalPolicy())
-            box.setMinimumWidth(least)
+        box.setMinimumWidth(max(least, box.minimumWidth()))  # never less (1.0's size hint forgets its padding)
+    for layout in form.findChildren(QtGui.QHBoxLayout):  # a corner's kind and size: one above the other
+        if layout.minimumSize().width() > FORM_ROW:
+            layout.setDirection(QtGui.QBoxLayout.TopToBottom)
     for layout in form.findChildren(QtGui.QFormLayout):
         choose_form_rows(layout)
     for label in form.findChildren(QtGui.QLabel):
@@ -78,6 +84,32 @@ def fit_narrow_docks(form: object) -> None:
             fit_combo(combo)
     for view in form.findChildren(QtGui.QAbstractItemView):  # FreeCAD's face list would stay 256 px wide
         view.setSizePolicy(QtGui.QSizePolicy.Expanding, view.sizePolicy().verticalPolicy())
+
+
+def spin_frame(box: object) -> int:
+    """The px of a spin box beside its text: its frame and buttons as its style draws them, the line edit's 2 px
+    each side, and the padding its style sheet keeps (edit_padding); FIELD_FRAME when the style cannot say."""
+    try:
+        option = QtGui.QStyleOptionSpinBox()
+        option.initFrom(box)
+        option.rect = QtCore.QRect(0, 0, 200, max(box.sizeHint().height(), 20))
+        option.frame = box.hasFrame()
+        option.buttonSymbols = box.buttonSymbols()
+        option.subControls = QtGui.QStyle.SC_SpinBoxFrame | QtGui.QStyle.SC_SpinBoxEditField | \
+            QtGui.QStyle.SC_SpinBoxUp | QtGui.QStyle.SC_SpinBoxDown
+        field = box.style().subControlRect(QtGui.QStyle.CC_SpinBox, option, QtGui.QStyle.SC_SpinBoxEditField, box)
+        frame = 200 - field.width() + EDIT_MARGINS
+    except Exception:  # noqa: BLE001 - a style or binding that cannot answer: the measured default
+        frame = FIELD_FRAME
+    return frame + edit_padding(box)
+
+
+def edit_padding(box: object) -> int:
+    """The px a spin box's line edit keeps free right of its text by its style sheet (FreeCAD 1.0's quantity
+    fields: 15 px for the expression icon, ``QLineEdit { padding-right: 15px }``), 0 for none."""
+    edit = box.findChild(QtGui.QLineEdit)
+    found = re.search(r"padding-right:\s*(\d+)px", edit.styleSheet()) if edit is not None else None
+    return int(found.group(1)) if found else 0
 
 
 def fit_combo(combo: object) -> None:
@@ -291,15 +323,32 @@ def field_decimals(value: float, least: int) -> int:
     return max(least, FIELD_MAX_DECIMALS)
 
 
+SHOWN_VALUE = "grooveShownValue"  # the Qt property holding the exact value show_quantity put in a field
+SHOWN_TEXT = "grooveShownText"  # ... and the text the field showed for it
+
+
 def show_quantity(widget: object, value: float) -> None:
     """Show ``value`` (in the field's unit) in a Gui::QuantitySpinBox with as many decimals as it has. Its
-    rawValue keeps only the decimals shown (the user's preference, 2 by default), so a value from the model
-    (6.212132 mm) would reach the op rounded on OK, as a change (an override of the model's value)."""
+    rawValue keeps only the decimals shown (the user's preference, 2 by default; in the unit schema's unit:
+    5 mm in US customary shows 0.20", rawValue 5.08 mm), so the exact value and the text shown for it are kept
+    on the field: quantity_value gives the value, not its display, until the user types."""
     quantity = FreeCAD.Units.Quantity(float(value), widget.property("value").Unit)
     number_format = dict(quantity.Format)
     number_format["Precision"] = field_decimals(float(value), int(number_format["Precision"]))
     quantity.Format = number_format
     widget.setProperty("value", quantity)
+    widget.setProperty(SHOWN_VALUE, float(value))
+    widget.setProperty(SHOWN_TEXT, widget.text())
+
+
+def quantity_value(widget: object) -> float:
+    """A quantity field's value (mm, degrees): the exact value show_quantity showed while the field still shows
+    the text it showed for it (a value read from the model, the op's own: never its rounded display, written
+    back on OK as a change); otherwise what the user typed."""
+    shown = widget.property(SHOWN_VALUE)
+    if shown is not None and widget.text() == widget.property(SHOWN_TEXT):
+        return float(shown)
+    return float(widget.property("rawValue"))
 
 
 class QuantityFields:
@@ -328,4 +377,4 @@ class QuantityFields:
 
     def values(self) -> dict:
         """{property: value in mm or degrees} as the fields show them now."""
-        return {prop: float(widget.property("rawValue")) for prop, widget in self.widgets.items()}
+        return {prop: quantity_value(widget) for prop, widget in self.widgets.items()}

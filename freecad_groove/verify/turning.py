@@ -48,7 +48,10 @@ class GrooveRun:
     (its link rapids included): x radius, z. ``commands``: the Path command
     number (1-based) of each move; ``region``: the planned finished groove,
     world (x, z); ``reach_warning``: mm^2 the engine's reach warnings say
-    the blade leaves in it."""
+    the blade leaves in it; ``programmed``: the groove is the design's though
+    the model may not show it (programmed by its values on a plain face of
+    the part); False: the model alone says what the op must leave (a groove
+    in a face of a modelled groove is never the design's)."""
 
     moves: list[Move]
     commands: list[int]
@@ -56,6 +59,7 @@ class GrooveRun:
     plunge: str
     region: list[Point]
     reach_warning: float = 0.0
+    programmed: bool = True
 
 
 @dataclass(frozen=True)
@@ -232,8 +236,9 @@ def check_ops(ops: list[OpInput], stock: Geometry, model: Geometry, tol: float =
               notes: Optional[list[str]] = None, attached: Attached = None) -> JobCheck:
     """Sweep ``ops`` in order over ``stock`` (each op starts from what the
     previous ones left) and judge them against ``model``, the part's section;
-    ``attached``: see sweep.simulate."""
-    grooves = [groove_region(run.region) for op in ops if not op.error for run in op.grooves]
+    ``attached``: see sweep.simulate. Only grooves ``programmed`` on plain faces join the part's design
+    (part_to_leave): no op's own planned groove excuses what it cuts into the model elsewhere."""
+    grooves = [groove_region(run.region) for op in ops if not op.error for run in op.grooves if run.programmed]
     part = part_to_leave(model, grooves)
     checks, standing = [], stock
     for op in ops:

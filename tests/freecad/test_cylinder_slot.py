@@ -251,12 +251,40 @@ def test_a_chain_of_edges_is_one_path_whatever_their_direction(closing):
     assert [c.Parameters.get("Z") for c in reversed_first.Path.Commands if c.Name == "G0"][1] == 45.0  # from 45
 
 
-def test_no_feed_is_an_error_not_a_default(closing):
+def test_a_new_jobs_tool_controller_mills_the_slot_at_the_documented_defaults(closing):
+    # a new Job's default tool controller: feed 0, speed 0 (ops/slot/cutting.py: 50 mm/min, live tool 1000 rpm)
     doc, shaft, line, job = _shop(_helix())
     closing.append(doc)
-    job.Tools.Group[0].HorizFeed = 0
+    tc = job.Tools.Group[0]
+    tc.HorizFeed, tc.SpindleSpeed = 0, 0
     op = make_cylinder_slot(job, (shaft, "Face1"), [(line, "Edge1")], depth=1)
-    assert op_error(op).startswith("HorizFeed=0.0: the tool controller's feed must be greater than 0")
+    assert op_error(op) is None, op_error(op)
+    assert op.FeedsAndSpeeds == ("feed 50 mm/min (default: the tool controller's HorizFeed is 0); live tool 1000 rpm "
+                                 "CW (default: the tool controller's SpindleSpeed is 0)")
+    switches = "--c-axis-on M14 --c-axis-off M15 --live-tool-cw M13 --live-tool-stop M25"
+    text = _post("gsk_lathe", [job], "--native-cycles " + switches)
+    assert "M13 S1000" in text.splitlines() and "G1 Z30. C360. F50." in text, text
+    defaulted = _words(op)
+    tc.HorizFeed, tc.SpindleSpeed = "50 mm/min", 1000  # the same, given
+    doc.recompute()
+    assert _words(op) == defaulted
+    tc.HorizFeed, tc.SpindleSpeed = "90 mm/min", 1500
+    doc.recompute()
+    assert op.FeedsAndSpeeds == ("feed 90 mm/min (the tool controller's HorizFeed); live tool 1500 rpm CW (the tool "
+                                 "controller's SpindleSpeed)")
+
+
+@pytest.mark.parametrize("name, value, message", [
+    ("HorizFeed", -1, "HorizFeed=-60.0: the tool controller's HorizFeed must be a number, 0 or more (0: the "
+     "default)"),
+    ("SpindleSpeed", 1e6, "SpindleSpeed=1e+06: the live tool's speed must be at most 99999 rpm"),
+])
+def test_a_feed_below_zero_or_a_speed_too_high_is_an_error_naming_it(closing, name, value, message):
+    doc, shaft, line, job = _shop(_helix())
+    closing.append(doc)
+    setattr(job.Tools.Group[0], name, value)
+    op = make_cylinder_slot(job, (shaft, "Face1"), [(line, "Edge1")], depth=1)
+    assert op_error(op) == message and op.FeedsAndSpeeds == ""
 
 
 def test_gsk_refuses_inches(closing):

@@ -74,3 +74,30 @@ def test_a_depth_overridden_1mm_deeper_than_the_model_is_a_gouge_naming_the_op(s
     assert check.summary().startswith(deep.Label + ": PROBLEMS") and "GOUGE" in check.summary()
     assert "TooDeep: PROBLEMS" in result.summary() and "FromModel: ok" in result.summary()
 
+
+
+def _base_face(part):
+    """The modelled groove's base face (the R18 cylinder)."""
+    return next("Face%d" % (i + 1) for i, face in enumerate(part.Shape.Faces)
+                if hasattr(face.Surface, "Radius") and face.Surface.Radius == pytest.approx(BASE_RADIUS))
+
+
+def test_a_groove_typed_into_the_modelled_grooves_base_is_a_gouge_and_excuses_no_other(shop):
+    # issue 21: the base face picked without "Groove from the model": a 2 x 1 groove typed in cuts below the
+    # finished base. The check took that op's planned groove as part of the design: "ok, no gouge", and another
+    # op's gouge there shrank by it.
+    _doc, part, job, _tc = shop
+    typed = make_groove(job, (part, _base_face(part)), name="Typed", model_groove=False, position=1, width=2,
+                        depth=1, **BLADE)
+    assert op_error(typed) is None and not typed.ModelGroove, op_error(typed)
+    result = verify_job(job)
+    check = result.ops[0]
+    assert not check.ok and check.gouge_depth == pytest.approx(1.0, abs=1e-3), result.summary()
+    assert check.gouge_area == pytest.approx(2.0, abs=0.01) and check.gouge_at[0] == pytest.approx(BASE_RADIUS - 1,
+                                                                                                   abs=0.01)
+    # an op 1 mm too deep over the whole base, run before it: its whole 4 x 1 below the base is its gouge
+    deep = model_groove_op(shop, "TooDeep", model_groove=True, depth=CALL.depg + 1)
+    job.Operations.Group = [deep, typed]
+    result = verify_job(job)
+    by_label = {check.label: check for check in result.ops}
+    assert by_label[deep.Label].gouge_area == pytest.approx(CALL.widg * 1.0, abs=0.01), result.summary()

@@ -220,3 +220,53 @@ def test_an_op_changed_while_closed_plans_again_its_siblings_do_not(shop, tmp_pa
         assert plan_calls[0] == calls + 1
         assert texts[1] == _fresh_post(ops[1])
         assert [_post(op) for op in ops] == texts
+
+
+def test_no_post_after_reopening_plans_again(shop, tmp_path, plan_calls):
+    # issue 21: posts after save, close and reopen planned every op again, at every post
+    names = [op.Name for op in _three_ops(shop)]
+    with reopened(shop[0], tmp_path / "a.FCStd") as doc2:
+        ops = [doc2.getObject(name) for name in names]
+        calls = plan_calls[0]
+        for _post_again in range(3):
+            demo.load_post("linuxcnc").export([ops[0].ToolController] + ops, "-", "")
+        assert plan_calls[0] == calls
+
+
+@pytest.mark.parametrize("change", [_change_width, _change_tool_controller], ids=lambda f: f.__name__)
+def test_plans_made_after_reopening_are_kept_for_the_next_posts(shop, tmp_path, plan_calls, change):
+    # an input changed while the document was closed: the first post plans each op it touches once, the
+    # next posts reuse those plans (they planned every op again at every post)
+    ops = _three_ops(shop)
+    names, job_name = [op.Name for op in ops], shop[2].Name
+    with reopened(shop[0], tmp_path / "a.FCStd") as doc2:
+        ops = [doc2.getObject(name) for name in names]
+        change(ops[0], doc2.getObject(job_name).Model.Group[0])
+        for obj in doc2.Objects:  # as a document saved with the new value and not recomputed opens
+            obj.purgeTouched()
+        post = demo.load_post("linuxcnc")
+        calls = plan_calls[0]
+        first = post.export([ops[0].ToolController] + ops, "-", "")
+        planned = plan_calls[0] - calls
+        assert 1 <= planned <= len(ops)
+        assert post.export([ops[0].ToolController] + ops, "-", "") == first
+        assert post.export([ops[0].ToolController] + ops, "-", "") == first
+        assert plan_calls[0] - calls == planned
+        doc2.saveAs(str(tmp_path / "b.FCStd"))  # saved with the plans made after reopening
+    with opened(str(tmp_path / "b.FCStd")) as doc3:
+        ops = [doc3.getObject(name) for name in names]
+        calls = plan_calls[0]
+        assert demo.load_post("linuxcnc").export([ops[0].ToolController] + ops, "-", "") == first
+        assert plan_calls[0] == calls
+
+
+@pytest.mark.parametrize("path", ["demo_part_saved_at_bfb45ff.FCStd"])
+def test_a_document_saved_before_plans_once_then_reuses_them(path, plan_calls):
+    with opened(DATA + "/" + path) as saved:
+        ops = [obj for obj in saved.Objects if isinstance(getattr(obj, "Proxy", None), groove_op.ObjectGroove)]
+        post = demo.load_post("linuxcnc")
+        calls = plan_calls[0]
+        first = post.export([ops[0].ToolController] + ops, "-", "")
+        assert plan_calls[0] - calls == len(ops)  # it saved no plans
+        assert post.export([ops[0].ToolController] + ops, "-", "") == first
+        assert plan_calls[0] - calls == len(ops)

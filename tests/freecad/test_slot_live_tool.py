@@ -2,10 +2,13 @@
 posted text; inside FreeCAD 1.1 and 1.0. The op: the helix of test_cylinder_slot.py (tool controller
 SpindleSpeed 1000). LinuxCNC programs with the switches go through rs274 in tests/test_slot_programs.py."""
 
+import re
+
 import pytest
 from test_cylinder_slot import _helix_op, _post
 
 from freecad_groove.freecad.posts import PostError
+from freecad_groove.ops.slot.op import op_error
 
 SWITCHES = "--c-axis-on M14 --c-axis-off M15 --live-tool-cw M13 --live-tool-ccw M23 --live-tool-stop M25"
 
@@ -74,14 +77,56 @@ def test_words_that_are_not_program_words_are_refused(closing, args, message):
         _post("gsk_lathe", [job], args)
 
 
-def test_a_live_tool_without_speed_is_refused(closing):
+def test_a_live_tool_without_speed_turns_at_the_slots_default(closing):
     job, op = _helix_op(closing)
     op.ToolController.SpindleSpeed = 0
-    with pytest.raises(PostError, match="SpindleSpeed=0: the live tool of a Cylinder slot needs a speed"):
-        _post("gsk_lathe", [job], SWITCHES)
+    job.Document.recompute()
+    assert "M13 S1000" in _lines(_post("gsk_lathe", [job], SWITCHES))  # ops/slot/cutting.DEFAULT_LIVE_RPM
+    op.ToolController.SpindleSpeed = 2400
+    job.Document.recompute()
+    assert "M13 S2400" in _lines(_post("gsk_lathe", [job], SWITCHES))
 
 
 def test_posts_without_c_have_no_switch_options(closing):
     job, op = _helix_op(closing)
     with pytest.raises(PostError, match="unrecognized arguments: --c-axis-on M14"):
         _post("fanuc_lathe", [job], "--c-axis-on M14")
+
+
+def _cam_post(job, name, args):
+    """The program CAM's Post Process command writes: its post list (fixture, tool controller, op: the
+    PostProcessorFactory's class, as CAM_Post runs it), one section."""
+    from Path.Post.Processor import PostProcessorFactory
+
+    job.PostProcessorArgs = args
+    sections = PostProcessorFactory.get_post_processor(job, name).export()
+    assert sections is not None and len(sections) == 1, sections
+    return sections[0][1]
+
+
+@pytest.mark.parametrize("name", ["gsk_lathe", "linuxcnc_lathe"])
+def test_the_main_spindle_is_never_started_for_a_slot_posted_as_cams_post_command_lists_it(closing, name):
+    # CAM's list puts the tool controller before the op: its main spindle start (S1000 M03) and, at once, the
+    # stop the slot needs (M05) were written before the C axis switch
+    job, op = _helix_op(closing)
+    lines = _lines(_cam_post(job, name, SWITCHES))
+    tool = next(i for i, line in enumerate(lines) if line.startswith("T"))
+    assert lines[tool].startswith(("T0101", "T1 M6")), lines
+    spindle = [line for line in lines if re.search(r"\b(M0?[345]|S\d+ M|G97|G96)\b", line)]
+    assert spindle == [], lines
+    assert lines[tool + 1:].index("M14") < lines[tool + 1:].index("M13 S1000")
+
+
+def test_after_a_groove_the_main_spindle_is_stopped_before_the_slot(closing):
+    from freecad_groove import make_groove
+
+    job, op = _helix_op(closing)
+    shaft = job.Model.Group[0]
+    groove = make_groove(job, (shaft, "Face1"), width=4, depth=1, position=3, tool_width=3,
+                         tool_controller=op.ToolController)
+    assert op_error(groove) is None, op_error(groove)
+    job.Operations.Group = [groove, op]
+    job.Document.recompute()
+    lines = _lines(_cam_post(job, "linuxcnc_lathe", SWITCHES))
+    start, stop, c_on = _index(lines, "G97 S"), lines.index("M5"), lines.index("M14")
+    assert lines[start].endswith("M3") and start < stop < c_on, lines

@@ -115,3 +115,57 @@ def test_without_shapely_one_clear_message(shop, monkeypatch):
 def test_not_a_job_is_one_clear_message(shop, shapely):
     with pytest.raises(TurningCheckError, match="is not a CAM Job"):
         verify_job(shop[1])
+
+
+def test_the_part_as_turned_is_the_stock_a_grooving_op_assumes(shop, shapely):
+    # the shaft's R20 cylinder from Z10 to Z30 is its largest radius: a bar R25 around the part stands where
+    # the op's rapids go down to the groove (the op assumes the part turned to its contour first)
+    doc, shaft, job, _tc = shop
+    old = job.Stock
+    job.Stock = PathStock.CreateCylinder(job, 25.0, 60.0, FreeCAD.Placement())
+    doc.removeObject(old.Name)
+    doc.recompute()
+    op = cylinder_groove(shop)
+    on_bar = verify_job(job)
+    assert on_bar.ops[0].rapid_hits and on_bar.notes[0].startswith("stock: a bar R25.000"), on_bar.summary()
+    turned = verify_job(job, stock="turned")
+    check = turned.ops[0]
+    assert turned.ok and not check.rapid_hits, turned.summary()
+    assert turned.notes[0] == "stock: the part as turned (the model's contour plus the material of the ops' " \
+                              "planned grooves)"
+    assert check.removed == pytest.approx(4 * 2 - 2 * FILLET, abs=1e-3)  # the groove, as on the R20 bar
+    assert check.label == op.Label
+
+
+def test_a_stock_made_from_an_existing_solid_is_its_own_section(shop, shapely):
+    from freecad_groove.demo import turned_stock
+
+    doc, shaft, job, _tc = shop
+    turned_stock(doc, job, shaft)  # CAM's stock from an existing solid: the part itself
+    doc.recompute()
+    cylinder_groove(shop)
+    result = verify_job(job)
+    assert result.ok and result.notes[0].startswith("stock: the Job's stock"), result.summary()
+    assert result.notes[0].endswith("its own section")
+
+
+def test_an_unknown_stock_choice_is_one_clear_message(shop, shapely):
+    with pytest.raises(TurningCheckError, match=r"^verify_job\(\): stock='bar': must be 'job' \(the Job's stock\) "
+                                                r"or 'turned' \(the part as turned\)$"):
+        verify_job(shop[2], stock="bar")
+
+
+def test_the_demo_job_runs_its_own_turning_check_clean(closing, shapely):
+    # issue 21: on a bar stock, 4 of its 5 ops rapid through standing stock (no op turns it to the contour)
+    from freecad_groove import demo
+
+    doc = FreeCAD.newDocument("DemoCheck")
+    closing.append(doc)
+    FreeCAD.setActiveDocument(doc.Name)
+    part = demo.make_part(doc)
+    job, tc = demo.make_job(doc, part)
+    demo.make_ops(doc, job, part, tc)
+    result = verify_job(job)
+    assert result.ok, result.summary()
+    assert result.notes[0].startswith("stock: the Job's stock") and len(result.ops) == len(demo.OPS)
+    assert all(check.removed > 0 and not check.rapid_hits for check in result.ops), result.summary()

@@ -251,3 +251,52 @@ def make_slot_shop(name):
         tc.HorizFeed = "120 mm/min"
     doc.recompute()
     return doc, job
+
+
+def report_view():
+    """The Report view's text widget (FreeCAD's ReportOutput)."""
+    mw = FreeCADGui.getMainWindow()
+    dock = next(d for d in mw.findChildren(QtGui.QDockWidget) if d.objectName() in ("Report view", "ReportView"))
+    return dock.findChild(QtGui.QTextEdit)
+
+
+def no_traceback(step):
+    """The Report view's text; AssertionError naming ``step`` when it holds a traceback."""
+    text = report_view().toPlainText()
+    assert "Traceback" not in text, "%s: a traceback in the Report view:\n%s" % (step, text)
+    return text
+
+
+def post_with_cam_post(doc, job, post, path, args=""):
+    """CAM's Post Process command (CAM_Post) on ``job`` with post ``post`` ("fanuc_lathe"), writing ``path``."""
+    job.PostProcessor = post
+    job.PostProcessorArgs = args
+    job.PostProcessorOutputFile = path
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(doc.Name, job.Name)
+    process()
+    FreeCADGui.runCommand("CAM_Post")
+    process(0.1)
+
+
+def toolbar_action(toolbar, text):
+    """The action (button) ``text`` of CAM's toolbar ``toolbar`` ("New Operations"), once FreeCAD enabled it
+    (it updates its commands' state on a timer)."""
+    bar = next(tb for tb in FreeCADGui.getMainWindow().findChildren(QtGui.QToolBar) if tb.objectName() == toolbar)
+    action = next(a for a in bar.actions() if a.text().replace("&", "") == text)
+    wait_for(action.isEnabled, what="the %s button enabled" % text)
+    return action
+
+
+def shown_message(form):
+    """The op's message as a page shows it (its line at the top, or under the field being edited:
+    gui/field_message.py), or None while it shows none. (Not isVisible alone: a page of the panel not shown
+    has no visible widgets; isHidden says what the page would show.)"""
+    from freecad_groove.gui.field_message import FIELD_MESSAGE
+    from freecad_groove.gui.widgets import ERROR_LABEL
+
+    for name in (FIELD_MESSAGE, ERROR_LABEL):
+        label = form.findChild(QtGui.QLabel, name)
+        if label is not None and not label.isHidden() and label.text():
+            return label.text()
+    return None

@@ -4,6 +4,7 @@ import FreeCAD
 import FreeCADGui
 import pytest
 from gui_helpers import (
+    buttons_shown,
     close_shop,
     make_gui_shop,
     open_panel,
@@ -83,3 +84,79 @@ def test_a_corner_radius_of_a_modelled_groove_can_be_picked(modelled):
     with pytest.raises(ValueError, match="toroid face"):  # no face a groove is cut into ...
         faces_mod.analyse_face(model.Shape.getElement(torus), torus)
     assert gate.allow(doc, model, torus)  # ... but a face of a modelled groove
+
+
+def base_face(shape):
+    """The modelled groove's base face: its cylinder of the smallest radius among the groove's faces."""
+    faces = []
+    for i, face in enumerate(shape.Faces):
+        sub = "Face%d" % (i + 1)
+        try:
+            read_model_groove(shape, sub, "Part")
+        except ValueError:
+            continue
+        if type(face.Surface).__name__ == "Cylinder":
+            faces.append((face.Surface.Radius, sub))
+    return min(faces)[1]
+
+
+def test_picking_the_base_face_of_a_modelled_groove_takes_the_models_groove(modelled):
+    # issue 21: the box stayed unticked and the panel offered a valid default 4 x 2 groove in the base face,
+    # 2 mm below the finished groove
+    from freecad_groove.ops.groove.gui.command import CommandGroove
+
+    doc, job, model = modelled
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(doc.Name, model.Name, base_face(model.Shape))
+    process()
+    FreeCADGui.runCommand(CommandGroove.NAME)
+    panel = wait_for(lambda: open_panel(doc), what="the Groove task panel")
+    page = panel.groove_page
+    wait_for(lambda: page.replans > 0 and not page._timer.isActive(), what="the first preview")
+    assert page.model_box().isChecked()  # ticked by the pick: the model's groove
+    assert page.field("Width").property("rawValue") == pytest.approx(5.0)
+    assert page.error.startswith("ToolWidth:"), page.error  # the Job's end mill: no blade, none made up
+    type_into(page.field("ToolWidth"), "2")
+    wait_for(lambda: page.error is None and not page._timer.isActive(), what="the groove with a 2 mm blade")
+    wait_for(lambda: buttons_shown(panel), what="the buttons")
+    task_button(panel, Ok).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    process(0.1)
+    (op,) = [o for o in job.Operations.Group if hasattr(o, "ModelGroove")]
+    want = read_model_groove(model.Shape, base_face(model.Shape), model.Label).values
+    assert op.ModelGroove and list(op.ModelOverrides) == [] and list(op.FromModel) == list(MODEL_VALUES)
+    assert op.Width.Value == want["Width"] and op.Depth.Value == want["Depth"], (op.Width, op.Depth, want)
+
+
+def us_customary():
+    """The index of FreeCAD's "US customary" unit schema (the one CAM's first-start dialog preselects)."""
+    count = len(FreeCAD.Units.listSchemas())
+    return next(i for i in range(count) if "US" in FreeCAD.Units.listSchemas(i))
+
+
+def test_in_us_customary_units_the_models_values_are_never_written_back_rounded(modelled):
+    # issue 21: the fields showed 0.20" for 5 mm and OK wrote 5.08 mm back as an override
+    doc, job, model = modelled
+    op = make_groove(job, (model, base_face(model.Shape)), model_groove=False, position=2, width=3, depth=1,
+                     infeed=1, tool_width=2, tool_corner_radius=0.1)
+    was = FreeCAD.Units.getSchema()
+    FreeCAD.Units.setSchema(us_customary())
+    try:
+        FreeCADGui.getDocument(doc.Name).setEdit(op.Name)
+        panel = wait_for(lambda: open_panel(doc), what="the panel")
+        page = panel.groove_page
+        wait_for(lambda: page.replans > 0 and buttons_shown(panel), what="the preview")
+        assert not page.model_box().isChecked()  # the op's own choice is kept when its panel opens
+        page.model_box().click()
+        wait_for(lambda: page.error is None and not page._timer.isActive(), what="the model's groove")
+        assert '"' in page.field("Width").text() or "in" in page.field("Width").text()  # shown in inches
+        task_button(panel, Ok).click()
+        wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+        process(0.1)
+    finally:
+        FreeCAD.Units.setSchema(was)
+    doc.recompute()
+    want = read_model_groove(model.Shape, base_face(model.Shape), model.Label).values
+    assert op.ModelGroove and list(op.ModelOverrides) == [], list(op.ModelOverrides)
+    for name in ("Position", "Width", "Depth"):
+        assert getattr(op, name).Value == pytest.approx(want[name], abs=1e-9), (name, getattr(op, name))

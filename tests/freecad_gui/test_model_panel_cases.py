@@ -3,7 +3,9 @@
 
 What a user does, for each face of each modelled groove (base, flanks,
 corner radii and chamfers): select the face in the Job's model, press the
-Groove button, tick "Groove from the model". The fields must then show the
+Groove button: "Groove from the model" is ticked by the pick (issue 21: a
+groove typed into a modelled groove's face cuts below its finished shape).
+The fields must then show the
 modelled groove's values, to 0.001 mm and 0.01 degrees: Width, Depth and the
 flank angles as the part was modelled (the CYCLE93 call it was built from,
 not what the reader says), the corner sizes and kinds; Position as the model
@@ -96,13 +98,10 @@ def test_ticking_groove_from_the_model_shows_the_modelled_values_on_every_face(c
         for sub, groove in sorted(faces.items()):
             panel = open_on_face(doc, model, sub)
             page = panel.groove_page
-            assert not page.model_box().isChecked()
-            if chr_chamfers:
+            assert page.model_box().isChecked()  # the pick of a face of a modelled groove ticked it
+            if chr_chamfers:  # the chamfers read again as the measure changes
                 page.form.chamferMeasure.setCurrentIndex(page.form.chamferMeasure.findData(CHAMFER_MEASURES[1]))
                 process()
-            page.model_box().click()
-            process()
-            assert page.model_box().isChecked()
             label = page.form.findChild(QtGui.QLabel, task_panel.FROM_MODEL_LABEL)
             assert label.text() == "From the model: " + ", ".join(MODEL_VALUES), (sub, label.text())
             position = {"Position": groove.values["Position"]}
@@ -141,7 +140,7 @@ def test_ok_on_an_untouched_panel_keeps_the_models_unrounded_values():
         close_shop(doc)
 
 
-def test_a_corner_radius_picked_says_tick_groove_from_the_model_and_ticking_it_cuts_the_groove():
+def test_a_corner_radius_unticked_says_tick_groove_from_the_model_and_ticking_it_cuts_the_groove():
     call = CASES["angled_radii"]
     doc, job, model = make_gui_shop("ModelPanelHint", shape=part_shape(call))
     try:
@@ -150,6 +149,10 @@ def test_a_corner_radius_picked_says_tick_groove_from_the_model_and_ticking_it_c
         panel = open_on_face(doc, model, torus)
         page = panel.groove_page
         wait_for(lambda: page.replans > 0, what="the first preview")
+        assert page.model_box().isChecked()  # ticked by the pick
+        replans = page.replans
+        page.model_box().click()  # the user unticks it: no groove can be typed into a torus
+        wait_for(lambda: page.replans > replans and not page._timer.isActive(), what="the preview after unticking")
         assert page.error is not None and "toroid face" in str(page.error), page.error
         assert str(page.error).endswith(MODEL_HINT), page.error
         error_label = page.form.findChild(QtGui.QLabel, ERROR_LABEL)

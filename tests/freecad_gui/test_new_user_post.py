@@ -14,7 +14,18 @@ import os
 import FreeCAD
 import FreeCADGui
 import pytest
-from gui_helpers import close_shop, make_gui_shop, open_panel, process, start_groove_command, task_button, wait_for
+from gui_helpers import (
+    close_shop,
+    make_gui_shop,
+    no_traceback,
+    open_panel,
+    process,
+    report_view,
+    start_groove_command,
+    task_button,
+    wait_for,
+)
+from gui_helpers import post_with_cam_post as cam_post
 from PySide import QtGui
 
 from freecad_groove.ops.groove.gui import tool_page as tool_page_module
@@ -25,13 +36,6 @@ NAMES = ["sinumerik", "ab9", "fanuc", "haas", "linuxcnc"]
 SUFFIX = {"sinumerik": "mpf", "ab9": "nc", "fanuc": "nc", "haas": "nc", "linuxcnc": "ngc"}
 BLADE_WIDTH = 3.0  # typed into the width dialog the one-click tool controller asks
 POSTED = os.path.join(os.environ.get("FREECAD_GROOVE_SHARE") or os.getcwd(), "posted")
-
-
-def report_view():
-    """The Report view's text widget (FreeCAD's ReportOutput)."""
-    mw = FreeCADGui.getMainWindow()
-    dock = next(d for d in mw.findChildren(QtGui.QDockWidget) if d.objectName() in ("Report view", "ReportView"))
-    return dock.findChild(QtGui.QTextEdit)
 
 
 @pytest.fixture(scope="module", autouse=True)
@@ -48,24 +52,6 @@ def new_job():
     report_view().clear()
     yield doc, job, model
     close_shop(doc)
-
-
-def no_traceback(step):
-    text = report_view().toPlainText()
-    assert "Traceback" not in text, "%s: a traceback in the Report view:\n%s" % (step, text)
-    return text
-
-
-def post_with_cam_post(doc, job, name, path, args=""):
-    """CAM's Post Process command on ``job`` with post ``name``, writing ``path``."""
-    job.PostProcessor = name + "_lathe"
-    job.PostProcessorArgs = args
-    job.PostProcessorOutputFile = path
-    FreeCADGui.Selection.clearSelection()
-    FreeCADGui.Selection.addSelection(doc.Name, job.Name)
-    process()
-    FreeCADGui.runCommand("CAM_Post")
-    process(0.1)
 
 
 def test_a_new_job_grooves_and_posts_with_cams_post_command(new_job, monkeypatch):
@@ -101,7 +87,7 @@ def test_a_new_job_grooves_and_posts_with_cams_post_command(new_job, monkeypatch
         path = os.path.join(POSTED, "new_job_%s.%s" % (name, SUFFIX[name]))
         if os.path.exists(path):
             os.remove(path)
-        post_with_cam_post(doc, job, name, path)
+        cam_post(doc, job, name + "_lathe", path)
         no_traceback("CAM_Post with %s_lathe" % name)
         assert os.path.exists(path), "%s_lathe: CAM_Post wrote no %s\n%s" % (name, path, report_view().toPlainText())
         text = open(path).read()
@@ -109,12 +95,12 @@ def test_a_new_job_grooves_and_posts_with_cams_post_command(new_job, monkeypatch
     # a post that fails (a bad option) writes nothing and says so in one line, without a traceback
     path = os.path.join(POSTED, "refused.nc")
     report_view().clear()
-    post_with_cam_post(doc, job, "fanuc", path, "--bogus")
+    cam_post(doc, job, "fanuc_lathe", path, "--bogus")
     text = no_traceback("CAM_Post with a bad option")
     assert not os.path.exists(path)
     assert "fanuc_lathe_post: unrecognized arguments: --bogus (no file written)" in text, text
     # --help: the options in the Report view, no file
     report_view().clear()
-    post_with_cam_post(doc, job, "fanuc", path, "--help")
+    cam_post(doc, job, "fanuc_lathe", path, "--help")
     text = no_traceback("CAM_Post with --help")
     assert not os.path.exists(path) and "--inches" in text, text

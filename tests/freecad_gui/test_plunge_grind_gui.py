@@ -14,6 +14,7 @@ from gui_helpers import (
     process,
     roomy_task_panel,
     screenshot,
+    shown_message,
     task_button,
     type_into,
     version,
@@ -22,7 +23,7 @@ from gui_helpers import (
 from PySide import QtGui
 
 from freecad_groove.gui import qt_wrappers
-from freecad_groove.gui.widgets import ERROR_LABEL, INVALID_PROPERTY, WARNED_PROPERTY, WARNING_LABEL
+from freecad_groove.gui.widgets import INVALID_PROPERTY, WARNED_PROPERTY, WARNING_LABEL
 from freecad_groove.ops.grind.gui import command as grind_command
 from freecad_groove.ops.grind.gui import panel as grind_panel
 from freecad_groove.ops.grind.gui import view as grind_view
@@ -142,8 +143,7 @@ def test_an_invalid_value_refuses_ok_with_the_ops_message(shop):
     settle(page)
     message = "CrossPick=12: must be at most the wheel's width 10 (the strokes would leave ridges)"
     assert page.error == message
-    label = page.form.findChild(QtGui.QLabel, ERROR_LABEL)
-    shown, marked = label.isVisible() and label.text() == message, \
+    shown, marked = shown_message(page.form) == message, \
         page.field("CrossPick").property(INVALID_PROPERTY) is True
     ok_enabled = task_button(panel, QtGui.QDialogButtonBox.Ok).isEnabled()
     assert shown and marked and not ok_enabled
@@ -191,16 +191,20 @@ def test_a_scripted_op_gets_the_view_provider_and_opens_its_panel(shop):
     assert grind_ops(job) == [op] and FreeCAD.ActiveDocument is not None
 
 
-def test_the_command_sits_in_cams_toolbar_and_menu_after_turning_groove(shop):
+def test_the_commands_sit_in_cams_toolbar_and_menu_turning_groove_cylinder_slot_plunge_grind(shop):
     mw = FreeCADGui.getMainWindow()
     operations = next(tb for tb in mw.findChildren(QtGui.QToolBar) if tb.objectName() == "New Operations")
-    assert "Plunge grind" in [a.text() for a in operations.actions()]
+    buttons = [a.text() for a in operations.actions()]
+    at = buttons.index("Turning Groove")
+    assert buttons[at:at + 3] == ["Turning Groove", "Cylinder slot", "Plunge grind"], buttons
+    icons = [a.icon().pixmap(32, 32).toImage() for a in operations.actions()[at:at + 3]]
+    assert icons[0] != icons[1] and icons[1] != icons[2] and icons[0] != icons[2]  # each its own picture
     menus = [m for m in mw.menuBar().findChildren(QtGui.QMenu)  # CAM's menu: the one with the Turning Groove
              if "Turning Groove" in [a.text().replace("&", "") for a in m.actions()]]
     actions = menus[0].actions()
     texts = [a.text().replace("&", "") for a in actions]
     at = texts.index("Turning Groove")
-    assert texts[at + 1] == "Plunge grind" and actions[at + 2].isSeparator(), " | ".join(texts)
+    assert texts[at + 1:at + 3] == ["Cylinder slot", "Plunge grind"] and actions[at + 3].isSeparator(), texts
     FreeCADGui.Selection.clearSelection()
     assert grind_command.CommandPlungeGrind().IsActive()  # a Job in the document
 
@@ -240,7 +244,7 @@ def test_cancel_of_an_existing_op_keeps_its_values_and_a_saved_op_reopens_with_i
         close_shop(doc)
 
 
-def test_the_panel_makes_a_grinding_wheel_tool_controller_in_one_click(shop):
+def test_the_panel_makes_a_grinding_wheel_tool_controller_in_one_click(shop, monkeypatch):
     doc, job, block = shop
     panel = start_command(doc, block)
     page = panel.groove_page
@@ -248,12 +252,21 @@ def test_the_panel_makes_a_grinding_wheel_tool_controller_in_one_click(shop):
     type_into(page.field("WheelWidth"), "12")
     type_into(page.field("WheelDiameter"), "150")
     settle(page)
+    asked = []  # the modal dialogs: only the wheel's speed is asked (its sizes are in the fields)
+
+    def typed(parent, title, label, *args):
+        asked.append(label)
+        return 2500.0, True
+
+    monkeypatch.setattr(QtGui.QInputDialog, "getDouble", typed)
     page.form.findChild(QtGui.QPushButton, grind_panel.NEW_WHEEL_BUTTON).click()
     settle(page)
+    assert asked == ["Speed of the grinding wheel (rpm; at most its rated speed):"]
     assert len(job.Tools.Group) == tool_controllers + 1
     tc = job.Tools.Group[-1]
     assert page.field("ToolController").currentData() == tc.Name
     assert (tc.Tool.Width.Value, tc.Tool.Diameter.Value) == (pytest.approx(12), pytest.approx(150))
+    assert (tc.SpindleSpeed, tc.SpindleDir) == (pytest.approx(2500), "Forward")
     # Its feeds are 0: the op says so until its own feeds are set.
     assert page.error == "PlungeFeed=0: no feed (the tool controller's VertFeed is 0.0): set PlungeFeed", page.error
     type_into(page.field("PlungeFeed"), "1")  # mm/s (FreeCAD's default unit schema): 60 mm/min

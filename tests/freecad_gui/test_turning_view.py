@@ -110,3 +110,22 @@ def test_check_turning_shows_the_section_then_the_gouge(shop):
     process()
     assert not panel.drawing.in_scene() and turning_panel._open_panel is None
     assert not FreeCADGui.Control.activeDialog()
+
+
+def test_the_panel_offers_the_part_as_turned_as_the_stock_and_says_which_it_used(shop):
+    doc, job, op = shop
+    old = job.Stock  # a bar R25 around the R20 part: the op's rapids go down through it
+    job.Stock = PathStock.CreateCylinder(job, 25.0, 60.0, FreeCAD.Placement())
+    doc.removeObject(old.Name)
+    doc.recompute()
+    FreeCADGui.runCommand(CommandCheckTurning.NAME)
+    panel = wait_for(lambda: turning_panel._open_panel, what="the Turning check panel")
+    text = panel.figures.toPlainText()
+    assert "stock: a bar R25.000" in text and "RAPID THROUGH STOCK" in text, text
+    runs = panel.runs
+    panel.stock.setCurrentIndex(panel.stock.findData("turned"))  # as the user picks it in the combo box
+    wait_for(lambda: panel.runs > runs, what="the check with the part as turned")
+    text = panel.figures.toPlainText()
+    assert "stock: the part as turned" in text and "RAPID THROUGH STOCK" not in text and "%s: ok" % op.Label in text
+    panel.reject()
+    process()

@@ -15,9 +15,10 @@ in order:
 * a Job: its operations (in its order);
 * a tool controller (FreeCAD's Job puts them in the list before the ops that
   use them) or an op whose tool controller differs from the current one: the
-  tool change in the control's syntax and the spindle from the tool
-  controller (``G97 S<rpm> M3``/``M4``; none when SpindleDir is "None" or the
-  speed is 0);
+  tool change in the control's syntax and, with the op that uses it, the
+  spindle from the tool controller (``G97 S<rpm> M3``/``M4``; none when
+  SpindleDir is "None" or the speed is 0; never for a Cylinder slot, whose
+  speed is the live tool's);
 * an op (inactive ops are skipped): its label as a comment, the coolant of its
   CoolantMode (M8 flood, M7 mist; M9 after the op), then
   - a Groove op (or a dressup whose ``Base`` chain reaches one): every groove

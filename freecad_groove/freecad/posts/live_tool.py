@@ -13,12 +13,15 @@ So they are post options without defaults, on the posts that write C:
     --switches-by-hand   (a comment in place of each switch not given)
 
 WORDS: program words, space separated (``M14``, ``"M64 P0"``, ``"M3 $1"``).
-Around a slot the post stops the main spindle (the control's spindle stop)
-if it turns, switches C axis mode on, starts the live tool in the tool
-controller's SpindleDir at its SpindleSpeed, writes the slot, then stops the
-live tool and switches C axis mode off. A switch whose option is not given
-is not guessed: the slot is refused (PostError naming the option), since a
-program without it feeds an end mill that does not turn. With
+The main spindle is never started for a slot (program.py: a tool
+controller's spindle waits for the op that uses it). Around a slot the post
+stops the main spindle (the control's spindle stop) if an earlier op left it
+turning, switches C axis mode on, starts the live tool in the tool
+controller's SpindleDir at its SpindleSpeed (0: the slot's default,
+ops/slot/cutting.py), writes the slot, then stops the live tool and switches
+C axis mode off. A switch whose option is not given is not guessed: the
+slot is refused (PostError naming the option), since a program without it
+feeds an end mill that does not turn. With
 --switches-by-hand the machinist takes them on: a comment in its place says
 what is missing and which option writes it (even with --no-comments: it
 marks where the code goes), and ``Program.missing_switches`` lists it for
@@ -40,7 +43,8 @@ WORDS = re.compile(r"^[A-Z$][-+]?[0-9]+(\.[0-9]+)?( +[A-Z$][-+]?[0-9]+(\.[0-9]+)
 # (option, attribute, help)
 OPTIONS = (
     ("--c-axis-on", "c_axis_on", "the words that switch the spindle into C axis mode before a Cylinder slot "
-                                 "(machine-specific; no default: a comment marks the missing switch)"),
+                                 "(machine-specific; no default: a Cylinder slot without it is refused, "
+                                 "or with --switches-by-hand a comment marks the missing switch)"),
     ("--c-axis-off", "c_axis_off", "the words that switch C axis mode off after a Cylinder slot (no default)"),
     ("--live-tool-cw", "live_tool_cw", "the words that start the live tool clockwise (SpindleDir Forward), "
                                        "written with S<rpm> of the tool controller (no default)"),
@@ -96,19 +100,18 @@ def _switch(program: Program, words: Optional[str], option: str, what: str, labe
     program.add([program.writer.comment("%s: no %s given, the post cannot write it" % (what, option))])
 
 
-def switch_on(program: Program, tool_controller: Any, label: str) -> None:
-    """Before the slot op ``label``: the main spindle stopped, C axis mode on, the live tool started."""
+def switch_on(program: Program, cutting: Any, label: str) -> None:
+    """Before the slot op ``label``: the main spindle stopped, C axis mode on, the live tool started at the
+    speed and in the direction ``cutting`` gives (ops/slot/cutting.SlotCutting: the tool controller's, or
+    the default)."""
     codes = program.options.live_tool
     if program.spindle_on:
         program.stop_spindle()
     _switch(program, codes.c_axis_on, "--c-axis-on", "C axis mode on", label)
-    reverse = str(getattr(tool_controller, "SpindleDir", "Forward")) == "Reverse"
-    rpm = int(round(float(getattr(tool_controller, "SpindleSpeed", 0) or 0)))
-    words, option = (codes.live_tool_ccw, "--live-tool-ccw") if reverse else (codes.live_tool_cw, "--live-tool-cw")
-    if rpm <= 0:
-        raise PostError("SpindleSpeed=%s: the live tool of a Cylinder slot needs a speed (the tool controller's)"
-                        % rpm, op=label)
-    _switch(program, "%s S%d" % (words, rpm) if words else None, option, "live tool on at S%d" % rpm, label)
+    words, option = (codes.live_tool_ccw, "--live-tool-ccw") if cutting.reverse else (codes.live_tool_cw,
+                                                                                      "--live-tool-cw")
+    _switch(program, "%s S%d" % (words, cutting.rpm) if words else None, option, "live tool on at S%d" % cutting.rpm,
+            label)
 
 
 def switch_off(program: Program, label: str) -> None:

@@ -37,8 +37,10 @@ class Program(ProgramBuilder):
     program builder (output/program.py) with the post's control and options.
 
     ``tool_state``: the ToolState in force (None: none yet, or an M6 of a Path
-    changed it); ``missing_switches``: the options of live_tool.py the program
-    needed and did not get."""
+    changed it); ``pending_spindle``: the tool controller of the list whose
+    spindle waits for the op that uses it (a Cylinder slot never starts the
+    main spindle: its speed is the live tool's); ``missing_switches``: the
+    options of live_tool.py the program needed and did not get."""
 
     def __init__(self, control: Control, options: Options) -> None:
         writer = Writer(control.program_target(options), not options.inches, False, digits=options.precision,
@@ -47,6 +49,7 @@ class Program(ProgramBuilder):
         self.control = control
         self.options = options
         self.tool_state: Optional[ToolState] = None
+        self.pending_spindle: Any = None
         self.missing_switches: list = []
 
     # -- program frame
@@ -105,8 +108,9 @@ class Program(ProgramBuilder):
             for op in obj.Operations.Group:
                 self.item(op)
             return
-        if is_tool_controller(obj):
-            self.tool_controller(obj)
+        if is_tool_controller(obj):  # the tool change now, its spindle with the op that uses it
+            self.tool_controller(obj, spindle=False)
+            self.pending_spindle = obj
             return
         if not op_property(obj, "Active", True):
             return
@@ -114,7 +118,12 @@ class Program(ProgramBuilder):
         if not hasattr(obj, "Path"):
             raise PostError("is not a Path object (pick operations, tool controllers or a Job)", op=label)
         # a Cylinder slot's speed is the live tool's (live_tool.py), not the main spindle's
-        self.tool_controller(op_property(obj, "ToolController"), spindle=not is_slot_op(obj))
+        slot = is_slot_op(obj)
+        if self.pending_spindle is not None and not is_fixture_block(obj):
+            if not slot:
+                self.tool_spindle(self.pending_spindle)
+            self.pending_spindle = None
+        self.tool_controller(op_property(obj, "ToolController"), spindle=not slot)
         if not is_fixture_block(obj):
             self.note(label)
             extra = op_property(obj, "Comment", "")

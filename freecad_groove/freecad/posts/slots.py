@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 from ...engine.cycles.gsk_g7_1 import GskG7_1
 from ...engine.moves import FEED, RAPID, Move
+from ...ops.slot.cutting import slot_cutting
 from . import live_tool
 from .controls import CONTROLS
 from .errors import PostError
@@ -57,7 +58,7 @@ class SlotOutput:
         if error:
             raise PostError(error, op=self.label)
         plan = self.op.Proxy.current_plan(self.op)
-        live_tool.switch_on(program, getattr(self.op, "ToolController", None), self.label)
+        live_tool.switch_on(program, slot_cutting(self.op), self.label)  # the tool controller's as it is now
         program.set_feed_mode(False)
         start = plan.start
         self._moves([Move(RAPID, plan.safe_radius, None),  # X first: Z and C move only at the safe radius

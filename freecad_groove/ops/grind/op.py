@@ -69,6 +69,8 @@ def _named(error: CycleError) -> GrindInputError:
 class ObjectPlungeGrind(AddonOp):
     """Proxy of a Plunge grind operation (Path::FeaturePython)."""
 
+    DECLARED_PROPERTIES = PROPERTIES
+
     # -- FreeCAD op API ---------------------------------------------------------
     def opExecute(self, obj: object) -> None:
         self.error = None

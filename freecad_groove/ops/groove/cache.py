@@ -31,9 +31,12 @@ reads its saved plans as the document opens (read(), in its loads: about
 fingerprints of every Groove op of its Job at once, reading each input they
 share (tool controller, model, stock: one BREP digest each) once (the memo
 of fingerprint()). The ops whose fingerprint matches take their saved plans,
-as if recomputed then; the others plan again at their own post. So the first
-post after reopening costs a fingerprint per op more than a post before
-saving (about 0.2 ms, the first op's 0.7 ms).
+as if recomputed then; the others plan again at their own post, once: the
+plans are kept with their fingerprint for the next posts (and the next
+save) while the op stays untouched (ObjectGroove.current_plan; an input
+changed while the document was closed, a document that saved none). So the
+first post after reopening costs a fingerprint per op more than a post
+before saving (about 0.2 ms, the first op's 0.7 ms).
 
 FreeCAD layer: duck-typed FreeCAD objects, no FreeCAD import.
 """

@@ -103,6 +103,8 @@ TYP_CHR = 10  # added to TYP when chamfers are measured along their legs (CHR)
 class ObjectGroove(AddonOp):
     """Proxy of a Groove operation (Path::FeaturePython)."""
 
+    DECLARED_PROPERTIES = PROPERTIES
+
     # -- FreeCAD op API ---------------------------------------------------------
     def opOnChanged(self, obj: object, prop: str) -> None:
         """A model value set by hand while ModelGroove is on overrides the model's (ModelOverrides)."""
@@ -144,14 +146,21 @@ class ObjectGroove(AddonOp):
         the op since (planning checks every link rapid against the model, the
         costly part of posting); after reopening the document, the plans it
         saved while their fingerprint still matches (cache.py); otherwise
-        a fresh plan."""
-        if getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)):
+        a fresh plan, kept (with its fingerprint, for the saved document too)
+        while the op stays untouched: a post after reopening a document whose
+        saved plans no longer match, or that saved none, plans once, not at
+        every post."""
+        untouched = getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State))
+        if untouched:
             plans = getattr(self, "_plans", None)
             if plans is None:
                 plans = self._restored_plans(obj)
             if plans is not None:
                 return plans
-        return self.plan(obj)
+        plans = self.plan(obj)
+        if untouched:
+            self._keep_plans(obj, plans)
+        return plans
 
     # -- the plans kept in the document (cache.py) ---------------------------
     def _keep_plans(self, obj: object, plans: list[GroovePlan]) -> None:
@@ -275,6 +284,17 @@ class ObjectGroove(AddonOp):
         if hasattr(obj, "FromModel") and list(obj.FromModel) != list(values):
             obj.FromModel = list(values)
         return model
+
+    def in_modelled_groove(self, obj: object) -> bool:
+        """Whether a picked face belongs to a groove of the model (the turning check then judges the op by the
+        model alone there)."""
+        for base, named, sub, _name in self._picked(obj):
+            try:
+                read_picked_groove([(base.Shape, sub, named.Label)])
+            except ValueError:
+                continue
+            return True
+        return False
 
     # -- deriving the grooves ---------------------------------------------------
     def _picked(self, obj: object) -> list[tuple]:

@@ -24,5 +24,5 @@ KIND = OpKind(
     setup_properties="op.SetupProperties",
     view_provider="gui.view.ViewProviderCylinderSlot",
     command="gui.command.CommandCylinderSlot",
-    icon="groove.svg",
+    icon="cylinder_slot.svg",
 )

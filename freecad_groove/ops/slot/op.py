@@ -18,7 +18,9 @@ the path. The region (engine/cycles/gsk_g7_1.py) is built from the op:
 
 Depth, Retract and Allowance are radial (mm, as the model is measured); the
 program's J, R, K are diameters. The feed is the tool controller's HorizFeed
-(along the developed path; an error when it is 0: no silent default).
+(along the developed path), the live tool's speed its SpindleSpeed; where they
+are 0 (a new Job's), the documented defaults of cutting.py, shown in the
+read-only FeedsAndSpeeds.
 
 The Path (path.py): from the safe radius (the largest radius of the model
 and the stock plus Retract) to the path's start, the region's moves, back to
@@ -40,8 +42,9 @@ from ...engine.cycles.gsk_g7_1 import GskG7_1
 from ...engine.moves import MachineState
 from ...freecad.addon_op import AddonOp, WithValues, create_op, op_error  # noqa: F401 - its API
 from ...freecad.faces import element_name
-from ...freecad.units import feed_mm_per_min, length_mm
+from ...freecad.units import length_mm
 from . import reach
+from .cutting import slot_cutting
 from .developed import SlotCylinder, developed_path, read_cylinder
 from .path import path_commands
 from .plan import SlotPlan, region_blocks, rounded
@@ -52,6 +55,7 @@ class ObjectCylinderSlot(AddonOp):
     """Proxy of a Cylinder slot operation (Path::FeaturePython)."""
 
     FEATURES = ("FeatureTool", "FeatureBaseFaces", "FeatureBaseEdges", "FeatureCoolant")
+    DECLARED_PROPERTIES = tuple((type_id, name, GROUP, tip, default) for type_id, name, tip, default in PROPERTIES)
 
     # -- FreeCAD op API ---------------------------------------------------------
     def _add_missing_properties(self, obj: object) -> None:
@@ -72,19 +76,21 @@ class ObjectCylinderSlot(AddonOp):
             self._report_error(obj, e)
             return
         self._plan = plan
-        self._write_derived(obj, plan.region.emit().split("\n")[0], self.tool_diameter(obj))
+        self._write_derived(obj, plan.region.emit().split("\n")[0], self.tool_diameter(obj), plan.cutting.describe())
         for warning in plan.warnings:
             FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, warning))
         self.commandlist.extend(path_commands(plan))
 
     def _report_error(self, obj: object, error: Exception) -> None:
-        self._write_derived(obj, "", 0.0)
+        self._write_derived(obj, "", 0.0, "")
         self.report_error(obj, error)
 
     @staticmethod
-    def _write_derived(obj: object, region: str, width: float) -> None:
+    def _write_derived(obj: object, region: str, width: float, feeds: str) -> None:
         if obj.Region != region:
             obj.Region = region
+        if obj.FeedsAndSpeeds != feeds:
+            obj.FeedsAndSpeeds = feeds
         if abs(length_mm(obj.SlotWidth) - width) > 1e-12:
             obj.SlotWidth = width
 
@@ -118,18 +124,7 @@ class ObjectCylinderSlot(AddonOp):
         tool = getattr(getattr(obj, "ToolController", None), "Tool", None)
         return length_mm(getattr(tool, "Diameter", 0.0)) if tool is not None else 0.0
 
-    def feed_mm_per_min(self, obj: object) -> float:
-        tc = getattr(obj, "ToolController", None)
-        if tc is None:
-            raise SlotInputError("ToolController: none: the op needs an end mill's tool controller",
-                                   ("ToolController",))
-        feed = feed_mm_per_min(length_mm(tc.HorizFeed))
-        if not (math.isfinite(feed) and feed > 0):
-            raise SlotInputError("HorizFeed=%s: the tool controller's feed must be greater than 0 (the slot is "
-                                   "milled at it along its developed path)" % feed, ("ToolController",))
-        return feed
-
-    def region(self, obj: object, cylinder: SlotCylinder, points: list) -> GskG7_1:
+    def region(self, obj: object, cylinder: SlotCylinder, points: list, feed: float) -> GskG7_1:
         depth, allowance, retract = (finite_length(obj, n) for n in ("Depth", "Allowance", "Retract"))
         if not depth > 0:
             raise SlotInputError("Depth=%s: must be greater than 0" % depth, ("Depth",))
@@ -140,7 +135,7 @@ class ObjectCylinderSlot(AddonOp):
                                    % retract, ("Retract",))
         if not 1 <= obj.Passes <= 9999:
             raise SlotInputError("Passes=%s: must be from 1 to 9999" % obj.Passes, ("Passes",))
-        blocks = region_blocks(points, self.feed_mm_per_min(obj))
+        blocks = region_blocks(points, feed)
         return GskG7_1(C=rounded(cylinder.radius), path=blocks, J=rounded(-2.0 * depth), R=rounded(2.0 * retract),
                       K=rounded(2.0 * allowance), L=int(obj.Passes))
 
@@ -156,7 +151,8 @@ class ObjectCylinderSlot(AddonOp):
             edges = sketch_edges(sketch)
         tool_radius = self.tool_diameter(obj) / 2.0
         points = developed_path(cylinder, face, edges, sketch=sketch is not None, margin=tool_radius)
-        region = self.region(obj, cylinder, points)
+        cutting = slot_cutting(obj)
+        region = self.region(obj, cylinder, points, cutting.feed)
         tool = getattr(obj.ToolController, "Tool", None)  # region() refused an op without a tool controller
         tool_name = getattr(tool, "Label", obj.ToolController.Label)
         reach.check_tool(tool, tool_name, -region.J / 2.0)
@@ -169,7 +165,7 @@ class ObjectCylinderSlot(AddonOp):
             reach.z_range_warnings([z for z, _c in points], tool_radius, (cylinder.z_min, cylinder.z_max),
                                         cylinder.name)
         safe = largest + finite_length(obj, "Retract")
-        return SlotPlan(cylinder, region, start, max(safe, start.x), moves, tuple(warnings))
+        return SlotPlan(cylinder, region, start, max(safe, start.x), moves, tuple(warnings), cutting)
 
     def plan_with(self, obj: object, values: dict) -> SlotPlan:
         """plan() as it would be with ``values`` {property: value (mm, a count, an object)} in place of the
@@ -204,7 +200,10 @@ def sketch_edges(sketch: object) -> List[Tuple[object, str]]:
 
 
 def SetupProperties() -> list:
-    return [name for _t, name, _tip, _d in PROPERTIES if name not in DERIVED]
+    """The op properties a Job's SetupSheet may hold defaults for: the region's Depth, Passes, Allowance and
+    Retract (not DevelopedSketch: a link to one sketch is no default for every slot, and CAM's SetupSheet
+    editor has no editor for a link)."""
+    return [name for _t, name, _tip, _d in PROPERTIES if name not in DERIVED + ("DevelopedSketch",)]
 
 
 def Create(name: str, obj: object = None, parentJob: object = None, tool_controller: object = None) -> object:

@@ -4,16 +4,17 @@ from the developed path (the op plans: op.py).
 FreeCAD layer: plain data, no import of FreeCAD.
 """
 
-from typing import List, NamedTuple, Tuple
+from typing import List, NamedTuple, Optional, Tuple
 
 from ...engine.cycles.gsk_g7_1 import DECIMALS, GskG7_1, PathBlock
 from ...engine.moves import MachineState, Move
+from .cutting import SlotCutting
 from .developed import SlotCylinder
 from .properties import SlotInputError
 
 
 class SlotPlan(NamedTuple):
-    """What the op cuts: the region, where it starts, the safe radius and the moves."""
+    """What the op cuts: the region, where it starts, the safe radius, the moves, what it cuts with."""
 
     cylinder: SlotCylinder
     region: GskG7_1
@@ -21,6 +22,7 @@ class SlotPlan(NamedTuple):
     safe_radius: float
     moves: List[Move]
     warnings: Tuple[str, ...] = ()  # what the end mill may not do as planned (reach.py): shown, never blocking
+    cutting: Optional[SlotCutting] = None  # the feed and the live tool's speed (cutting.py)
 
 
 def rounded(value: float) -> float:

@@ -24,8 +24,11 @@ PROPERTIES = (
      "of edges in Base: sketch x = Z, sketch y = the developed length radius*C (C 0 at y 0).", None),
     ("App::PropertyLength", "SlotWidth", "The slot's width: the end mill's diameter (read only).", 0.0),
     ("App::PropertyString", "Region", "The G7.1 start block the op cuts with (read only).", ""),
+    ("App::PropertyString", "FeedsAndSpeeds", "The feed and the live tool's speed the slot is milled with, and "
+     "where each comes from: the tool controller's HorizFeed and SpindleSpeed, or the defaults where they are 0 "
+     "(read only).", ""),
 )
-DERIVED = ("SlotWidth", "Region")
+DERIVED = ("SlotWidth", "Region", "FeedsAndSpeeds")
 LENGTHS = tuple(name for type_id, name, _tip, _default in PROPERTIES if type_id == "App::PropertyLength")
 
 

@@ -8,16 +8,25 @@ Here the Job is read into plain data:
 * the model's section: each model object's shape cut by the plane X = 0
   (through the turning axis, the global Z axis), its wires discretized to
   SECTION_DEFLECTION and taken at Y >= 0 (Y is then the radius);
-* the stock's section: a bar from the Job stock's bounds (radius: its
-  largest extent from the axis in X or Y, so a box stock counts as the bar
-  that fits in it; Z: its Z range); a Job without stock: a bar of the model's
-  largest radius over the model's Z range;
+* the stock's section, one of STOCKS (``stock=``, said in the result's
+  notes): the Job's stock (STOCK_JOB, the default): a bar from its bounds
+  (radius: its largest extent from the axis in X or Y, so a box stock counts
+  as the bar that fits in it; Z: its Z range), or, for CAM's stock from an
+  existing solid (a turned blank, the part itself), that solid's own
+  section; a Job without stock: a bar of the model's largest radius over the
+  model's Z range. Or the part as turned (STOCK_TURNED): the model's contour
+  plus the material of the ops' planned grooves, what a grooving op assumes
+  it starts from (a bar stock then shows no rapids through the material a
+  turning op would have taken first);
 * per op (in the Job's order, inactive ops left out): its Path's G0/G1/G4
   moves and arcs G2/G3 (G18: centre I, K from the start) split at its
   comments into one run per planned groove (groove/plan.py),
   each swept with the op's blade (ObjectGroove.settings, as the tool
   controller gives it now) in the groove's plunge direction; the planned
-  finished groove and the engine's reach warnings; the feeds and speeds
+  finished groove and the engine's reach warnings; whether the groove is
+  the design's though the model does not show it (programmed by its values
+  on a plain face; never one in a face of a modelled groove: the model says
+  what the op must leave there); the feeds and speeds
   (groove/cutting.py) with the tool controller's rapid rates (HorizRapid for X,
   VertRapid for Z).
 
@@ -55,6 +64,11 @@ MOTION = {"G0": RAPID, "G00": RAPID, "G1": FEED, "G01": FEED, "G2": ARC_CW, "G02
 MODAL = {"G18", "G90", "G21", "G40", "G80"}  # words that move nothing
 
 
+STOCK_JOB = "job"
+STOCK_TURNED = "turned"
+STOCKS = {STOCK_JOB: "the Job's stock", STOCK_TURNED: "the part as turned"}  # verify_job(stock=...): in words
+
+
 class TurningCheckError(ValueError):
     """A Job that cannot be checked at all (an op that cannot is reported in its OpCheck)."""
 
@@ -88,6 +102,36 @@ def model_rings(shapes: list) -> list[list[tuple[float, float]]]:
             points = wire.discretize(Deflection=SECTION_DEFLECTION)
             rings.append([(p.z, p.y) for p in points])
     return rings
+
+
+def existing_solid_stock(job: object) -> Optional[object]:
+    """The Job's stock when CAM made it from an existing solid (its StockType "Unknown", headless told by
+    having none of the other kinds' properties: a clone of a turned blank, or of the part itself), else None."""
+    import Path.Main.Stock as PathStock
+
+    stock = getattr(job, "Stock", None)
+    shape = getattr(stock, "Shape", None)
+    if shape is None or shape.isNull() or not shape.Solids:
+        return None
+    return stock if PathStock.StockType.FromStock(stock) == PathStock.StockType.Unknown else None
+
+
+def stock_section(job: object, shapes: list, inputs: list, stock: str) -> tuple[object, str]:
+    """(the stock's section, the note saying which) of STOCKS ``stock``."""
+    from ...verify.overlay import union_all
+    from ...verify.section import bar_section, groove_region, rings_section
+
+    if stock == STOCK_TURNED:
+        model = rings_section(model_rings(shapes))
+        grooves = [groove_region(run.region) for op in inputs if not op.error for run in op.grooves]
+        return union_all([model] + grooves), ("stock: the part as turned (the model's contour plus the material "
+                                              "of the ops' planned grooves)")
+    solid = existing_solid_stock(job)
+    if solid is not None:
+        return rings_section(model_rings([solid.Shape])), "stock: the Job's stock %s, its own section" % solid.Label
+    radius, zmin, zmax, where = stock_bar(job, shapes)
+    return bar_section(radius, zmin, zmax), "stock: a bar R%.3f from Z%.3f to Z%.3f (%s)" % (radius, zmin, zmax,
+                                                                                              where)
 
 
 def stock_bar(job: object, shapes: list) -> tuple[float, float, float, str]:
@@ -162,8 +206,10 @@ def op_input(op: object) -> OpInput:
         if len(runs) != len(plans):
             raise TurningCheckError("its Path has %d groove section(s) but the op plans %d groove(s): recompute it"
                                     % (len(runs), len(plans)))
+        programmed = not op.ModelGroove and not op.Proxy.in_modelled_groove(op)
         grooves = [GrooveRun([m for _n, m in run], [n for n, _m in run], tool, plan.cycle.plunge_direction(),
-                             plan.geometry.region_world(), sum(u.area for u in unreachable_regions(plan.geometry)))
+                             plan.geometry.region_world(), sum(u.area for u in unreachable_regions(plan.geometry)),
+                             programmed)
                    for run, plan in zip(runs, plans)]
         first = runs[0][0][1] if runs else Move(RAPID, 0.0, 0.0)
         return OpInput(op.Label, (first.x, first.z), grooves, _feeds(op))
@@ -198,8 +244,10 @@ def _set_cycle_times(job: object, ops: list, result: JobCheck) -> None:
         FreeCAD.Console.PrintLog("verify_job: the Job's CycleTime not updated: %s\n" % e)
 
 
-def verify_job(job: object, tol: Optional[float] = None) -> JobCheck:
-    """Check the Groove ops of CAM Job ``job`` in a turned section of its stock.
+def verify_job(job: object, tol: Optional[float] = None, stock: str = STOCK_JOB) -> JobCheck:
+    """Check the Groove ops of CAM Job ``job`` in a turned section of its stock: ``stock`` "job" (STOCK_JOB:
+    the Job's stock) or "turned" (STOCK_TURNED: the part as turned, the model's contour plus the grooves'
+    material); the result's first note says which.
 
     Returns a verify.turning.JobCheck: per op (OpCheck) material removed,
     gouge (area, depth, where), leftover the blade could reach, unreachable
@@ -208,16 +256,19 @@ def verify_job(job: object, tol: Optional[float] = None) -> JobCheck:
     checked carries its reason in ``error``. Raises TurningCheckError (a
     ValueError) when shapely is missing or ``job`` is no Job with a model.
     """
+    if stock not in STOCKS:
+        raise TurningCheckError("verify_job(): stock=%r: must be %s" % (stock, " or ".join(
+            "%r (%s)" % item for item in STOCKS.items())))
     require_shapely()
-    from ...verify.section import bar_section, rings_section
+    from ...verify.section import rings_section
     from ...verify.turning import DEFAULT_TOL, check_ops
 
     shapes = _check_job(job)
-    radius, zmin, zmax, where = stock_bar(job, shapes)
     ops, notes = groove_ops(job)
-    notes.insert(0, "stock: a bar R%.3f from Z%.3f to Z%.3f (%s)" % (radius, zmin, zmax, where))
     inputs = [op_input(op) for op in ops]
-    result = check_ops(inputs, bar_section(radius, zmin, zmax), rings_section(model_rings(shapes)),
-                       DEFAULT_TOL if tol is None else tol, notes)
+    section, note = stock_section(job, shapes, inputs, stock)
+    notes.insert(0, note)
+    result = check_ops(inputs, section, rings_section(model_rings(shapes)), DEFAULT_TOL if tol is None else tol,
+                       notes)
     _set_cycle_times(job, ops, result)
     return result

@@ -1,5 +1,6 @@
 """The Plunge grind command: a button at the end of CAM's "New Operations"
-toolbar and an entry in the CAM menu (as the Turning Groove command).
+toolbar and an entry in the CAM menu (as the Turning Groove command), after
+the Cylinder slot.
 Enabled when the active document holds a CAM Job; with a flat face of a
 Job's part selected it makes the op in that Job with its task panel open
 (view.create; the panel takes the selected face as its Base).
@@ -24,7 +25,8 @@ TOOL_TIP = QT_TRANSLATE_NOOP(COMMAND, "Plunge grind a flat face (Allen-Bradley 9
 class CommandPlungeGrind:
     NAME = COMMAND
     TOOLBAR = "New Operations"  # CAM's toolbar of operations, as the Groove command's
-    MENU_AFTER = "FreeCADGroove_Groove"  # right after the Turning Groove (after V-Carve, before the 3D operations)
+    # after the Turning Groove and the Cylinder slot (after V-Carve, before the 3D operations)
+    MENU_AFTER = "FreeCADGroove_CylinderSlot"
 
     def GetResources(self):
         return {"Pixmap": ICON, "MenuText": MENU_TEXT, "ToolTip": TOOL_TIP}

@@ -222,24 +222,28 @@ class PlungeGrindPage(LivePage):
 
     def new_wheel_tool_controller(self) -> object:
         """A new tool controller in the op's Job whose bit is a grinding wheel of the Wheel width and Wheel
-        diameter fields (each asked for while 0), selected for the op (written on OK). Its feeds and spindle
-        speed are the tool controller's defaults (0): set them, or the op's feeds. Returns it, or None."""
+        diameter fields (each asked for while 0), turning at the speed asked for (no default: a wheel must
+        never turn faster than it is rated for), selected for the op (written on OK). Its feeds are the tool
+        controller's defaults (0): the op's PlungeFeed and ReciprocationFeed on this page give them. Returns
+        it, or None."""
         from ....freecad.wheel_toolbit import make_wheel_tool_controller
 
         sizes = {}
         for prop, text in (("WheelWidth", "Width of the grinding wheel (mm):"),
-                           ("WheelDiameter", "Diameter of the grinding wheel (mm):")):
-            value = self.values()[prop].Value
+                           ("WheelDiameter", "Diameter of the grinding wheel (mm):"),
+                           ("SpindleSpeed", "Speed of the grinding wheel (rpm; at most its rated speed):")):
+            value = self.values()[prop].Value if prop != "SpindleSpeed" else 0.0
             if not value > 0:
                 value, ok = QtGui.QInputDialog.getDouble(self.form, translate(CONTEXT, "Grinding wheel tool "
                                                                               "controller"),
-                                                         translate(CONTEXT, text), 0.0, 0.0, 10000.0, 3)
+                                                         translate(CONTEXT, text), 0.0, 0.0, 100000.0, 3)
                 if not (ok and value > 0):
                     return None
             sizes[prop] = value
         try:
             tc = make_wheel_tool_controller(PathUtils.findParentJob(self.obj), sizes["WheelWidth"],
                                             sizes["WheelDiameter"])
+            tc.SpindleSpeed, tc.SpindleDir = sizes["SpindleSpeed"], "Forward"
         except Exception as error:  # a message, not a traceback
             FreeCAD.Console.PrintError(translate(CONTEXT, "Cannot create the grinding wheel tool controller: {0}")
                                        .format(error) + "\n")

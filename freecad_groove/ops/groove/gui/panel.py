@@ -163,6 +163,7 @@ class GroovePage(LivePage):
         self.init_live()
         self.plans = []
         self.model_shown = {}  # {property: value} the fields show from the model
+        self.model_box_chosen = False  # the user ticked or unticked "Groove from the model" (it no longer follows)
 
     def getTitle(self, obj):
         return translate(CONTEXT, "Groove")
@@ -186,6 +187,8 @@ class GroovePage(LivePage):
             if self.model_box().isChecked() else {}
         self._show_from_model()
         self._enable_corner_sizes()
+        if getattr(getattr(self, "parent", None), "deleteOnReject", False):  # a new op: its faces just picked
+            self.follow_picked_faces(obj)
         self.schedule_preview()
 
     def getFields(self, obj):
@@ -243,6 +246,10 @@ class GroovePage(LivePage):
         for widget in widgets:
             connect_changed(widget, self.changed)
         self.model_box().toggled.connect(lambda *_a: self.model_toggled())
+        # the chamfers read as CHR or CHF: the model's values read again
+        self.form.chamferMeasure.currentIndexChanged.connect(
+            lambda *_a: self.fill_from_model() if self.model_box().isChecked() else None)
+        self.model_box().clicked.connect(lambda *_a: setattr(self, "model_box_chosen", True))
 
     def changed(self) -> None:
         """A value changed: the panel is dirty, the preview follows."""
@@ -256,6 +263,8 @@ class GroovePage(LivePage):
             self.field(name).setEnabled(self.field(name + "Type").currentData() != "None")
 
     def updateData(self, obj, prop):
+        if prop == "Base":
+            self.follow_picked_faces(obj)
         if prop == "Base" and self.model_box().isChecked():
             self.fill_from_model()
         if prop in ("Base", "ToolController"):
@@ -265,6 +274,22 @@ class GroovePage(LivePage):
     def model_box(self) -> object:
         """The "Groove from the model" check box (ModelGroove)."""
         return child(self.form, "modelGroove")
+
+    def follow_picked_faces(self, obj: object) -> None:
+        """A picked face of a groove in the model ticks "Groove from the model": the op takes the model's groove
+        by default (a groove typed into a modelled groove's face would cut below its finished shape), until the
+        user ticks or unticks the box."""
+        if self.model_box_chosen or self.model_box().isChecked():
+            return
+        try:
+            modelled = obj.Proxy.in_modelled_groove(obj)
+        except ValueError:  # a face the op refuses: its message shows with the preview
+            return
+        if modelled:  # (its signal may not be connected yet: the panel connects them after setFields)
+            self.model_box().blockSignals(True)
+            self.model_box().setChecked(True)
+            self.model_box().blockSignals(False)
+            self.model_toggled()
 
     def model_toggled(self) -> None:
         if self.model_box().isChecked():

@@ -1,8 +1,9 @@
 """The Cylinder slot command: enabled when a face of a Job's model and the
 slot's path are selected (the face, then Ctrl+click the edges of its centre
 line in order, or a sketch of the developed surface); makes the op
-(make_cylinder_slot) with its task panel open. In FreeCAD's command list
-only: it is in no CAM toolbar or menu.
+(make_cylinder_slot) with its task panel open. A button in CAM's "New
+Operations" toolbar and an entry in its menu, between the Turning Groove and
+the Plunge grind.
 
 Imports no CAM module until the command is used (FreeCAD's GUI start registers it).
 """
@@ -41,7 +42,8 @@ def _selection():
 
 class CommandCylinderSlot:
     NAME = COMMAND
-    TOOLBAR = MENU_AFTER = None  # in no CAM toolbar or menu
+    TOOLBAR = "New Operations"  # CAM's toolbar of operations, beside the Turning Groove
+    MENU_AFTER = "FreeCADGroove_Groove"  # right after the Turning Groove in CAM's menu
 
     def GetResources(self):
         return {"Pixmap": ICON, "MenuText": QT_TRANSLATE_NOOP(COMMAND, "Cylinder slot"),

@@ -5,7 +5,8 @@ transaction, the tool controller combo.
 Pages:
 - Base Geometry: FreeCAD's list, here of the cylindrical face and the edges
   of the slot's centre line (in order).
-- Cylinder slot: the tool controller and coolant, the path (the edges in Base
+- Cylinder slot: the tool controller (under it the feed and live tool speed
+  the slot is milled with: ops/slot/cutting.py) and coolant, the path (the edges in Base
   Geometry, or a sketch of the developed surface: DevelopedSketch), Depth,
   Passes, Allowance, Retract, and the live preview of the developed path with
   its passes (preview.py: a picture in the panel).
@@ -51,6 +52,8 @@ TOOLTIPS = {
     "Passes": "Rough passes before the finish pass (L; 1 runs as 2, as GSK does)",
     "Allowance": "Finishing allowance, radial, left by the rough passes (K = 2 Allowance)",
     "Retract": "Clearance above the cylinder the tool retracts to between passes, radial (R = 2 Retract)",
+    "FeedsAndSpeeds": "The feed and the live tool's speed: the tool controller's HorizFeed and SpindleSpeed, or the "
+                      "defaults where they are 0 (set them in the tool controller)",
     "DevelopedSketch": "The slot's path: the edges picked on the Base Geometry page, or a sketch of the developed "
                        "surface (sketch x = Z, sketch y = radius * C)",
 }
@@ -101,6 +104,11 @@ def build_form() -> object:
     form.toolController, form.coolantController, form.developedSketch = (QtGui.QComboBox(form) for _ in range(3))
     form.developedSketch.setObjectName("developedSketch")
     _row(layout, "Tool controller", form.toolController, "The end mill: its diameter is the slot's width")
+    form.feedsAndSpeeds = QtGui.QLabel(form)  # the op's FeedsAndSpeeds as planned with the panel's values
+    form.feedsAndSpeeds.setObjectName("feedsAndSpeeds")
+    form.feedsAndSpeeds.setWordWrap(True)
+    form.feedsAndSpeeds.setToolTip(translate(CONTEXT, TOOLTIPS["FeedsAndSpeeds"]))
+    layout.addWidget(form.feedsAndSpeeds, layout.rowCount(), 0, 1, 2)
     _row(layout, "Coolant mode", form.coolantController)
     _row(layout, "Path", form.developedSketch, TOOLTIPS["DevelopedSketch"])
     for name, prop in SLOT_QUANTITIES[:1]:
@@ -218,6 +226,7 @@ class SlotPage(LivePage):
         self.plan = plan
         width = end_mill_diameter(self.planned_values.get("ToolController", self.obj.ToolController))
         self.picture.show(developed_path(plan, width) if plan is not None else None)
+        self.form.feedsAndSpeeds.setText(plan.cutting.describe() if plan is not None else "")
         self.show_warning_lines(list(plan.warnings) if plan is not None else [])
 
 

@@ -7,4 +7,4 @@
 
 from ....gui import icon_path
 
-ICON = icon_path("groove.svg")
+ICON = icon_path("check_turning.svg")

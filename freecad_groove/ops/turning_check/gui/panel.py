@@ -1,7 +1,9 @@
 """The Check turning task panel: verify_job() on a Job (check.py), the
 figures per op, and the resulting half section drawn in the 3D view over the
-part (preview.py). "Check again" (or the command once more) runs the check
-anew after a change; Close takes the drawing away.
+part (preview.py). "Stock" chooses what the ops start from (the Job's stock,
+or the part as turned: check.STOCKS; the figures' first note says which);
+"Check again" (or the command once more) runs the check anew after a change;
+Close takes the drawing away.
 """
 
 import FreeCAD
@@ -22,6 +24,17 @@ class TurningPanel:
         self.form = QtGui.QWidget()
         self.form.setWindowTitle(translate("FreeCADGroove_CheckTurning", "Turning check"))
         layout = QtGui.QVBoxLayout(self.form)
+        from ..check import STOCKS
+
+        self.stock = QtGui.QComboBox()
+        self.stock.setObjectName("stock")
+        self.stock.setToolTip(translate("FreeCADGroove_CheckTurning", "What the ops start from: the Job's stock, "
+                                        "or the part as turned (the model's contour plus the grooves' material), "
+                                        "which a grooving op assumes"))
+        for key, text in STOCKS.items():
+            self.stock.addItem(translate("FreeCADGroove_CheckTurning", "Stock: %s" % text), key)
+        self.stock.currentIndexChanged.connect(lambda *_a: self.check())
+        layout.addWidget(self.stock)
         self.figures = QtGui.QPlainTextEdit()
         self.figures.setObjectName("figures")
         self.figures.setReadOnly(True)
@@ -41,7 +54,7 @@ class TurningPanel:
         from ..check import TurningCheckError, verify_job
 
         try:
-            self.result = verify_job(self.job)
+            self.result = verify_job(self.job, stock=self.stock.currentData())
             text = self.result.summary()
         except TurningCheckError as e:
             self.result, text = None, str(e)
