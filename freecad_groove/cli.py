@@ -79,7 +79,7 @@ from .cli_parameters import add_parameter_options, parameter_lines
 from .cli_verify import add_verify_parsers
 from .cli_verify import run as run_verify
 from .engine import registry
-from .engine.input_controls import DIALECTS, INPUT_CONTROLS, input_control
+from .engine.dialects import DIALECTS, INPUT_CONTROLS, input_control
 from .engine.output.targets import TARGETS, program_target
 from .engine.registry import CALL, CycleEntry, CycleWord
 from .engine.warnings import CycleWarning, cycle_warnings

@@ -17,7 +17,7 @@ import re
 from typing import List, Tuple
 
 from .cli_options import add_settings_options, add_start_options, add_tool_table_option, not_negative, settings_from
-from .engine.input_controls import DIALECTS, INPUT_CONTROLS
+from .engine.dialects import DIALECTS, INPUT_CONTROLS
 from .engine.warnings import CycleWarning
 
 SHAPELY_MISSING = ("verify and plot need the Python package shapely (2.0 or newer): Debian/Ubuntu: "

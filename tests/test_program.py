@@ -10,8 +10,8 @@ from conftest import EXAMPLES, ROOT
 from hypothesis import given
 from hypothesis import strategies as st
 
+from freecad_groove.engine.dialects import DIALECTS, INPUT_CONTROLS
 from freecad_groove.engine.errors import ProgramError
-from freecad_groove.engine.input_controls import DIALECTS, INPUT_CONTROLS
 from freecad_groove.engine.moves import RAPID, GroovingTool, MachineState
 from freecad_groove.engine.reader import parse_block
 from freecad_groove.engine.settings import Settings

@@ -18,7 +18,7 @@ from freecad_groove.engine.cycle import Cycle
 from freecad_groove.engine.cycles import cycle93
 from freecad_groove.engine.cycles.ab_g77 import G77
 from freecad_groove.engine.cycles.cycle_words import read_block, word_value
-from freecad_groove.engine.input_controls import DIALECTS
+from freecad_groove.engine.dialects import DIALECTS
 from freecad_groove.engine.translator import translate_program
 
 

@@ -12,8 +12,8 @@ translator's business (translator.py).
 import re
 from typing import List, NamedTuple, NoReturn, Optional, Set, Tuple
 
+from .dialects import InputControl, input_control
 from .errors import ProgramError
-from .input_controls import InputControl, input_control
 from .numbers import digits_message, too_many_digits
 
 __all__ = ["Block", "Word", "parse_block"]

@@ -9,8 +9,8 @@ The handlers themselves are mixins on :class:`TranslatorBase`: motion
 
 from typing import Dict, List, NamedTuple, NoReturn, Optional, Set, Tuple, Union
 
+from .dialects import CYCLE, DIAMETER, DISTANCE, FEED_MODE, UNITS, InputControl, Units
 from .errors import ProgramError
-from .input_controls import CYCLE, DIAMETER, DISTANCE, FEED_MODE, UNITS, InputControl, Units
 from .mill_tool_table import MillToolTable
 from .modal import ModalState
 from .numbers import MAX_WORD, MM_PER_INCH

@@ -13,8 +13,8 @@ from typing import List, Optional, Sequence
 
 from .block_forms import CycleCall, OpenBlocks
 from .cycle import Cycle
+from .dialects import CYCLE, CYCLE_OPTIONS, MODE_GROUPS
 from .errors import CycleError, ProgramError
-from .input_controls import CYCLE, CYCLE_OPTIONS, MODE_GROUPS
 from .mill_tool_table import MillToolTable, diameter_for
 from .moves import MachineState, Move
 from .parameter_blocks import read_parameter_block

@@ -3,7 +3,7 @@ constant surface speed, M codes, dwell."""
 
 from typing import Callable, Dict, List, NamedTuple, Optional
 
-from .input_controls import (
+from .dialects import (
     CSS,
     DIAMETER_REGISTER,
     DWELL_LENGTH_SECONDS,

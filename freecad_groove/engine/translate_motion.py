@@ -4,7 +4,7 @@ X/U/Z/W, arc words and the checks on arcs and feed moves."""
 import math
 from typing import List, NamedTuple, Optional, Set
 
-from .input_controls import MOTION
+from .dialects import MOTION
 from .moves import ARCS, FEED, RAPID, Move
 from .numbers import ARC_IJK_TOLERANCE, ARC_R_TOLERANCE, MM_PER_INCH
 from .output.targets import TARGETS

@@ -4,8 +4,8 @@ the same, else its expanded moves after a comment with the reason."""
 
 from typing import List, Optional, Tuple
 
+from .dialects import DIAMETER_REGISTER
 from .errors import ProgramError
-from .input_controls import DIAMETER_REGISTER
 from .moves import GroovingTool, MachineState, Move
 from .native import NativeOutput, NotNative
 from .output.native import native_lines

@@ -125,8 +125,7 @@ on translate_base.py's helpers.
 import re
 from typing import Iterable, Iterator, List, Optional, Tuple, Union
 
-from .errors import CycleError, ProgramError
-from .input_controls import (
+from .dialects import (
     COMPENSATION,
     CYCLE,
     CYCLE_OPTIONS,
@@ -138,6 +137,7 @@ from .input_controls import (
     g_code_key,
     input_control,
 )
+from .errors import CycleError, ProgramError
 from .modal import TRACKED, ModalState
 from .moves import MachineState
 from .native import NativeOutput
