@@ -110,7 +110,7 @@ class MilltronicsCycle(Cycle):
     """The words and P parameters shared by G33 and G34 (see the module notes)."""
 
     NAME: ClassVar[str] = ""
-    CONTROLS: ClassVar[tuple] = ("milltronics",)
+    DIALECTS: ClassVar[tuple] = ("milltronics",)
     FORM: ClassVar[str] = G_WORD
     MEMORY: ClassVar[str] = "milltronics"  # the P parameters and the last R, for the next call
     MILL: ClassVar[bool] = True
