@@ -115,11 +115,11 @@ from typing import Any, Iterable, Optional, Sequence, Union
 import FreeCAD
 
 from .command_post import command_post_class, report_help, script_export
-from .controls import CONTROLS, Control, control_named
-from .errors import PostError
+from .lathe_posts import CONTROLS, Control, control_named
 from .objects import groove_op_of, job_of, label_of
 from .options import Options, make_parser, parse_options, tooltip
 from .pecking import PECKING_PROPERTIES
+from .post_error import PostError
 from .program import Program
 
 __all__ = ["CONTROLS", "PostError", "export", "build", "parse_options", "make_parser", "tooltip", "groove_op_of",

@@ -28,9 +28,9 @@ from typing import Any, Callable, List, Optional, Tuple
 
 import FreeCAD
 
-from .controls import control_named
-from .errors import PostError
+from .lathe_posts import control_named
 from .options import make_parser, parse_options, tooltip
+from .post_error import PostError
 from .program_file import write_program_file
 
 Sections = List[Tuple[str, str]]

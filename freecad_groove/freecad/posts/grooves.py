@@ -12,10 +12,10 @@ from ...engine.native.cycle93_pecking import retract_note
 from ...engine.numbers import MM_PER_INCH
 from ...ops.groove.cutting import CuttingData, cutting_data
 from ...ops.groove.properties import GrooveInputError
-from .controls import NATIVE_CYCLE93, NATIVE_PECKING
-from .errors import PostError
+from .lathe_posts import NATIVE_CYCLE93, NATIVE_PECKING
 from .objects import label_of
 from .pecking import NotNative, PeckingCall, PeckingCalls
+from .post_error import PostError
 from .reference_corner import corner_shift, shifted
 
 if TYPE_CHECKING:

@@ -30,7 +30,7 @@ from __future__ import annotations
 import re
 from typing import TYPE_CHECKING, Any, NamedTuple, Optional
 
-from .errors import PostError
+from .post_error import PostError
 
 if TYPE_CHECKING:
     from .program import Program

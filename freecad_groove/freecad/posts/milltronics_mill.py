@@ -39,10 +39,10 @@ from ...engine.mill_program import MillMoves, MillNative, MillToolChange, milltr
 from ...engine.moves import ARC_CCW, ARC_CW, FEED, RAPID, Move
 from ..units import SECONDS_PER_MINUTE
 from .command_post import each_part, post_class, reported, script_export
-from .errors import PostError
 from .milltronics_ops import NativeOp, recognise
 from .objects import is_fixture_block, is_job, is_tool_controller, job_of, label_of
 from .options import PostParser, split_arguments
+from .post_error import PostError
 
 POST = "milltronics_mill"
 TITLE = "Milltronics mill (Face and Pocket Shape ops as the G33/G34 autoroutines, other ops as moves)"

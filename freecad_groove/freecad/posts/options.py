@@ -11,10 +11,10 @@ from typing import List, Optional, Sequence, Tuple, Union
 
 from ...engine.cycles.cycle_words import DECIMALS as CYCLE_WORD_DECIMALS
 from ...engine.moves import REFERENCE_MINUS, REFERENCE_PLUS
-from .controls import NATIVE_CYCLE93, NATIVE_PECKING, Control, control_named
-from .errors import PostError
+from .lathe_posts import NATIVE_CYCLE93, NATIVE_PECKING, Control, control_named
 from .live_tool import add_options as add_live_tool_options
 from .live_tool import read_options as read_live_tool_options
+from .post_error import PostError
 
 MAX_PRECISION = 6
 MAX_PROGRAM_NUMBER = 9999

@@ -11,7 +11,7 @@ from ...engine import CycleError
 from ...engine.native import NotNative
 from ...engine.native.cycle93_pecking import PeckingCall, PeckingOutput, groove_span, pecking_calls, plain_reason
 from ...engine.numbers import MM_PER_INCH
-from .errors import cycle_post_error
+from .post_error import cycle_post_error
 
 if TYPE_CHECKING:
     from .program import Program

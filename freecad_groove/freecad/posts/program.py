@@ -10,12 +10,12 @@ from ...engine import CycleError, ProgramError
 from ...engine.numbers import MM_PER_INCH
 from ...engine.output.program import ProgramBuilder, Spindle
 from ...engine.output.writer import Writer
-from .controls import Control
-from .errors import PostError, cycle_post_error
 from .grooves import GrooveOutput, groove_cutting
+from .lathe_posts import Control
 from .objects import groove_op_of, is_fixture_block, is_job, is_tool_controller, label_of, op_property
 from .options import Options
 from .path_commands import PathCommands
+from .post_error import PostError, cycle_post_error
 from .slots import SlotOutput, is_slot_op
 
 MAX_RPM = 99999

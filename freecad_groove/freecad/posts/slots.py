@@ -25,9 +25,9 @@ from typing import TYPE_CHECKING, Any
 from ...engine.cycles.gsk_g7_1 import GskG7_1
 from ...engine.moves import FEED, RAPID, Move
 from . import live_tool
-from .controls import CONTROLS
-from .errors import PostError
+from .lathe_posts import CONTROLS
 from .objects import label_of
+from .post_error import PostError
 
 if TYPE_CHECKING:
     from .program import Program
