@@ -7,7 +7,7 @@ The program: a comment naming the Job, ``G21 G90 G40`` (``G20`` with
 
 - a tool change when the op's tool controller is not the one in force:
   ``G32`` (Z to the tool change position), ``T<n> M6``, ``S<rpm> M3`` (M4
-  for SpindleDir Reverse), ``D<n> G43 H<n>`` (as the seed's example: the
+  for SpindleDir Reverse), ``D<n> G43 H<n>`` (as the Milltronics manual's example: the
   diameter register G41/G42 and the autoroutines read, and the length
   offset, both numbered as the tool); the op's CoolantMode: M8 flood, M7
   mist before the op, M9 after it;
