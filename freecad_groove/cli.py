@@ -79,7 +79,7 @@ from .cli_parameters import add_parameter_options, parameter_lines
 from .cli_verify import add_verify_parsers
 from .cli_verify import run as run_verify
 from .engine import registry
-from .engine.input_controls import DIALECTS, INPUT_CONTROLS, input_control
+from .engine.dialects import DIALECTS, dialect_named
 from .engine.output.targets import TARGETS, program_target
 from .engine.registry import CALL, CycleEntry, CycleWord
 from .engine.warnings import CycleWarning, cycle_warnings
@@ -291,7 +291,7 @@ def _expand(args, warnings):
     name = program_name(args.program)
     check_not_the_program(args.output, args.program)
     try:  # a mill-style program for a lathe target, or the reverse: refused before anything is read
-        program_target(args.to, input_control(args.dialect).mill)
+        program_target(args.to, dialect_named(args.dialect).mill)
     except ValueError as exc:
         raise Failure(name, 0, "--to %s: %s" % (args.to, exc)) from None
     with open_program(args.program, name) as text:
@@ -379,9 +379,9 @@ def build_parser():
     ex.add_argument(
         "--dialect",
         required=True,
-        choices=DIALECTS,
+        choices=list(DIALECTS),
         help="the control the program is written for: "
-        + "; ".join("%s = %s" % (control.name, control.help) for control in INPUT_CONTROLS.values()),
+        + "; ".join("%s = %s" % (dialect.name, dialect.help) for dialect in DIALECTS.values()),
     )
     ex.add_argument(
         "--to",

@@ -17,7 +17,7 @@ import re
 from typing import List, Tuple
 
 from .cli_options import add_settings_options, add_start_options, add_tool_table_option, not_negative, settings_from
-from .engine.input_controls import DIALECTS, INPUT_CONTROLS
+from .engine.dialects import DIALECTS
 from .engine.warnings import CycleWarning
 
 SHAPELY_MISSING = ("verify and plot need the Python package shapely (2.0 or newer): Debian/Ubuntu: "
@@ -57,8 +57,8 @@ def add_verify_parsers(sub: argparse._SubParsersAction) -> None:
         parser = sub.add_parser(command, help=helptext, description=DESCRIPTION,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
         parser.add_argument("program", metavar="PROGRAM", help="the program to read; - reads standard input")
-        parser.add_argument("--dialect", required=True, choices=DIALECTS, help="the control the program is for: "
-                            + "; ".join("%s = %s" % (c.name, c.help) for c in INPUT_CONTROLS.values()))
+        parser.add_argument("--dialect", required=True, choices=list(DIALECTS), help="the control the program is for: "
+                            + "; ".join("%s = %s" % (d.name, d.help) for d in DIALECTS.values()))
         parser.add_argument("--stock", type=stock_option, metavar="D[xL]",
                             help="the bar: diameter D mm and optionally length L mm back from its face end "
                             "(default: a bar through the program's first approach point, see the README)")
@@ -85,7 +85,7 @@ def _check(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]):
     from .engine.errors import ProgramError
 
     name = program_name(args.program)
-    if INPUT_CONTROLS[args.dialect].mill:  # a grinder's X/Y/Z: no turned section to check it on
+    if DIALECTS[args.dialect].mill:  # a grinder's X/Y/Z: no turned section to check it on
         raise Failure(name, 0, "verify and plot check turning programs (the lathe's XZ section); %s programs "
                                 "are mill-style (X/Y/Z)" % args.dialect)
     try:

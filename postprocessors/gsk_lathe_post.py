@@ -18,17 +18,17 @@ except ModuleNotFoundError as _e:  # this folder added to the post path without 
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     from freecad_groove.freecad import posts as _posts
 
-CONTROL = "gsk"
+LATHE_POST = "gsk"
 UNITS = "G21"  # metric (FreeCAD's WrapperPost reads this)
-parser = _posts.make_parser(CONTROL)
-TOOLTIP = _posts.tooltip(CONTROL)
+parser = _posts.make_parser(LATHE_POST)
+TOOLTIP = _posts.tooltip(LATHE_POST)
 TOOLTIP_ARGS = parser.format_help()
 
 
 # CAM's Post Process command takes this class (named after the post) and reports a failed post in one line
-Gsk_Lathe = _posts.command_post_class(CONTROL)
+Gsk_Lathe = _posts.command_post_class(LATHE_POST)
 
 
 def export(objectslist, filename, argstring):
     """The program for ``objectslist``; ``filename`` "-" only returns it."""
-    return _posts.export(CONTROL, objectslist, filename, argstring)
+    return _posts.export(LATHE_POST, objectslist, filename, argstring)

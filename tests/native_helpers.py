@@ -21,7 +21,7 @@ def native(program, dialect, target, settings=BLADE, **kw):
 
 
 def reader_of(target):
-    """The input control that reads a program written for ``target`` (its own dialect)."""
+    """The dialect that reads a program written for ``target`` (the target's own)."""
     return TARGETS[target].native.dialect or target
 
 

@@ -132,7 +132,7 @@ class ToyPlunge(Cycle):
 
     NAME: ClassVar[str] = "G79"
     KEY: ClassVar[str] = "toy-g79"
-    CONTROLS: ClassVar[tuple] = ("ab9",)
+    DIALECTS: ClassVar[tuple] = ("ab9",)
     TITLE: ClassVar[str] = "a toy plunge"
     FORM: ClassVar[str] = registry.G_WORD
     WORD_HELP: ClassVar[tuple] = (("X", "plunge bottom X (diameter)"), ("F", "feed of the plunge"))
@@ -164,7 +164,7 @@ def _declared(**attributes):
 
 @pytest.mark.parametrize("attributes, error", [
     ({"KEY": ""}, "KEY must be given"),
-    ({"CONTROLS": ()}, "CONTROLS must be given"),
+    ({"DIALECTS": ()}, "DIALECTS must be given"),
     ({"FORM": "words"}, "FORM must be one of call, g-word"),
     ({"COUNTED": ("P",)}, "COUNTED P is not one of its words"),
     ({"BLOCKS": RetractBlock}, "RETRACT_BLOCK '' must be one of its words (X, F)"),
@@ -184,14 +184,14 @@ def test_register_refuses_a_declaration_that_breaks_the_protocol(monkeypatch, at
 
 
 def test_register_refuses_a_class_that_does_not_derive_from_cycle():
-    plain = type("Plain", (), {"NAME": "G79", "KEY": "plain", "CONTROLS": ("ab9",), "TITLE": "t",
+    plain = type("Plain", (), {"NAME": "G79", "KEY": "plain", "DIALECTS": ("ab9",), "TITLE": "t",
                                "FORM": registry.G_WORD, "WORD_HELP": ()})
     with pytest.raises(ValueError, match="cycle Plain: does not derive from engine.cycle.Cycle"):
         registry.register(plain)
 
 
 def test_a_cycle_without_parse_emit_expand_is_refused():
-    bare = type("Bare", (Cycle,), {"NAME": "G79", "KEY": "bare", "CONTROLS": ("ab9",), "TITLE": "t",
+    bare = type("Bare", (Cycle,), {"NAME": "G79", "KEY": "bare", "DIALECTS": ("ab9",), "TITLE": "t",
                                    "FORM": registry.G_WORD})
     assert registry.declaration_errors(bare) == ["parse must be given", "emit must be given", "expand must be given"]
 
@@ -280,7 +280,7 @@ def _declared_row(entry):
     key = entry.key + (" (%s)" % ", ".join(entry.aliases) if entry.aliases else "")
     also = (["RETRACT_BLOCK " + cls.RETRACT_BLOCK] if cls.RETRACT_BLOCK else []) + [
         name for name, flag in (("NEEDS_BLADE", cls.NEEDS_BLADE), ("MILL", cls.MILL), ("Z_ONLY", cls.Z_ONLY)) if flag]
-    return [entry.name, key, ", ".join(entry.controls), "CALL" if entry.form == registry.CALL else "G_WORD",
+    return [entry.name, key, ", ".join(entry.dialects), "CALL" if entry.form == registry.CALL else "G_WORD",
             cls.BLOCKS.__name__, cls.MEMORY, " ".join(cls.PARAMETERS), ", ".join(also),
             cls.__module__.rsplit(".", 1)[1] + ".py"]
 

@@ -18,12 +18,12 @@ from freecad_groove.engine.cycle import Cycle
 from freecad_groove.engine.cycles import cycle93
 from freecad_groove.engine.cycles.ab_g77 import G77
 from freecad_groove.engine.cycles.cycle_words import read_block, word_value
-from freecad_groove.engine.input_controls import DIALECTS
+from freecad_groove.engine.dialects import DIALECTS
 from freecad_groove.engine.translator import translate_program
 
 
-def test_every_input_control_calls_its_grooving_cycles():
-    calls = {control: sorted(e.name for e in registry.cycles_of(control)) for control in DIALECTS}
+def test_every_dialect_calls_its_grooving_cycles():
+    calls = {dialect: sorted(e.name for e in registry.cycles_of(dialect)) for dialect in DIALECTS}
     assert calls == {
         "sinumerik": ["CYCLE93"],
         "ab9": ["G76", "G77"],
@@ -35,7 +35,7 @@ def test_every_input_control_calls_its_grooving_cycles():
     }
 
 
-def test_a_cycle_is_found_by_control_and_code_and_by_command_line_name():
+def test_a_cycle_is_found_by_dialect_and_code_and_by_command_line_name():
     assert registry.cycle_for("fanuc", "g75").__name__ == "FanucG75"
     assert registry.cycle_for("haas", "G75").__name__ == "HaasG75"
     assert registry.entry("g77").key == "ab-g77"
@@ -73,7 +73,7 @@ class ToyPlunge(Cycle):
     NAME: ClassVar[str] = "G79"
     KEY: ClassVar[str] = "toy-g79"
     ALIASES: ClassVar[tuple] = ("g79",)
-    CONTROLS: ClassVar[tuple] = ("ab9",)
+    DIALECTS: ClassVar[tuple] = ("ab9",)
     TITLE: ClassVar[str] = "a toy plunge"
     FORM: ClassVar[str] = registry.G_WORD
     WORD_HELP: ClassVar[tuple] = (("X", "plunge bottom X (diameter)"), ("F", "feed of the plunge"))
@@ -113,12 +113,12 @@ def test_without_its_registration_the_reader_refuses_the_toy_code():
         translate_program(PROGRAM, "ab9")
 
 
-def test_a_registered_cycle_is_read_and_expanded_in_its_controls_programs(toy_registered):
+def test_a_registered_cycle_is_read_and_expanded_in_its_dialects_programs(toy_registered):
     lines = translate_program(PROGRAM, "ab9").splitlines()
     # worked by hand: the comment naming the call, the plunge to X40 at F0.1, the rapid back to X50
     assert lines[-4:] == ["(G79 X40. F0.1)", "G1 X40. F0.1", "G0 X50.", "M2"]
     with pytest.raises(ProgramError, match="G79 is not supported"):
-        translate_program(PROGRAM.replace("G21 G90 G95", "G21 G99"), "fanuc")  # not one of its CONTROLS
+        translate_program(PROGRAM.replace("G21 G90 G95", "G21 G99"), "fanuc")  # not one of its DIALECTS
 
 
 def test_a_registered_cycle_is_on_the_command_line(toy_registered):

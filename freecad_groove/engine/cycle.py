@@ -35,7 +35,7 @@ class Cycle:
     """A canned cycle: its declaration (class attributes) and its hooks (methods).
 
     A subclass is a frozen dataclass whose fields are the call's words; it
-    sets NAME, KEY, CONTROLS, TITLE, FORM and WORD_HELP, and gives parse,
+    sets NAME, KEY, DIALECTS, TITLE, FORM and WORD_HELP, and gives parse,
     emit and expand. Everything else has the default written here.
     """
 
@@ -44,7 +44,7 @@ class Cycle:
     NAME: ClassVar[str] = ""  # required: the code as the control writes it: "CYCLE93", "G77"
     KEY: ClassVar[str] = ""  # required: its name on the command line: "cycle93", "ab-g77"
     ALIASES: ClassVar[Tuple[str, ...]] = ()  # other command-line names: ("g77",)
-    CONTROLS: ClassVar[Tuple[str, ...]] = ()  # required: the input controls whose programs call it: ("ab9",)
+    DIALECTS: ClassVar[Tuple[str, ...]] = ()  # required: the dialects whose programs call it: ("ab9",)
     TITLE: ClassVar[str] = ""  # required: one line for help texts
     FORM: ClassVar[str] = ""  # required: how its block is recognised: CALL or G_WORD
     WORD_HELP: ClassVar[Tuple[Tuple[str, str], ...]] = ()  # (word, help text), in the order emit() writes them
@@ -53,7 +53,7 @@ class Cycle:
     # -- the declaration: how the translator runs it -------------------------------------------------
 
     NEEDS_BLADE: ClassVar[bool] = False  # its moves depend on the blade: expanded only with a known one (CYCLE93)
-    MILL: ClassVar[bool] = False  # mill-style moves (X plain, Y set): a mill-style control's, on the mill twins
+    MILL: ClassVar[bool] = False  # mill-style moves (X plain, Y set): a mill-style dialect's, on the mill twins
     Z_ONLY: ClassVar[bool] = False  # one rapid of Z alone: needs no start point, only the units (Milltronics G31)
     BLOCKS: ClassVar[Type[BlockForm]] = SingleBlock  # how its call is written over blocks (block_forms.py)
     RETRACT_BLOCK: ClassVar[str] = ""  # BLOCKS = RetractBlock: the letter of the first block "NAME R(e)"

@@ -19,7 +19,7 @@ class ModalState:
     x: Optional[float] = None
     z: Optional[float] = None
     c: Optional[float] = None  # the rotary C axis in degrees (GSK), None = unknown
-    y: Optional[float] = None  # mill-style programs (InputControl.mill)
+    y: Optional[float] = None  # mill-style programs (Dialect.mill)
     motion: Optional[str] = None  # RAPID, FEED, "G2", "G3"
     incremental: bool = False  # G91 (Siemens, AB)
     diameter: bool = True  # X words are diameters

@@ -4,8 +4,8 @@ that follow (Milltronics G33/G34 read P150-P155 so).
 A cycle declares the parameters it reads as ``PARAMETERS`` and the program
 memory they are kept in as ``MEMORY`` (program_memory.py); its
 ``with_earlier`` takes them from there. The reader splits the assignments off
-(``Block.parameters``) where the input control has them
-(``InputControl.parameter_assignments``); the translator hands such a block
+(``Block.parameters``) where the dialect has them
+(``Dialect.parameter_assignments``); the translator hands such a block
 to :func:`read_parameter_block`.
 """
 
@@ -29,11 +29,11 @@ def read_parameter_block(translator: CycleTranslation, block: Block) -> None:
     name, text = block.parameters[0]
     if block.words or block.keywords or block.call or len(block.parameters) > 1:
         translator._fail("%s=%s: a parameter assignment stands alone in its block" % (name, text))
-    readers = [entry.cycle_class for entry in translator.control.cycles() if entry.cycle_class.PARAMETERS]
+    readers = [entry.cycle_class for entry in translator.dialect.cycles() if entry.cycle_class.PARAMETERS]
     known = tuple(dict.fromkeys(parameter for cycle in readers for parameter in cycle.PARAMETERS))
     key = "P%d" % int(name[1:]) if name[1:].isdigit() else name
     if key not in known:
-        translator._fail("%s=%s: not a parameter of the %s cycles (%s)" % (name, text, translator.control.maker,
+        translator._fail("%s=%s: not a parameter of the %s cycles (%s)" % (name, text, translator.dialect.maker,
                                                                           ", ".join(known) or "none"))
     value = float(text)
     if not abs(value) < MAX_WORD:

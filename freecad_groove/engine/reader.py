@@ -2,18 +2,18 @@
 
     parse_block(text, dialect, line) -> Block
 
-A *dialect* is the input control a program is written for ("sinumerik",
-"ab9", "fanuc", "haas"); what the tokenizer needs of it (Siemens names: the
+A *dialect* is the control a program is read as ("sinumerik", "ab9",
+"fanuc", "haas", ...); what the tokenizer needs of it (Siemens names: the
 keywords, ``NAME=`` assignments, the ``NAME(...)`` calls of the registered
-cycles) is in its InputControl (input_controls.py). What the words mean is the
+cycles) is in its Dialect (dialects.py). What the words mean is the
 translator's business (translator.py).
 """
 
 import re
 from typing import List, NamedTuple, NoReturn, Optional, Set, Tuple
 
+from .dialects import Dialect, dialect_named
 from .errors import ProgramError
-from .input_controls import InputControl, input_control
 from .numbers import digits_message, too_many_digits
 
 __all__ = ["Block", "Word", "parse_block"]
@@ -80,16 +80,16 @@ _NOT_EVALUATED = "must be followed by a number (parameters and expressions are n
 
 def parse_block(text: str, dialect: str, line: int = 1) -> Block:
     """Read one line of a ``dialect`` program into a Block (raises ProgramError)."""
-    return _BlockReader(text, input_control(dialect), line).read()
+    return _BlockReader(text, dialect_named(dialect), line).read()
 
 
 class _BlockReader:
     """A cursor over one line while parse_block reads it."""
 
-    def __init__(self, text: str, control: InputControl, line: int) -> None:
+    def __init__(self, text: str, dialect: Dialect, line: int) -> None:
         self.text = text
         self.end = len(text)
-        self.control = control
+        self.dialect = dialect
         self.block = Block(line, text)
         self.pos = 0
         self.first_word = True
@@ -155,10 +155,10 @@ class _BlockReader:
     def read_letter_word(self, letter: str, after: int) -> None:
         """``X80``, ``X 80`` (Siemens also ``X=80``) and the block number ``N10``."""
         self.pos = self.skip_space(after)
-        if self.control.long_names and self.char(self.pos) == "=":
+        if self.dialect.long_names and self.char(self.pos) == "=":
             self.pos = self.skip_space(self.pos + 1)
         number = self.read_number(letter, "%s %s" % (letter, _NOT_EVALUATED))
-        if letter == "P" and self.control.parameter_assignments and self.char(self.skip_space(self.pos)) == "=":
+        if letter == "P" and self.dialect.parameter_assignments and self.char(self.skip_space(self.pos)) == "=":
             self.pos = self.skip_space(self.skip_space(self.pos) + 1)
             name = "P" + number
             self.block.parameters.append((name, self.read_number(name + "=", "%s= %s" % (name, _NOT_EVALUATED))))
@@ -174,18 +174,18 @@ class _BlockReader:
 
     def read_name(self, letters: "re.Match[str]") -> None:
         """A Siemens name: a keyword, a cycle call or an assignment."""
-        if not self.control.long_names:
+        if not self.dialect.long_names:
             self.fail("cannot read %r: a word is one letter and a number" % self.text[self.pos:self.pos + 12])
         tail = _IDENT_TAIL.match(self.text, letters.end())
         name = (letters.group() + tail.group()).upper()
         self.pos = tail.end()
-        if name in self.control.keywords:
+        if name in self.dialect.keywords:
             self.block.keywords.append(name)
             return
         after = self.skip_space(self.pos)
         if self.char(after) == "(":
             self.read_call(name, after)
-        elif name in self.control.assignments:
+        elif name in self.dialect.assignments:
             if self.char(after) != "=":
                 self.fail("%s must be followed by '=' and a number" % name)
             self.pos = self.skip_space(after + 1)
@@ -196,7 +196,7 @@ class _BlockReader:
 
     def read_call(self, name: str, opening: int) -> None:
         """``NAME(...)`` from the opening parenthesis at ``opening``."""
-        names = self.control.call_names()
+        names = self.dialect.call_names()
         if name not in names:
             self.fail("%s(...) is not supported (only %s)" % (name, ", ".join(names)))
         if self.block.call is not None:

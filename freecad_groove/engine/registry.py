@@ -2,7 +2,7 @@
 
 A cycle class derives from ``cycle.Cycle``, which names everything the rest of
 the project reads of a cycle, with its default: the declaration (NAME, KEY,
-ALIASES, CONTROLS, TITLE, FORM, WORD_HELP, COUNTED, NEEDS_BLADE, MILL,
+ALIASES, DIALECTS, TITLE, FORM, WORD_HELP, COUNTED, NEEDS_BLADE, MILL,
 Z_ONLY, BLOCKS, RETRACT_BLOCK, MEMORY, MEMORY_WHAT, PARAMETERS) and the hooks
 (parse, emit, validate, expand, warnings, note, the memory hooks
 with_earlier/remembered, the region hooks region_ends/check_region_block).
@@ -42,7 +42,7 @@ class CycleEntry:
 
     key: str
     name: str
-    controls: Tuple[str, ...]
+    dialects: Tuple[str, ...]
     title: str
     form: str
     words: Tuple[CycleWord, ...]
@@ -61,7 +61,7 @@ def declaration_errors(cls: type) -> List[str]:
     if not (isinstance(cls, type) and issubclass(cls, Cycle)):
         return ["does not derive from engine.cycle.Cycle"]
     errors = ["%s must be given" % name for name, value in (("NAME", cls.NAME), ("KEY", cls.KEY),
-                                                           ("CONTROLS", cls.CONTROLS), ("TITLE", cls.TITLE))
+                                                           ("DIALECTS", cls.DIALECTS), ("TITLE", cls.TITLE))
               if not value]
     if cls.FORM not in FORMS:
         errors.append("FORM must be one of %s" % ", ".join(FORMS))
@@ -91,7 +91,7 @@ def register(cls: Type[Cycle]) -> Type[Cycle]:
     entry = CycleEntry(
         key=cls.KEY,
         name=cls.NAME,
-        controls=tuple(cls.CONTROLS),
+        dialects=tuple(cls.DIALECTS),
         title=cls.TITLE,
         form=cls.FORM,
         words=tuple(CycleWord(word, text, word in counted) for word, text in cls.WORD_HELP),
@@ -106,8 +106,8 @@ def register(cls: Type[Cycle]) -> Type[Cycle]:
             raise ValueError("cycle key %r is registered twice (%s, %s)" % (key, known.cycle_class.__name__,
                                                                            cls.__name__))
     for other in _ENTRIES:
-        if other.cycle_class is not cls and other.name == entry.name and set(other.controls) & set(entry.controls):
-            raise ValueError("%s is registered twice for %s" % (entry.name, ", ".join(entry.controls)))
+        if other.cycle_class is not cls and other.name == entry.name and set(other.dialects) & set(entry.dialects):
+            raise ValueError("%s is registered twice for %s" % (entry.name, ", ".join(entry.dialects)))
     if all(e.cycle_class is not cls for e in _ENTRIES):
         _ENTRIES.append(entry)
     for key in (entry.key,) + entry.aliases:
@@ -126,9 +126,9 @@ def cycles() -> Tuple[CycleEntry, ...]:
     return tuple(_ENTRIES)
 
 
-def cycles_of(control: str) -> Tuple[CycleEntry, ...]:
-    """The cycles an input control's programs may call."""
-    return tuple(e for e in cycles() if control in e.controls)
+def cycles_of(dialect: str) -> Tuple[CycleEntry, ...]:
+    """The cycles a ``dialect``'s programs may call."""
+    return tuple(e for e in cycles() if dialect in e.dialects)
 
 
 def entry(key: str) -> CycleEntry:
@@ -140,10 +140,10 @@ def entry(key: str) -> CycleEntry:
         raise ValueError("unknown cycle %r (known: %s)" % (key, ", ".join(sorted(_BY_KEY)))) from None
 
 
-def cycle_for(control: str, name: str) -> Type[Cycle]:
-    """The cycle class a ``control`` program calls as ``name`` ("CYCLE93", "G77");
-    ValueError when that control has no such cycle."""
-    for e in cycles_of(control):
+def cycle_for(dialect: str, name: str) -> Type[Cycle]:
+    """The cycle class a ``dialect`` program calls as ``name`` ("CYCLE93", "G77");
+    ValueError when that dialect has no such cycle."""
+    for e in cycles_of(dialect):
         if e.name == name.upper():
             return e.cycle_class
-    raise ValueError("%s is not a cycle of %s programs" % (name, control))
+    raise ValueError("%s is not a cycle of %s programs" % (name, dialect))

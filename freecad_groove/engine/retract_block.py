@@ -57,7 +57,7 @@ class RetractBlock(BlockForm):
         translator._length(words[0])
         translator.state.retract_e = words[0]
         translator._defined.add("retract_e")
-        kinds = "/".join(other.name for other in translator.control.cycles() if other.retract_block)
+        kinds = "/".join(other.name for other in translator.dialect.cycles() if other.retract_block)
         note = "%s %s%s: peck retract e for the next %s" % (entry.name, letter, words[0].text, kinds)
         translator._emit_line(block, [], note)
 

@@ -9,8 +9,8 @@ The handlers themselves are mixins on :class:`TranslatorBase`: motion
 
 from typing import Dict, List, NamedTuple, NoReturn, Optional, Set, Tuple, Union
 
+from .dialects import CYCLE, DIAMETER, DISTANCE, FEED_MODE, UNITS, Dialect, Units
 from .errors import ProgramError
-from .input_controls import CYCLE, DIAMETER, DISTANCE, FEED_MODE, UNITS, InputControl, Units
 from .mill_tool_table import MillToolTable
 from .modal import ModalState
 from .numbers import MAX_WORD, MM_PER_INCH
@@ -38,7 +38,7 @@ Groups = Dict[str, ActiveCode]  # modal group -> the block's G code in it
 class TranslatorBase:
     """The translator's state and shared helpers (see the module notes)."""
 
-    control: InputControl
+    dialect: Dialect  # what the program's codes mean (--dialect)
     settings: Settings
     tools: Optional[Tools]  # the blade of each tool number, or None
     state: ModalState
@@ -57,7 +57,7 @@ class TranslatorBase:
 
     def _length(self, word: Word) -> float:
         """The value of a length/feed word, refusing Fanuc-style integers."""
-        if self.control.decimal_point and "." not in word.text and word.value != 0:
+        if self.dialect.decimal_point and "." not in word.text and word.value != 0:
             self._fail(
                 "%s%s needs a decimal point: without one the control reads it in least input increments "
                 "or per its zero-suppression parameter; write %s%s." % (word.letter, word.text, word.letter, word.text)

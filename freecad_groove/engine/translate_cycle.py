@@ -13,8 +13,8 @@ from typing import List, Optional, Sequence
 
 from .block_forms import CycleCall, OpenBlocks
 from .cycle import Cycle
+from .dialects import CYCLE, CYCLE_OPTIONS, MODE_GROUPS
 from .errors import CycleError, ProgramError
-from .input_controls import CYCLE, CYCLE_OPTIONS, MODE_GROUPS
 from .mill_tool_table import MillToolTable, diameter_for
 from .moves import MachineState, Move
 from .parameter_blocks import read_parameter_block
@@ -44,7 +44,7 @@ class CycleTranslation(TranslatorBase):
         if output:
             self._emit(" ".join(output))
             self._sync_writer()
-        entry = self.control.cycle(call.name)
+        entry = self.dialect.cycle(call.name)
         entry.cycle_class.BLOCKS.read_call(self, block, entry, call)
 
     def run_cycle(self, block: Block, entry: CycleEntry, call: CycleCall, label: str) -> None:
@@ -166,20 +166,20 @@ class CycleTranslation(TranslatorBase):
         if z_only:
             self._not_ambiguous("metric", why=name)
             return
-        if state.x is None or state.z is None or (self.control.mill and state.y is None):
+        if state.x is None or state.z is None or (self.dialect.mill and state.y is None):
             self._fail("%s needs its start point: program an absolute %s before the call"
-                       % (name, "X, Y and Z" if self.control.mill else "X and Z"))
+                       % (name, "X, Y and Z" if self.dialect.mill else "X and Z"))
         self._not_ambiguous("x", "y", "z", "feed", "feed_per_rev", "metric", "diameter", "diam90", "incremental",
                             why=name)
         if state.feed_per_rev is None:
-            self._fail("%s before the feed mode is programmed (%s)" % (name, self.control.feed_mode_codes))
+            self._fail("%s before the feed mode is programmed (%s)" % (name, self.dialect.feed_mode_codes))
         if state.siemens_g70:
             self._fail("%s in Siemens G70 (feed in the basic system): use G700" % name)
         self._check_spindle_for_feed(name)
 
     def _after_cycle(self, moves: Sequence[Move]) -> None:
         """The position of the last move, the last feed written; the motion mode
-        the one before the cycle or unknown (InputControl.cycle_keeps_motion)."""
+        the one before the cycle or unknown (Dialect.cycle_keeps_motion)."""
         state = self.state
         feeds = [move.f for move in moves if move.f is not None]
         if moves:
@@ -196,6 +196,6 @@ class CycleTranslation(TranslatorBase):
             state.feed = float(feeds[-1])
             self._defined.add("feed")
         self._defined |= {"x", "z"}
-        if not self.control.cycle_keeps_motion:
+        if not self.dialect.cycle_keeps_motion:
             state.motion = None
             self._defined.add("motion")

@@ -3,7 +3,7 @@ constant surface speed, M codes, dwell."""
 
 from typing import Callable, Dict, List, NamedTuple, Optional
 
-from .input_controls import (
+from .dialects import (
     CSS,
     DIAMETER_REGISTER,
     DWELL_LENGTH_SECONDS,
@@ -71,7 +71,7 @@ class MachineTranslation(TranslatorBase):
 
     def _tool(self, block: Block, output: List[str]) -> None:
         """T (and Siemens D): a tool change, written as T M6 G43 (Fanuc output: T0101)."""
-        if self.control.tool_words == DIAMETER_REGISTER:
+        if self.dialect.tool_words == DIAMETER_REGISTER:
             self._mill_tool_change(block, output)  # D is read by _diameter_register
             return
         tool_word = block.get("T")
@@ -84,7 +84,7 @@ class MachineTranslation(TranslatorBase):
             TOOL_AND_EDGE: self._tool_and_edge,
             TOOL_AND_OFFSET: self._tool_and_offset,
         }
-        selection = readers[self.control.tool_words](tool_word, edge_word)
+        selection = readers[self.dialect.tool_words](tool_word, edge_word)
         state = self.state
         in_place = state.tool
         state.x = state.y = state.z = None
@@ -252,7 +252,7 @@ class MachineTranslation(TranslatorBase):
         in_group: Dict[str, int] = {}
         for word in block.all("M"):
             code = self._integer(word)
-            if code == 6 and self.control.tool_words == DIAMETER_REGISTER:
+            if code == 6 and self.dialect.tool_words == DIAMETER_REGISTER:
                 continue  # written by _mill_tool_change
             group = M_GROUPS.get(code)
             if group is None:
@@ -284,19 +284,19 @@ class MachineTranslation(TranslatorBase):
     # -- dwell ----------------------------------------------------------------------------
 
     def _dwell_block(self, block: Block) -> None:
-        """G4 with its time word, read as the input control reads it."""
-        control = self.control
+        """G4 with its time word, read as the dialect reads it."""
+        dialect = self.dialect
         others = [word for word in block.words if word.letter != "G"]
         if len(block.all("G")) > 1 or block.keywords:
             self._fail("G4 must be alone in its block (with its time word)")
-        if control.dwell_unsupported:
-            self._fail(control.dwell_unsupported)
+        if dialect.dwell_unsupported:
+            self._fail(dialect.dwell_unsupported)
         if len(others) != 1:
             self._fail("G4 needs exactly one time word")
         word = others[0]
-        if word.letter in control.dwell_refusals:
-            self._fail(control.dwell_refusals[word.letter])
-        reading = control.dwell_words.get(word.letter)
+        if word.letter in dialect.dwell_refusals:
+            self._fail(dialect.dwell_refusals[word.letter])
+        reading = dialect.dwell_words.get(word.letter)
         if reading is None:
             self._fail("G4 %s%s: not a dwell word of this control" % (word.letter, word.text))
         seconds = self._dwell_seconds(reading, word)

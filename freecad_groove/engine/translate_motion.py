@@ -4,7 +4,7 @@ X/U/Z/W, arc words and the checks on arcs and feed moves."""
 import math
 from typing import List, NamedTuple, Optional, Set
 
-from .input_controls import MOTION
+from .dialects import MOTION
 from .moves import ARCS, FEED, RAPID, Move
 from .numbers import ARC_IJK_TOLERANCE, ARC_R_TOLERANCE, MM_PER_INCH
 from .output.targets import TARGETS
@@ -91,7 +91,7 @@ class MotionTranslation(TranslatorBase):
         has_centre = bool(arc_letters & {"I", "K"})
         has_radius = bool(arc_letters & {"R", "CR"})
         if has_centre == has_radius:
-            self._fail("G2/G3 needs either I/K (centre) or the radius (%s)" % self.control.arc_radius_word)
+            self._fail("G2/G3 needs either I/K (centre) or the radius (%s)" % self.dialect.arc_radius_word)
         radius_word = block.get("R") or block.get("CR")
         if radius_word is not None:
             radius = self._finite_length(radius_word)
@@ -111,7 +111,7 @@ class MotionTranslation(TranslatorBase):
         """A feed move needs the feed mode, a feed rate and (per revolution) the spindle."""
         state = self.state
         if state.feed_per_rev is None:
-            self._fail("feed move before the feed mode is programmed (%s)" % self.control.feed_mode_codes)
+            self._fail("feed move before the feed mode is programmed (%s)" % self.dialect.feed_mode_codes)
         self._not_ambiguous("feed_per_rev", why="the feed mode")
         if state.siemens_g70:
             self._fail("feed move in Siemens G70 (feed in the basic system): use G700")

@@ -4,8 +4,8 @@ the same, else its expanded moves after a comment with the reason."""
 
 from typing import List, Optional, Tuple
 
+from .dialects import DIAMETER_REGISTER
 from .errors import ProgramError
-from .input_controls import DIAMETER_REGISTER
 from .moves import GroovingTool, MachineState, Move
 from .native import NativeOutput, NotNative
 from .output.native import native_lines
@@ -45,7 +45,7 @@ class NativeCycleTranslation(TranslatorBase):
             return None
 
     def _native_register(self) -> Optional[int]:
-        """The Milltronics D register in force (None: none programmed, or another control)."""
-        if self.control.tool_words != DIAMETER_REGISTER or "tool" in self.state.ambiguous - self._defined:
+        """The Milltronics D register in force (None: none programmed, or another dialect)."""
+        if self.dialect.tool_words != DIAMETER_REGISTER or "tool" in self.state.ambiguous - self._defined:
             return None
         return self.state.tool

@@ -114,8 +114,8 @@ Choices where the manuals are silent (each has a test)
 
 Where the parts are
 -------------------
-reader.py reads lines into words; input_controls.py says what each input
-control's codes mean (an InputControl per dialect); modal.py holds the
+reader.py reads lines into words; dialects.py says what each dialect's
+codes mean (a Dialect per --dialect); modal.py holds the
 ModalState; this module reads a program block by block, with the handlers of
 translate_motion.py (G0..G3, axis words, arcs), translate_machine.py (F,
 tools, spindle, M codes, dwell) and translate_cycle.py (the registered cycles)
@@ -125,8 +125,7 @@ on translate_base.py's helpers.
 import re
 from typing import Iterable, Iterator, List, Optional, Tuple, Union
 
-from .errors import CycleError, ProgramError
-from .input_controls import (
+from .dialects import (
     COMPENSATION,
     CYCLE,
     CYCLE_OPTIONS,
@@ -135,9 +134,10 @@ from .input_controls import (
     OFFSET,
     PLANE,
     REFUSED,
+    dialect_named,
     g_code_key,
-    input_control,
 )
+from .errors import CycleError, ProgramError
 from .modal import TRACKED, ModalState
 from .moves import MachineState
 from .native import NativeOutput
@@ -169,24 +169,23 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
     def __init__(self, dialect: str, settings: Settings = DEFAULT_SETTINGS, target: str = "linuxcnc",
                  source_name: str = "PROGRAM", start: Optional[MachineState] = None,
                  tools: Optional[Tools] = None, native_cycles: bool = False) -> None:
-        self.control = input_control(dialect)  # raises on an unknown dialect
+        self.dialect = dialect_named(dialect)  # raises on an unknown dialect
         # a mill-style program (X/Y/Z) on a mill target or a lathe target's mill twin; raises when there is none
-        output_target = with_g07_meaning(program_target(target, self.control.mill), settings.ab_g07_is_diameter)
-        self.dialect = dialect
+        output_target = with_g07_meaning(program_target(target, self.dialect.mill), settings.ab_g07_is_diameter)
         self.settings = settings
         self.tools = tools
         self.target = output_target.name
         self.source_name = source_name
-        self.codes = self.control.code_table()
+        self.codes = self.dialect.code_table()
         state = ModalState()
         if start is not None:
             state.diameter = bool(start.diameter_mode)
             state.incremental = bool(start.incremental)
             state.metric = bool(start.metric)
             state.feed_per_rev = start.feed_per_rev
-        if self.control.mill:
+        if self.dialect.mill:
             state.diameter = False  # X is a plain coordinate
-        if self.control.feed_per_minute and state.feed_per_rev is None:
+        if self.dialect.feed_per_minute and state.feed_per_rev is None:
             state.feed_per_rev = False  # a mill feeds per minute (Milltronics: no G94 in its programs)
         self.state = state
         self.start_metric = state.metric
@@ -205,7 +204,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
         """Read one line (``number`` is its 1-based line number)."""
         self._line = number
         self.last_line = number
-        block = parse_block(text, self.dialect, number)
+        block = parse_block(text, self.dialect.name, number)
         limit = self.writer.target.max_block_number
         if block.number is not None and limit is not None and block.number > limit:
             self._fail("N%d: a %s block number has at most %d digits" % (block.number, self.writer.target.maker,
@@ -273,7 +272,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
             self._plain_block(block, groups)
 
     def _g_codes(self, block: Block) -> Groups:
-        """The block's G codes by modal group, from the input control's table."""
+        """The block's G codes by modal group, from the dialect's table."""
         groups: Groups = {}
         for word in block.all("G"):
             key = g_code_key(word.text)
@@ -282,7 +281,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
                            % word.text)
             code = self.codes.get(key)
             if code is None:
-                self._fail("G%s is not supported in a %s program" % (word.text, self.dialect))
+                self._fail("G%s is not supported in a %s program" % (word.text, self.dialect.name))
             if code.group == REFUSED:
                 self._fail("G%s: %s" % (word.text, code.value))
             if code.group in groups:
@@ -291,8 +290,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
         return groups
 
     def _program_number(self, block: Block) -> None:
-        if not self.control.program_numbers:
-            self._fail("O is not a %s word" % self.control.maker)
+        if not self.dialect.program_numbers:
+            self._fail("O is not a %s word" % self.dialect.maker)
         if len(block.words) > 1 or block.keywords or block.call or block.number is not None:
             self._fail("the O program number must be alone in its block")
         if self.started or self.program_number is not None:
@@ -308,7 +307,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
         for group in CYCLE_OPTIONS:
             if group in groups:
                 self._fail("G%s: only a cycle's block (%s) may hold it" % (
-                    groups[group].word.text, "/".join(entry.name for entry in self.control.cycles())))
+                    groups[group].word.text, "/".join(entry.name for entry in self.dialect.cycles())))
         early: List[str] = []  # Fanuc output: blocks that must stand alone before this one
         output: List[str] = []
         self._modes(block, groups, output, early)
@@ -329,7 +328,7 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
         if feed_word is not None:
             output.append(self.writer.feed_word(state.feed))
         self._stops_and_ends(stops_and_ends, output)
-        note = self._diameter_register(block) if self.control.tool_words == DIAMETER_REGISTER else None
+        note = self._diameter_register(block) if self.dialect.tool_words == DIAMETER_REGISTER else None
         self._emit_early(block, early, output or block.comments or note)
         if output or block.comments or note:
             self._emit_line(block, output, note)
@@ -348,10 +347,10 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
 
     def _check_plain_letters(self, block: Block) -> None:
         for word in block.words:
-            if word.letter in self.control.plain_letters:
+            if word.letter in self.dialect.plain_letters:
                 continue
-            if word.letter in self.control.letter_refusals:
-                self._fail("%s%s: %s" % (word.letter, word.text, self.control.letter_refusals[word.letter]))
+            if word.letter in self.dialect.letter_refusals:
+                self._fail("%s%s: %s" % (word.letter, word.text, self.dialect.letter_refusals[word.letter]))
             self._fail("%s%s is not supported here" % (word.letter, word.text))
 
     # -- result -------------------------------------------------------------
@@ -359,14 +358,14 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
     def header_known(self) -> bool:
         """Whether the header is settled: it names the O number, which may only
         come before the first block (or never, for a control without one)."""
-        return self.started or self.program_number is not None or not self.control.program_numbers
+        return self.started or self.program_number is not None or not self.dialect.program_numbers
 
     def header(self) -> List[str]:
         """The lines that open the translation (modes at the start, the title)."""
         header_writer = Writer(self.writer.target, self.start_metric, self.start_feed_per_rev)
         title = "%s: %s program%s, cycles %s for %s by freecad-groove" % (
             self.source_name,
-            self.dialect,
+            self.dialect.name,
             " O%d" % self.program_number if self.program_number is not None else "",
             "native or expanded" if self.native is not None else "expanded",
             self.target,

@@ -151,7 +151,7 @@ def test_the_posts_write_the_engines_arcs(shop, name, args, diameter):
 
 
 def posts_digits(name):
-    return tp.posts.CONTROLS[name].digits
+    return tp.posts.LATHE_POSTS[name].digits
 
 
 def test_a_siemens_program_with_cr_arcs_translates_to_the_engines_arcs(shop):

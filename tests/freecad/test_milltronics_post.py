@@ -28,8 +28,8 @@ from freecad_groove.engine.mill_tool_table import MillToolTable
 from freecad_groove.engine.moves import ARC_CCW, ARC_CW, FEED, MachineState
 from freecad_groove.engine.settings import Settings
 from freecad_groove.engine.translator import translate_program
-from freecad_groove.freecad.posts.errors import PostError
 from freecad_groove.freecad.posts.milltronics_ops import NativeOp, recognise
+from freecad_groove.freecad.posts.post_error import PostError
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TOOL = 5.0

@@ -166,7 +166,7 @@ import os  # noqa: E402
 
 from freecad_groove.engine.grind_program import GrindItem, PlainMoves, WheelChange, grind_program  # noqa: E402
 from freecad_groove.engine.moves import RAPID, Move  # noqa: E402
-from freecad_groove.freecad.posts.errors import PostError  # noqa: E402
+from freecad_groove.freecad.posts.post_error import PostError  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 

@@ -152,8 +152,8 @@ def positions(events):
 
 
 def writer(name, precision=None, diameter=True):
-    c = posts.CONTROLS[name]
-    return Writer(c.target, digits=c.digits if precision is None else precision, x_diameter=diameter)
+    post = posts.LATHE_POSTS[name]
+    return Writer(post.target, digits=post.digits if precision is None else precision, x_diameter=diameter)
 
 
 def expected_events(op, name, precision=None, diameter=True, shift=(0.0, 0.0)):

@@ -110,7 +110,7 @@ def _artifact(op, case, args):
     programs = {}
     for name in NAMES:
         own = args if name in PECKING else re.sub(r"\s*--retract [\d.]+", "", args)  # only they have it
-        if not posts.CONTROLS[name].has_x_mode:
+        if not posts.LATHE_POSTS[name].has_x_mode:
             own = re.sub(r"\s*--x-mode \w+", "", own)
         try:
             programs[name] = {"args": own, "text": export(name, [op], own), "error": None}

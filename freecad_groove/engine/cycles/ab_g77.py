@@ -56,7 +56,7 @@ RETURN_TO_START_Z = True
 class _AllenBradley(PeckingCycle):
     """The words of G77 and G76, in the order emit() writes them."""
 
-    CONTROLS: ClassVar[tuple] = ("ab9",)
+    DIALECTS: ClassVar[tuple] = ("ab9",)
     FORM: ClassVar[str] = G_WORD
     WORDS = ("X", "Z", "I", "K", "F", "D")
     SHIFT_D = True

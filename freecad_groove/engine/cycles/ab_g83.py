@@ -118,7 +118,7 @@ class G83(Cycle):
     NAME: ClassVar[str] = "G83"
     KEY: ClassVar[str] = "ab-g83"
     ALIASES: ClassVar[tuple] = ("g83",)
-    CONTROLS: ClassVar[tuple] = ("ab9grind",)
+    DIALECTS: ClassVar[tuple] = ("ab9grind",)
     TITLE: ClassVar[str] = "Allen-Bradley 9/Series grinder G83 plunge surface grinding"
     FORM: ClassVar[str] = G_WORD
     MEMORY: ClassVar[str] = "ab-g83"  # the translator keeps remembered() under this key for the next cycle

@@ -95,7 +95,7 @@ class Cycle93(Cycle):
 
     NAME: ClassVar[str] = NAME
     KEY: ClassVar[str] = "cycle93"
-    CONTROLS: ClassVar[tuple] = ("sinumerik",)
+    DIALECTS: ClassVar[tuple] = ("sinumerik",)
     TITLE: ClassVar[str] = "Siemens CYCLE93 groove"
     FORM: ClassVar[str] = CALL
     NEEDS_BLADE: ClassVar[bool] = True  # the plunges are placed with the blade's width

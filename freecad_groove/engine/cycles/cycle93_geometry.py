@@ -2,9 +2,9 @@
 
 ``GrooveGeometry`` is built from a validated call (``cycle93.Cycle93``): the
 groove frame, the final and roughing profiles with their corners, the exact
-envelope of where the blade may go, and the seed's four machining steps as
-moves of the blade's reference corner. The module notes of ``cycle93`` say
-how the seed manual is read.
+envelope of where the blade may go, and the Siemens manual's four machining
+steps as moves of the blade's reference corner. The module notes of
+``cycle93`` say how the Siemens manual is read.
 """
 
 import math
@@ -106,7 +106,7 @@ class GrooveGeometry:
 
     @staticmethod
     def _check_parameters(call, settings, p):
-        """The seed's rules on single parameters (p: read, in radius values)."""
+        """The Siemens manual's rules on single parameters (p: read, in radius values)."""
         if p["WIDG"] < 0:
             raise cycle93_error("WIDG", call.widg, "must be entered without sign")
         if p["WIDG"] < settings.tool.width - EPS:
@@ -379,7 +379,7 @@ class GrooveGeometry:
         us, vs = frame.blade_of(x_start, z_start)
         positions = self.plunge_positions()
         u_first = positions[0]
-        along_first = self.longitudinal == self.external  # seed: external grooves move along Z first
+        along_first = self.longitudinal == self.external  # the Siemens manual: external grooves move along Z first
         approach = self._approach(us, vs, u_first, along_first)
         for u, v in approach:
             go("r", u, v)

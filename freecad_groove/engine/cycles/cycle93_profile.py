@@ -93,11 +93,11 @@ def split_at(pts: Sequence[Point], positions: List[float]) -> List[Point]:
     """The trace with a point added wherever a move crosses one of
     ``positions`` (the plunges' u): on the move's straight line, or on its
     circle for a move of an exact path along one (a PathPoint's arc: both
-    halves follow it). Seed step 3: "Infeed along the groove width is carried
-    out in several steps if the flank width is larger": the plunges across
-    the opening are those steps (each stops on the flank, leaving a tooth at
-    most one width step wide), and the pass takes the teeth one move per
-    step, never more than a width step across."""
+    halves follow it). The Siemens manual's step 3: "Infeed along the groove
+    width is carried out in several steps if the flank width is larger": the
+    plunges across the opening are those steps (each stops on the flank,
+    leaving a tooth at most one width step wide), and the pass takes the
+    teeth one move per step, never more than a width step across."""
     positions = sorted(positions)
     exact = isinstance(pts[0], PathPoint)
     out = [pts[0]]

@@ -64,7 +64,7 @@ __all__ = ["FanucG75", "FanucG74", "HaasG75", "HaasG74"]
 class _Fanuc(PeckingCycle):
     """The words of Fanuc G75 and G74 (e: R of the first block)."""
 
-    CONTROLS: ClassVar[tuple] = ("fanuc", "gsk")  # GSK 980TDi writes the same two blocks
+    DIALECTS: ClassVar[tuple] = ("fanuc", "gsk")  # GSK 980TDi writes the same two blocks
     FORM: ClassVar[str] = G_WORD
     WORDS = ("X", "U", "Z", "W", "P", "Q", "R", "F")
     COUNTED = ("P", "Q")
@@ -189,7 +189,7 @@ class FanucG74(_Fanuc):
 class _Haas(PeckingCycle):
     """The words of Haas G75 and G74."""
 
-    CONTROLS: ClassVar[tuple] = ("haas",)
+    DIALECTS: ClassVar[tuple] = ("haas",)
     FORM: ClassVar[str] = G_WORD
     WORDS = ("X", "U", "Z", "W", "I", "K", "D", "F")
     RELIEF = "D"

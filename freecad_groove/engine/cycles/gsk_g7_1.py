@@ -297,7 +297,7 @@ class GskG7_1(Cycle):
     NAME: ClassVar[str] = NAME
     KEY: ClassVar[str] = "gsk-g7.1"
     ALIASES: ClassVar[tuple] = ("g7.1", "g107")
-    CONTROLS: ClassVar[tuple] = ("gsk",)
+    DIALECTS: ClassVar[tuple] = ("gsk",)
     TITLE: ClassVar[str] = "GSK G7.1 cylindrical interpolation and its roughing cycle (a region up to G7.1 C0)"
     FORM: ClassVar[str] = G_WORD
     BLOCKS: ClassVar[type] = RegionBlocks  # the blocks up to the cancel block belong to the call

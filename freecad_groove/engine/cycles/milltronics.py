@@ -1,5 +1,5 @@
 """Milltronics mill autoroutines G33 (facing a rectangle) and G34 (clearing a
-rectangular pocket), seed 004 (section four of a Milltronics mill manual).
+rectangular pocket), as section four of the Milltronics mill manual documents them.
 
 Program shape [documented]: the P parameters are set by assignment blocks
 before the call (``P151=1``) and stay in force until changed; the call block
@@ -20,8 +20,8 @@ row with a test), the tool an end mill of diameter ``Settings.mill_tool_diameter
   2.54 mm in a metric program) above the depth just cut and rapids to the next
   depth's start, then feeds down at the Z feed.
 - The tool stays inside the rectangle [choice]: its edge touches the sides, so
-  its centre runs inset by the tool radius (G41 and G42 do the same, the seed
-  says; without either the same path is cut).
+  its centre runs inset by the tool radius (G41 and G42 do the same, the
+  Milltronics manual says; without either the same path is cut).
 - G33 [documented]: starts at the upper right corner, back and forth along the
   long side (X when the sides are equal [choice]), stepping over along the
   short side; the step-overs are equal and at most P155 [choice].
@@ -110,7 +110,7 @@ class MilltronicsCycle(Cycle):
     """The words and P parameters shared by G33 and G34 (see the module notes)."""
 
     NAME: ClassVar[str] = ""
-    CONTROLS: ClassVar[tuple] = ("milltronics",)
+    DIALECTS: ClassVar[tuple] = ("milltronics",)
     FORM: ClassVar[str] = G_WORD
     MEMORY: ClassVar[str] = "milltronics"  # the P parameters and the last R, for the next call
     MILL: ClassVar[bool] = True

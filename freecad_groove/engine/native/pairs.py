@@ -10,7 +10,7 @@ from ..registry import cycles_of
 
 __all__ = ["native_pairs"]
 
-PECKING_DIALECTS = ("ab9", "fanuc", "gsk", "haas")  # the input controls whose programs call pecking cycles
+PECKING_DIALECTS = ("ab9", "fanuc", "gsk", "haas")  # the dialects whose programs call pecking cycles
 
 
 def _pecking_codes(dialect: str) -> Tuple[str, Tuple[type, ...]]:

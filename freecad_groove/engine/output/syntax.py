@@ -1,7 +1,7 @@
 """The syntax of one control's programs, declared as data: :class:`Target`.
 
 A target is a control the output is written for (the command line's ``--to``,
-a post's control). Everything that differs between the controls' programs
+a lathe post's ``LathePost.target``). Everything that differs between the controls' programs
 is an attribute here, declared once with its default and read by the one
 writer (``writer.py``) and the one program builder (``program.py``): nothing
 else asks which control it is. The tables themselves are in ``targets.py``.

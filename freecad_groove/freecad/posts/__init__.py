@@ -41,8 +41,8 @@ in order:
 
 Feeds and speeds: a Groove op's own (``freecad/cutting.py``: FeedPerRev,
 SurfaceSpeed with MaxSpindleSpeed, SpindleSpeed; else the tool controller's;
-else 0.05 mm/rev and 500 rpm), written the control's way (``Control.
-feed_mode``, ``surface_speed``, ``spindle``; README, "Feeds and speeds");
+else 0.05 mm/rev and 500 rpm), written the control's way (the post's
+target, ``LathePost.target``; README, "Feeds and speeds");
 other objects' Path F words are mm/s, written per minute (G94, Fanuc/Haas
 G98), the mode switched back where a groove fed per revolution. Lengths are
 mm (G21, Siemens G71), or inches with ``--inches`` (G20, Siemens G700: the
@@ -57,8 +57,8 @@ there is an error naming the op. X words are diameters (DIAMON, G07, G7)
 unless ``--x-mode radius``; arc centres I/K are always per-side (radius)
 offsets.
 
-The controls
-------------
+The lathe posts
+---------------
 ========= ============================ ====================== ===================
 post      setup line                   tool change            native grooving
 ========= ============================ ====================== ===================
@@ -98,17 +98,20 @@ directory, pipe, device or write-protected file is refused with a PostError
 
 The package
 -----------
-One concern a module: ``controls`` (each control's syntax and habits, as
-class data and methods), ``options`` (the argument parsers and the parsed
-options), ``writer`` (the line writer), ``objects`` (what a post recognises
-among FreeCAD objects), ``program`` (one program's text: frame, tools,
-spindle, coolant, objects), ``path_commands`` (other objects' Paths as plain
-moves), ``grooves`` (a Groove op's grooves: native or expanded), ``pecking``
-(the pecking-cycle calls for plain grooves: the engine decides, in
-engine/native/cycle93_pecking.py, as ``expand --native-cycles`` does),
-``reference_corner`` (the output's blade corner), ``errors`` (:class:`PostError`), ``program_file`` (the
-program written to its file, atomically). This module: :func:`build` and
-:func:`export`.
+One concern a module: ``lathe_posts`` (each lathe post, :class:`LathePost`:
+its target and what the post says of it), ``options`` (the argument parsers
+and the parsed options), ``objects`` (what a post recognises among FreeCAD
+objects), ``program`` (one program's text: frame, tools, spindle, coolant,
+objects, on the engine's program builder and writer), ``path_commands``
+(other objects' Paths as plain moves), ``grooves`` (a Groove op's grooves:
+native or expanded; the pecking-cycle calls for plain grooves, which the
+engine decides in engine/native/cycle93_pecking.py as ``expand
+--native-cycles`` does, with the output's blade corner), ``slots`` and
+``live_tool`` (Cylinder slots, the live tool's switches), ``post_error``
+(:class:`PostError`), ``program_file`` (the program written to its file,
+atomically), ``command_post`` (the classes CAM's Post Process command takes).
+The grinder and Milltronics posts: ``grind``, ``milltronics_mill`` and
+``milltronics_ops``. This module: :func:`build` and :func:`export`.
 """
 
 from typing import Any, Iterable, Optional, Sequence, Union
@@ -116,20 +119,20 @@ from typing import Any, Iterable, Optional, Sequence, Union
 import FreeCAD
 
 from .command_post import command_post_class, report_help, script_export
-from .controls import CONTROLS, Control, control_named
-from .errors import PostError
+from .grooves import PECKING_PROPERTIES
+from .lathe_posts import LATHE_POSTS, LathePost, lathe_post_named
 from .objects import groove_op_of, job_of, label_of
 from .options import Options, make_parser, parse_options, tooltip
-from .pecking import PECKING_PROPERTIES
+from .post_error import PostError
 from .program import Program
 
-__all__ = ["CONTROLS", "PostError", "export", "build", "parse_options", "make_parser", "tooltip", "groove_op_of",
-           "Control", "Options", "PECKING_PROPERTIES", "command_post_class"]
+__all__ = ["LATHE_POSTS", "PostError", "export", "build", "parse_options", "make_parser", "tooltip", "groove_op_of",
+           "LathePost", "Options", "PECKING_PROPERTIES", "command_post_class"]
 
 
 def build(name: str, objectslist: Optional[Iterable[Any]], options: Options) -> str:
     """The program text for ``objectslist`` (PostError on any problem)."""
-    program = Program(control_named(name), options)
+    program = Program(lathe_post_named(name), options)
     objects = list(objectslist or [])
     job = job_of(objects)
     program.start(label_of(job) if job is not None else "FreeCAD")
@@ -137,8 +140,9 @@ def build(name: str, objectslist: Optional[Iterable[Any]], options: Options) -> 
         program.item(obj)
     program.finish()
     if program.missing_switches:  # machine codes the post could not write (posts/live_tool.py)
+        missing = ", ".join(dict.fromkeys(program.missing_switches))
         FreeCAD.Console.PrintWarning("%s_post: no %s given: the program has a comment in place of each such switch"
-                                     "\n" % (program.control.post, ", ".join(dict.fromkeys(program.missing_switches))))
+                                     "\n" % (program.post.freecad_name, missing))
     return program.text()
 
 
@@ -157,4 +161,4 @@ def export(name: str, objectslist: Optional[Iterable[Any]], filename: Optional[s
             return None
         return build(name, objectslist, options)
 
-    return script_export(control_named(name).post + "_post", text_of, filename)
+    return script_export(lathe_post_named(name).freecad_name + "_post", text_of, filename)

@@ -28,9 +28,9 @@ from typing import Any, Callable, List, Optional, Tuple
 
 import FreeCAD
 
-from .controls import control_named
-from .errors import PostError
+from .lathe_posts import lathe_post_named
 from .options import make_parser, parse_options, tooltip
+from .post_error import PostError
 from .program_file import write_program_file
 
 Sections = List[Tuple[str, str]]
@@ -39,7 +39,7 @@ Sections = List[Tuple[str, str]]
 def report_help(name: str, text: str) -> None:
     """The post's help in the report view (no program is written)."""
     FreeCAD.Console.PrintMessage("%s_post --help: no program written; the options:\n%s\n"
-                                 % (control_named(name).post, text.rstrip("\n")))
+                                 % (lathe_post_named(name).freecad_name, text.rstrip("\n")))
 
 
 def reported(post: str, attempt: Callable[[], Optional[Sections]]) -> Optional[Sections]:
@@ -74,7 +74,7 @@ def post_sections(name: str, processor: Any, argstring: Any) -> Optional[Section
             return None
         return [(part, build(name, objects, options)) for part, objects in processor._buildPostList()]
 
-    return reported(control_named(name).post + "_post", attempt)
+    return reported(lathe_post_named(name).freecad_name + "_post", attempt)
 
 
 def post_class(class_name: str, tip: str, tip_args: str, sections: Callable[[Any, str], Optional[Sections]]) -> type:
@@ -103,7 +103,7 @@ def post_class(class_name: str, tip: str, tip_args: str, sections: Callable[[Any
 
 def command_post_class(name: str) -> type:
     """The class FreeCAD's PostProcessorFactory takes from lathe post ``name``'s module."""
-    return post_class(control_named(name).post.title(), tooltip(name), make_parser(name).format_help(),
+    return post_class(lathe_post_named(name).freecad_name.title(), tooltip(name), make_parser(name).format_help(),
                       lambda processor, argstring: post_sections(name, processor, argstring))
 
 

@@ -33,8 +33,8 @@ from ...engine.moves import FEED, RAPID, Move
 from ...ops.grind.op import ObjectPlungeGrind, op_error
 from ..units import SECONDS_PER_MINUTE
 from .command_post import each_part, post_class, reported, script_export
-from .errors import PostError
 from .objects import is_fixture_block, is_job, is_tool_controller, job_of, label_of
+from .post_error import PostError
 
 AXES = ("XZY", "YZX", "XYZ", "YXZ", "ZXY", "ZYX")
 DEFAULT_AXES = "XZY"

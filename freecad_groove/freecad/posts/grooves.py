@@ -1,5 +1,11 @@
 """A Groove op's grooves in a program: native CYCLE93 calls, pecking-cycle
-calls (plain grooves), or the engine's expanded moves (see the package notes)."""
+calls (plain grooves), or the engine's expanded moves (see the package notes).
+
+The pecking-cycle calls (Allen-Bradley G77/G76, Fanuc, Haas and GSK G75/G74)
+that cut a group of plain CYCLE93 grooves are decided and built by the engine
+(``engine/native/cycle93_pecking.py``, shared with ``expand --native-cycles``);
+here they get the post's output, and an error names the op property at fault
+(``PECKING_PROPERTIES``)."""
 
 from __future__ import annotations
 
@@ -8,20 +14,29 @@ from typing import TYPE_CHECKING, Any, Callable, List, Optional
 
 from ...engine import DWELL, FEED, CycleError, ProgramError
 from ...engine.moves import ARCS
-from ...engine.native.cycle93_pecking import retract_note
+from ...engine.native import NotNative
+from ...engine.native.cycle93_pecking import (
+    PeckingCall,
+    PeckingOutput,
+    corner_shift,
+    pecking_calls,
+    retract_note,
+    shifted,
+)
 from ...engine.numbers import MM_PER_INCH
 from ...ops.groove.cutting import CuttingData, cutting_data
 from ...ops.groove.properties import GrooveInputError
-from .controls import NATIVE_CYCLE93, NATIVE_PECKING
-from .errors import PostError
+from .lathe_posts import NATIVE_CYCLE93, NATIVE_PECKING
 from .objects import label_of
-from .pecking import NotNative, PeckingCall, PeckingCalls
-from .reference_corner import corner_shift, shifted
+from .post_error import PostError, cycle_post_error
 
 if TYPE_CHECKING:
     from .program import Program
 
 CYCLE93_LENGTHS = ("axfa", "axsa", "widg", "depg", "rco1", "rco2", "rci1", "rci2", "fal1", "fal2", "idep", "vrt")
+# pecking word -> what the op sets it from
+PECKING_PROPERTIES = {"I": "Infeed", "K": "Infeed", "P": "Infeed", "Q": "Infeed", "X": "Depth", "Z": "Depth",
+                      "F": "FeedPerRev (or the tool controller's HorizFeed)", "e": "Retract", "R(e)": "Retract"}
 
 
 def groove_cutting(op: Any) -> CuttingData:
@@ -81,8 +96,8 @@ class GrooveOutput:
             raise PostError(str(exc), op=self.label) from None
 
     def _group_writer(self) -> Callable[[List[Any]], None]:
-        """What writes a face's grooves: the control's native cycle or the expansion."""
-        native = self.program.control.native if self.program.options.native else None
+        """What writes a face's grooves: the target's native cycle or the expansion."""
+        native = self.program.post.native if self.program.options.native else None
         writers = {NATIVE_CYCLE93: self._cycle93_group, NATIVE_PECKING: self.pecking}
         return writers.get(native, self._expanded_group)
 
@@ -170,7 +185,7 @@ class GrooveOutput:
     def pecking(self, group: List[Any]) -> None:
         """A face's grooves as pecking-cycle calls, or expanded with the reason when the cycle cannot cut them."""
         try:
-            calls = PeckingCalls(self.program, self.label, self.feed, self.per_rev).calls(group)
+            calls = self.pecking_calls(group)
         except NotNative as exc:
             for plan in group:
                 self.expanded(plan, str(exc))
@@ -178,16 +193,29 @@ class GrooveOutput:
         for pecking_call in calls:
             self.pecking_call(pecking_call)
 
+    def pecking_calls(self, group: List[Any]) -> List[PeckingCall]:
+        """The calls that cut ``group``, their words in the output's units (the
+        plans are in mm); NotNative (the whole reason: ``G75 cannot cut flank
+        angles``) when the target's cycle cannot cut them."""
+        options = self.program.options
+        output = PeckingOutput(
+            self.program.writer.target, self.program.writer, 1.0 / MM_PER_INCH if options.inches else 1.0,
+            options.native_decimals, options.diameter, options.retract, None, options.reference)
+        try:
+            return pecking_calls(group, output, self.feed, self.per_rev)
+        except CycleError as exc:
+            raise cycle_post_error(self.label, exc, PECKING_PROPERTIES) from None
+
     def pecking_call(self, call: PeckingCall) -> None:
         """One pecking call: comments, the rapids to its start point and back, the call."""
-        program, control = self.program, self.program.control
+        program, post = self.program, self.program.post
         first = call.plans[0]
         if len(call.plans) > 1:
             what = "%s grooves %d-%d" % (first.face.name, first.index + 1, call.plans[-1].index + 1)
         else:
             what = "%s groove %d" % (first.face.name, first.index + 1)
         program.note("%s: %s as %s" % (what, call_text(first.cycle), call.model.NAME))
-        note = retract_note(control.target, call.retract, not program.options.inches)
+        note = retract_note(post.target, call.retract, not program.options.inches)
         if note:
             program.note(note)
         # the call's start point in one block; when that is the plan's start point, the link's last step

@@ -3,7 +3,7 @@
 A slot is milled with the main spindle held as the C axis and a driven
 (live) tool turning in the turret. The codes that switch the spindle into and
 out of C axis mode and that start and stop the live tool are the machine
-builder's: the GSK 980TDi manual pages of the seed (G7.1) name none, nor does
+builder's: the GSK 980TDi manual's pages on G7.1 name none, nor does
 LinuxCNC (a lathe's C axis and a second spindle are configured per machine).
 So they are post options without defaults, on the posts that write C:
 
@@ -33,7 +33,7 @@ from __future__ import annotations
 import re
 from typing import TYPE_CHECKING, Any, NamedTuple, Optional
 
-from .errors import PostError
+from .post_error import PostError
 
 if TYPE_CHECKING:
     from .program import Program

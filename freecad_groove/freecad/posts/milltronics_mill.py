@@ -7,7 +7,7 @@ The program: a comment naming the Job, ``G21 G90 G40`` (``G20`` with
 
 - a tool change when the op's tool controller is not the one in force:
   ``G32`` (Z to the tool change position), ``T<n> M6``, ``S<rpm> M3`` (M4
-  for SpindleDir Reverse), ``D<n> G43 H<n>`` (as the seed's example: the
+  for SpindleDir Reverse), ``D<n> G43 H<n>`` (as the Milltronics manual's example: the
   diameter register G41/G42 and the autoroutines read, and the length
   offset, both numbered as the tool); the op's CoolantMode: M8 flood, M7
   mist before the op, M9 after it;
@@ -39,10 +39,10 @@ from ...engine.mill_program import MillMoves, MillNative, MillToolChange, milltr
 from ...engine.moves import ARC_CCW, ARC_CW, FEED, RAPID, Move
 from ..units import SECONDS_PER_MINUTE
 from .command_post import each_part, post_class, reported, script_export
-from .errors import PostError
 from .milltronics_ops import NativeOp, recognise
 from .objects import is_fixture_block, is_job, is_tool_controller, job_of, label_of
 from .options import PostParser, split_arguments
+from .post_error import PostError
 
 POST = "milltronics_mill"
 TITLE = "Milltronics mill (Face and Pocket Shape ops as the G33/G34 autoroutines, other ops as moves)"

@@ -21,7 +21,7 @@ from ...engine.numbers import ARC_IJK_TOLERANCE, format_decimal
 from ...engine.output.program import Spindle, spindle_lines
 from ...engine.output.syntax import ARC_CR
 from ..units import feed_mm_per_min
-from .errors import PostError
+from .post_error import PostError
 
 if TYPE_CHECKING:
     from .program import Program

@@ -10,12 +10,12 @@ from ...engine import CycleError, ProgramError
 from ...engine.numbers import MM_PER_INCH
 from ...engine.output.program import ProgramBuilder, Spindle
 from ...engine.output.writer import Writer
-from .controls import Control
-from .errors import PostError, cycle_post_error
 from .grooves import GrooveOutput, groove_cutting
+from .lathe_posts import LathePost
 from .objects import groove_op_of, is_fixture_block, is_job, is_tool_controller, label_of, op_property
 from .options import Options
 from .path_commands import PathCommands
+from .post_error import PostError, cycle_post_error
 from .slots import SlotOutput, is_slot_op
 
 MAX_RPM = 99999
@@ -34,7 +34,7 @@ class ToolState(NamedTuple):
 
 class Program(ProgramBuilder):
     """Builds one program's text in ``lines`` from a Job's objects: the engine's
-    program builder (output/program.py) with the post's control and options.
+    program builder (output/program.py) with the lathe post's target and options.
 
     ``tool_state``: the ToolState in force (None: none yet, or an M6 of a Path
     changed it); ``pending_spindle``: the tool controller of the list whose
@@ -42,11 +42,11 @@ class Program(ProgramBuilder):
     main spindle: its speed is the live tool's); ``missing_switches``: the
     options of live_tool.py the program needed and did not get."""
 
-    def __init__(self, control: Control, options: Options) -> None:
-        writer = Writer(control.program_target(options), not options.inches, False, digits=options.precision,
+    def __init__(self, post: LathePost, options: Options) -> None:
+        writer = Writer(post.program_target(options), not options.inches, False, digits=options.precision,
                         x_diameter=options.diameter, scale=1.0 / MM_PER_INCH if options.inches else 1.0)
         super().__init__(writer, comments=options.comments)
-        self.control = control
+        self.post = post
         self.options = options
         self.tool_state: Optional[ToolState] = None
         self.pending_spindle: Any = None
@@ -54,11 +54,11 @@ class Program(ProgramBuilder):
 
     # -- program frame
     def start(self, title: str) -> None:
-        """The header and the control's setup lines."""
+        """The header and the target's setup lines."""
         options = self.options
         unit = "in" if options.inches else "mm"
         notes = ["post %s by freecad-groove %s; lengths %s, feeds %s/min or %s/rev"
-                 % (self.control.post, __version__, unit, unit, unit)] if options.header else []
+                 % (self.post.freecad_name, __version__, unit, unit, unit)] if options.header else []
         self.begin(title if options.header else None, options.program_number, notes)
 
     # -- tools, spindle

@@ -3,7 +3,7 @@
 followed, anything but a regular file refused), a refusal as PostError."""
 
 from ...engine.output.files import write_atomically
-from .errors import PostError
+from .post_error import PostError
 
 
 def write_program_file(filename: str, text: str) -> None:

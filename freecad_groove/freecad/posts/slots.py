@@ -11,7 +11,7 @@ Both start the same way: G0 X to the op's safe radius, G0 Z C to the path's
 start, G0 X to the cycle start (the cylinder + Retract), feed per minute
 (the region's F is mm/min along the developed path; G98 on GSK). The region
 ends where it started (at the cycle start); both end with G0 X back to the
-safe radius. A control without a C axis (``Control.c_feed`` None) refuses the
+safe radius. A post whose target has no C axis (``LathePost.c_feed`` None) refuses the
 op with a PostError naming the posts that write C. The native region's words
 are mm: with --inches the op is written expanded. Around it, the main spindle
 stop, C axis mode and the live tool (live_tool.py: machine codes given as
@@ -26,9 +26,9 @@ from ...engine.cycles.gsk_g7_1 import GskG7_1
 from ...engine.moves import FEED, RAPID, Move
 from ...ops.slot.cutting import slot_cutting
 from . import live_tool
-from .controls import CONTROLS
-from .errors import PostError
+from .lathe_posts import LATHE_POSTS
 from .objects import label_of
+from .post_error import PostError
 
 if TYPE_CHECKING:
     from .program import Program
@@ -49,11 +49,11 @@ class SlotOutput:
         self.label = label_of(op)
 
     def write(self) -> None:
-        program, control = self.program, self.program.control
-        if control.c_feed is None:
-            with_c = ", ".join(c.post for c in CONTROLS.values() if c.c_feed)
+        program, post = self.program, self.program.post
+        if post.c_feed is None:
+            with_c = ", ".join(p.freecad_name for p in LATHE_POSTS.values() if p.c_feed)
             raise PostError("is a Cylinder slot: its moves turn the C axis, which the %s post does not write "
-                            "(posts with C: %s)" % (control.post, with_c), op=self.label)
+                            "(posts with C: %s)" % (post.freecad_name, with_c), op=self.label)
         error = getattr(self.op.Proxy, "error", None)
         if error:
             raise PostError(error, op=self.label)
@@ -63,12 +63,12 @@ class SlotOutput:
         start = plan.start
         self._moves([Move(RAPID, plan.safe_radius, None),  # X first: Z and C move only at the safe radius
                      Move(RAPID, plan.safe_radius, start.z, c=start.c), Move(RAPID, start.x, start.z, c=start.c)])
-        if control.native_slot and program.options.inches:
+        if post.native_slot and program.options.inches:
             raise PostError("--inches: the G7.1 region of a Cylinder slot is written in mm (write it in mm)",
                             op=self.label)
-        if control.native_slot and program.options.native:
+        if post.native_slot and program.options.native:
             self._region(plan.region, (start.x, start.z, start.c))
-        elif control.native_slot:
+        elif post.native_slot:
             self._type_i_passes(plan)
         else:
             self._moves(plan.moves)

@@ -201,7 +201,7 @@ def blade_origin(origin: Point, call: Cycle93, settings: Settings) -> Point:
     stands: the whole blade is then outside the stock) in the words of the
     op's reference corner: moved by the corner's offset along the groove's
     axis, Z for longitudinal grooves and X for face grooves (as a post's
-    --reference-corner moves the words, posts/reference_corner.py)."""
+    --reference-corner moves the words: engine/native/cycle93_pecking.py's corner_shift)."""
     offset = settings.tool.reference_offset
     return (origin[0], origin[1] + offset) if call.kind()[0] else (origin[0] + offset, origin[1])
 

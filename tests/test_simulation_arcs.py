@@ -15,7 +15,7 @@ from shapely.geometry import Point
 from freecad_groove.engine.moves import ARC_CW, MINUS_X, GroovingTool, Move, arc, feed, rapid
 from freecad_groove.verify import bar, check_groove, region, simulate
 
-STOCK = bar(20.0, -50.0, 0.0)  # test_simulate.py's bar: radius 20 from Z-50 to Z0
+STOCK = bar(20.0, -50.0, 0.0)  # test_simulation.py's bar: radius 20 from Z-50 to Z0
 TOOL = GroovingTool(3.0, 0.4)
 START = (25.0, -10.0)
 

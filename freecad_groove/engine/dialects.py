@@ -1,13 +1,14 @@
-"""What each input control's codes mean, as data: one InputControl per dialect.
+"""What each dialect's codes mean, as data: one :class:`Dialect` per ``--dialect``.
 
-A *dialect* is the input control a program is written for: "sinumerik",
-"ab9", "fanuc", "haas", "gsk" (``DIALECTS``); the output side is the *target*
-(targets.py). What differs between the input controls is here and nowhere
-else: the G-code table, the letters a block may hold, the decimal-point rule,
-the dwell and tool words, what a cycle leaves modal. Their grooving cycles come
-from the cycle registry (``registry.cycles_of``): Siemens calls (``NAME(...)``,
-FORM CALL) are read by the tokenizer (reader.py), G-word cycles (FORM G_WORD)
-are added to the control's G-code table (``InputControl.code_table``).
+A *dialect* is the control a program is read as: "sinumerik", "ab9",
+"ab9grind", "milltronics", "fanuc", "haas", "gsk" (the keys of ``DIALECTS``);
+the output side is the *target* (output/targets.py). What differs between the
+dialects is here and nowhere else: the G-code table, the letters a block may
+hold, the decimal-point rule, the dwell and tool words, what a cycle leaves
+modal. Their grooving cycles come from the cycle registry
+(``registry.cycles_of``): Siemens calls (``NAME(...)``, FORM CALL) are read by
+the tokenizer (reader.py), G-word cycles (FORM G_WORD) are added to the
+dialect's G-code table (``Dialect.code_table``).
 """
 
 from dataclasses import dataclass, field, replace
@@ -18,12 +19,11 @@ from .registry import CALL, G_WORD, CycleEntry, cycles_of
 
 __all__ = [
     "DIALECTS",
-    "INPUT_CONTROLS",
+    "Dialect",
     "GCode",
-    "InputControl",
     "Units",
+    "dialect_named",
     "g_code_key",
-    "input_control",
 ]
 
 # ---------------------------------------------------------------- G codes
@@ -145,19 +145,19 @@ def g_code_key(text: str) -> Optional[str]:
     return str(int(whole))
 
 
-# M codes every control shares: code -> modal group
+# M codes every dialect shares: code -> modal group
 M_GROUPS = {0: "stop", 1: "stop", 2: "end", 30: "end", 3: "spindle", 4: "spindle", 5: "spindle", 7: "coolant",
             8: "coolant", 9: "coolant"}
 
-# ---------------------------------------------------------------- input controls
+# ---------------------------------------------------------------- dialects
 
-# how a dwell word is read (InputControl.dwell_words)
+# how a dwell word is read (Dialect.dwell_words)
 DWELL_SECONDS = "seconds"
 DWELL_LENGTH_SECONDS = "seconds, written as a length word (decimal point rule)"
 DWELL_MILLISECONDS = "milliseconds, a whole number"
 DWELL_POINT_SECONDS = "seconds with a decimal point, milliseconds without"
 
-# how the tool is selected (InputControl.tool_words)
+# how the tool is selected (Dialect.tool_words)
 TOOL_AND_EDGE = "T<tool> D<cutting edge>"
 TOOL_AND_OFFSET = "T<tool><2-digit offset>"
 # Milltronics: T<n> M6 changes the tool, G43 H<n> / G49 the length offset, D selects the end mill's diameter
@@ -166,10 +166,10 @@ DIAMETER_REGISTER = "T<tool> M6, D<diameter register>, G43 H<length offset>"
 
 
 @dataclass(frozen=True)
-class InputControl:
-    """What the reader and the translator need to know of one input control."""
+class Dialect:
+    """What the reader and the translator need to know of one dialect (the control a program is read as)."""
 
-    name: str  # the dialect: "sinumerik"
+    name: str  # as --dialect names it: "sinumerik"
     maker: str  # for messages: "Siemens"
     help: str  # one line for the command line's --dialect help
     g_codes: Mapping[str, GCode]  # without the cycles: code_table() adds them from the registry
@@ -191,11 +191,11 @@ class InputControl:
     feed_per_minute: bool = False  # feed per minute from the start (a mill), without G94
 
     def cycles(self) -> Tuple[CycleEntry, ...]:
-        """The registered cycles of this control."""
+        """The registered cycles this dialect's programs call."""
         return cycles_of(self.name)
 
     def cycle(self, name: str) -> CycleEntry:
-        """The registry entry of this control's cycle ``name`` ("G75", "CYCLE93")."""
+        """The registry entry of this dialect's cycle ``name`` ("G75", "CYCLE93")."""
         return next(entry for entry in self.cycles() if entry.name == name)
 
     def call_names(self) -> Tuple[str, ...]:
@@ -203,7 +203,7 @@ class InputControl:
         return tuple(entry.name for entry in self.cycles() if entry.form == CALL)
 
     def code_table(self) -> Dict[str, GCode]:
-        """G number (``g_code_key``) -> meaning, the control's G-word cycles included."""
+        """G number (``g_code_key``) -> meaning, the dialect's G-word cycles included."""
         table = dict(self.g_codes)
         for entry in self.cycles():
             if entry.form == G_WORD:
@@ -246,7 +246,7 @@ _MILLTRONICS_CODES = {
     "42": GCode(CYCLE_COMPENSATION, "G42"),
 }
 
-_FANUC = InputControl(
+_FANUC = Dialect(
     name="fanuc",
     maker="Fanuc",
     help="Fanuc lathe, G code system A (two-block G75/G74: G75 R(e) then G75 X(U) Z(W) P Q R F; "
@@ -257,10 +257,10 @@ _FANUC = InputControl(
     cycle_keeps_motion=True,
 )
 
-INPUT_CONTROLS: Dict[str, InputControl] = {
-    control.name: control
-    for control in (
-        InputControl(
+DIALECTS: Dict[str, Dialect] = {
+    dialect.name: dialect
+    for dialect in (
+        Dialect(
             name="sinumerik",
             maker="Siemens",
             help="Siemens (CYCLE93 calls; DIAMON/DIAMOF, G70/G71, G700/G710, G90/G91, G94/G95)",
@@ -277,7 +277,7 @@ INPUT_CONTROLS: Dict[str, InputControl] = {
             dwell_refusals={"S": "G4 S (dwell in spindle revolutions) is not translated: use G4 F<seconds>"},
             program_numbers=False,
         ),
-        InputControl(
+        Dialect(
             name="ab9",
             maker="Allen-Bradley",
             help="Allen-Bradley 9/Series lathe (G77 grooving/cut-off, G76 face grooving; G07/G08, G20/G21, "
@@ -286,7 +286,7 @@ INPUT_CONTROLS: Dict[str, InputControl] = {
             plain_letters=_PLAIN | {"R"},
             dwell_unsupported="G04: the 9/Series dwell word is not documented here; not translated",
         ),
-        InputControl(
+        Dialect(
             name="ab9grind",
             maker="Allen-Bradley",
             help="Allen-Bradley 9/Series grinder (G83/G83.1 plunge surface grinding; X/Y/Z, output mill-style "
@@ -296,7 +296,7 @@ INPUT_CONTROLS: Dict[str, InputControl] = {
             dwell_unsupported="G04: the 9/Series dwell word is not documented here; not translated",
             mill=True,
         ),
-        InputControl(
+        Dialect(
             name="milltronics",
             maker="Milltronics",
             help="Milltronics mill (G33 facing and G34 rectangular pocket autoroutines with P151=.. assignment "
@@ -330,12 +330,11 @@ INPUT_CONTROLS: Dict[str, InputControl] = {
         ),
     )
 }
-DIALECTS = tuple(INPUT_CONTROLS)
 
 
-def input_control(dialect: str) -> InputControl:
-    """The InputControl of ``dialect``; ValueError when unknown."""
+def dialect_named(name: str) -> Dialect:
+    """The Dialect ``name`` (a key of DIALECTS); ValueError when unknown."""
     try:
-        return INPUT_CONTROLS[dialect]
+        return DIALECTS[name]
     except KeyError:
-        raise ValueError("unknown dialect %r (known: %s)" % (dialect, ", ".join(DIALECTS))) from None
+        raise ValueError("unknown dialect %r (known: %s)" % (name, ", ".join(DIALECTS))) from None

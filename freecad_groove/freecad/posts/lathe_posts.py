@@ -1,11 +1,12 @@
-"""The lathe posts' controls: each one a target of the engine's output layer
-(``engine/output/targets.py``: its whole syntax) under the post's name.
+"""The lathe posts: each one (:class:`LathePost`) a target of the engine's
+output layer (``engine/output/targets.py``: its whole syntax) under the post's name.
 
 Nothing here writes a word: what a post says about itself (its tooltip, the
 help of its options, which options it takes) is derived from its target's
 table, and the program is written by the engine's writer and program builder.
-A post stub ``postprocessors/<name>_lathe_post.py`` names its target
-(``CONTROL = "<name>"``); any lathe target of the engine can have one.
+A post stub ``postprocessors/<name>_lathe_post.py`` names its lathe post
+(``LATHE_POST = "<name>"``, a key of ``LATHE_POST_TARGETS``); any lathe target
+of the engine can have one.
 """
 
 from __future__ import annotations
@@ -19,22 +20,22 @@ from ...engine.registry import cycle_for
 if TYPE_CHECKING:
     from .options import Options
 
-# What a control writes a groove as, when it writes it natively.
+# What a post writes a groove as, when it writes it natively.
 NATIVE_CYCLE93 = "cycle93"  # Siemens CYCLE93, every groove
 NATIVE_PECKING = "pecking"  # a pecking cycle (G77/G76, G75/G74), plain grooves only
 
-# The lathe posts: the stub's CONTROL -> its target (LinuxCNC's post writes the C axis of a Cylinder slot).
-LATHE_POSTS = {"sinumerik": "sinumerik", "ab9": "ab9", "fanuc": "fanuc", "haas": "haas", "gsk": "gsk",
+# The lathe posts: the stub's LATHE_POST -> its target (LinuxCNC's post writes the C axis of a Cylinder slot).
+LATHE_POST_TARGETS = {"sinumerik": "sinumerik", "ab9": "ab9", "fanuc": "fanuc", "haas": "haas", "gsk": "gsk",
                "linuxcnc": "linuxcnc-c"}
 
 
-class Control:
-    """One lathe post's control: its target and what the post says of it."""
+class LathePost:
+    """One lathe post: its target and what the post says of it."""
 
     def __init__(self, name: str, target: Target) -> None:
         self.target = target
-        self.name = name  # the post stub's CONTROL
-        self.post = name + "_lathe"  # post name (without _post)
+        self.name = name  # the post stub's LATHE_POST: "gsk"
+        self.freecad_name = name + "_lathe"  # its name in FreeCAD (a Job's PostProcessor; the stub's file less _post)
         self.title = target.title
 
     @property
@@ -69,7 +70,7 @@ class Control:
 
     @property
     def g07_radius_option(self) -> bool:
-        """--g07-radius: G07 may select radius mode on this control (Allen-Bradley)."""
+        """--g07-radius: G07 may select radius mode on this target (Allen-Bradley)."""
         return self.target.x_mode_codes == ("G07", "G08")
 
     @property
@@ -79,7 +80,7 @@ class Control:
 
     @property
     def c_feed(self) -> Optional[str]:
-        """Whether (and how) the control writes the C axis of a Cylinder slot."""
+        """Whether (and how) the target writes the C axis of a Cylinder slot."""
         return self.target.c_feed
 
     @property
@@ -89,8 +90,8 @@ class Control:
 
     # -- the pecking cycles
     @property
-    def cycle_control(self) -> str:
-        """The engine's input control whose registered cycles the post writes."""
+    def cycle_dialect(self) -> str:
+        """The engine's dialect whose registered cycles the post writes."""
         return self.target.native.dialect
 
     @property
@@ -127,7 +128,7 @@ class Control:
 
     def pecking_cycle(self, longitudinal: bool) -> type:
         """The engine's cycle class the post writes for a longitudinal or a face groove."""
-        return cycle_for(self.cycle_control, self.longitudinal_cycle if longitudinal else self.face_cycle)
+        return cycle_for(self.cycle_dialect, self.longitudinal_cycle if longitudinal else self.face_cycle)
 
     # -- help texts
     def grooves_summary(self) -> str:
@@ -154,14 +155,15 @@ class Control:
         return with_g07_meaning(self.target, options.g07_is_diameter)
 
 
-CONTROLS: Dict[str, Control] = {name: Control(name, TARGETS[target]) for name, target in LATHE_POSTS.items()}
+LATHE_POSTS: Dict[str, LathePost] = {name: LathePost(name, TARGETS[target])
+                                     for name, target in LATHE_POST_TARGETS.items()}
 
 
-def control_named(name: str) -> Control:
-    """The control of post ``name`` (a key of CONTROLS, or any other lathe target); ValueError when unknown."""
-    if name not in CONTROLS and name in LATHE_TARGETS:
-        CONTROLS[name] = Control(name, TARGETS[name])
+def lathe_post_named(name: str) -> LathePost:
+    """The lathe post ``name`` (a key of LATHE_POSTS, or any other lathe target); ValueError when unknown."""
+    if name not in LATHE_POSTS and name in LATHE_TARGETS:
+        LATHE_POSTS[name] = LathePost(name, TARGETS[name])
     try:
-        return CONTROLS[name]
+        return LATHE_POSTS[name]
     except KeyError:
-        raise ValueError("unknown control %r (known: %s)" % (name, ", ".join(CONTROLS))) from None
+        raise ValueError("unknown control %r (known: %s)" % (name, ", ".join(LATHE_POSTS))) from None
