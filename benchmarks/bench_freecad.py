@@ -175,6 +175,7 @@ def _post_job(emit, ops_count, per_op):
     ``per_op`` grooves each on a bar R20; None when an op is invalid."""
     import time
 
+    import figures
     import parts
 
     from freecad_groove import make_groove
