@@ -76,6 +76,8 @@ from .cli_options import (
     start_state,
 )
 from .cli_parameters import add_parameter_options, parameter_lines
+from .cli_tools import add_tools_parser
+from .cli_tools import run as run_tools
 from .cli_verify import add_verify_parsers
 from .cli_verify import run as run_verify
 from .engine import registry
@@ -406,6 +408,7 @@ def build_parser():
     add_tool_table_option(ex)
     _add_emit_parsers(sub)
     add_verify_parsers(sub)
+    add_tools_parser(sub)
     return parser
 
 
@@ -455,6 +458,8 @@ def _run_name(args):
     """The name an error of this run starts with."""
     if args.command in ("expand", "verify", "plot"):
         return program_name(args.program)
+    if args.command == "tools":
+        return program_name(args.table)
     return "emit %s" % args.cycle_name
 
 
@@ -466,6 +471,8 @@ def _run(args, name):
             _expand(args, warnings)
         elif args.command in ("verify", "plot"):
             status = run_verify(args, warnings, report)
+        elif args.command == "tools":
+            run_tools(args)
         else:
             write_stdout((_emit(args, warnings),))
         for line, warning in warnings:  # after the output: a failed run reports its error alone

@@ -14,6 +14,11 @@ The text format, one tool a line::
   radius of both front corners (0 or more, less than half the width) and the
   reference corner the tool's offset was measured on (``minus`` or ``plus``,
   see moves.GroovingTool);
+* after them, optionally, ``side=SIDE``: where the blade cuts, ``external``
+  (plunging toward -X), ``internal`` (toward +X, in a bore), ``face``
+  (toward -Z) or ``back-face`` (toward +Z). The cycles do not need it (a
+  cycle's own words say where it cuts); a lathe tool table written for a
+  control does (``tools --to linuxcnc``: the tool's orientation);
 * ``#`` starts a comment, to the end of the line; blank lines are skipped;
 * lengths are in the program's units at the time the cycle runs (a table for
   an inch program holds inches), like ``--tool-width``.
@@ -36,10 +41,11 @@ from .errors import ProgramError
 from .moves import REFERENCE_MINUS, REFERENCE_PLUS, GroovingTool
 from .numbers import MAX_WORD, format_value
 
-__all__ = ["BLADE_UNKNOWN", "ToolTable", "blade_for", "read_tool_table"]
+__all__ = ["BLADE_UNKNOWN", "SIDES", "ToolTable", "blade_for", "read_tool_table"]
 
 BLADE_UNKNOWN = "the blade width is unknown"
 FIELDS = ("T", "width", "corner radius", "reference")
+SIDES = ("external", "internal", "face", "back-face")  # where a blade cuts: plunging -X, +X, -Z, +Z
 _WHOLE = re.compile(r"[0-9]+\Z")
 
 
@@ -50,6 +56,8 @@ class ToolTable(Dict[int, GroovingTool]):
     def __init__(self, tools: Iterable[Tuple[int, GroovingTool]] = (), source: str = "the tool table") -> None:
         super().__init__(tools)
         self.source = source
+        self.sides: Dict[int, str] = {}  # tool number -> its side= (SIDES), where the line gives one
+        self.lines: Dict[int, int] = {}  # tool number -> the line that gives it (messages)
 
 
 def _number(field: str, text: str, line: int) -> float:
@@ -60,6 +68,22 @@ def _number(field: str, text: str, line: int) -> float:
     if not -MAX_WORD < value < MAX_WORD:  # also refuses NaN and infinities
         raise ProgramError("%s=%s: must be a number" % (field, text), line)
     return value
+
+
+def _options(fields: list, line: int) -> Dict[str, str]:
+    """The ``name=value`` fields of a line (removed from ``fields``): side=."""
+    options: Dict[str, str] = {}
+    for field in [f for f in fields if "=" in f]:
+        fields.remove(field)
+        name, value = field.split("=", 1)
+        if name != "side":
+            raise ProgramError("%s: unknown; the only named field is side=" % field, line)
+        if value not in SIDES:
+            raise ProgramError("side=%s: must be %s" % (value, ", ".join(SIDES[:-1]) + " or " + SIDES[-1]), line)
+        if name in options:
+            raise ProgramError("%s: side= is given twice" % field, line)
+        options[name] = value
+    return options
 
 
 def _tool_line(fields: list, line: int) -> Tuple[int, GroovingTool]:
@@ -86,15 +110,18 @@ def read_tool_table(text: str, source_name: str = "the tool table") -> ToolTable
     with ``.line`` on the first line that breaks a rule. ``source_name`` names
     the table in later messages (``ToolTable.source``)."""
     table = ToolTable(source=source_name)
-    lines: Dict[int, int] = {}  # tool number -> the line that gave it
+    lines = table.lines
     for line, raw in enumerate(text.splitlines(), 1):
         fields = raw.split("#", 1)[0].split()
         if not fields:
             continue
+        options = _options(fields, line)
         number, tool = _tool_line(fields, line)
         if number in table:
             raise ProgramError("T=%d: must be unique; line %d gives it already" % (number, lines[number]), line)
         table[number] = tool
+        if "side" in options:
+            table.sides[number] = options["side"]
         lines[number] = line
     return table
 

@@ -42,9 +42,11 @@ def register():
     from ..ops import KINDS
     from ..ops.turning_check.gui.command import CommandCheckTurning
     from .commands import add_command, register_op
+    from .tool_table_command import CommandExportToolTable
 
     FreeCADGui.addLanguagePath(TRANSLATIONS)
     FreeCADGui.updateLocale()
     for kind in KINDS:
         register_op(kind)
     add_command(CommandCheckTurning())
+    add_command(CommandExportToolTable())

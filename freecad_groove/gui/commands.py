@@ -24,8 +24,9 @@ def register_op(kind: OpKind) -> None:
 
 
 def add_command(command: object) -> None:
-    """Add ``command`` to FreeCAD as its NAME, and to CAM's toolbar and menu unless its TOOLBAR is None."""
-    if command.TOOLBAR is None:
+    """Add ``command`` to FreeCAD as its NAME, and to CAM's menu after its MENU_AFTER (None: in no menu) and
+    toolbar TOOLBAR (None: in no toolbar)."""
+    if getattr(command, "MENU_AFTER", None) is None:
         FreeCADGui.addCommand(command.NAME, command)
     else:
         add_to_cam(command.NAME, command, command.TOOLBAR, command.MENU_AFTER)
@@ -78,7 +79,7 @@ class Manipulator:
         self.entries = [(command, toolbar, menu_after)]
 
     def modifyToolBars(self):
-        return [{"append": command, "toolBar": toolbar} for command, toolbar, _after in self.entries]
+        return [{"append": command, "toolBar": toolbar} for command, toolbar, _after in self.entries if toolbar]
 
     def modifyMenuBar(self):
         # "insert" with "after" puts it right after menu_after; "append" would
