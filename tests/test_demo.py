@@ -38,7 +38,8 @@ from freecad_groove.engine.translator import translate_program
 SCRIPT = os.path.join(ROOT, "scripts", "demo")
 LABEL = "1.1"
 TIMEOUT = 1800  # seconds (the FreeCAD part takes a few seconds once FreeCAD is built)
-EXAMPLES = ["seed_cycle93", "ab9_g77", "fanuc_g75", "haas_g75", "ab9_g83", "milltronics_g33_g34"]
+EXAMPLES = ["seed_cycle93", "ab9_g77", "fanuc_g75", "haas_g75", "ab9_g83", "milltronics_g33_g34", "gsk_g7_1"]
+PLOTTED = ["seed_cycle93", "ab9_g77", "fanuc_g75", "haas_g75"]  # the turning programs (a lathe's XZ section)
 NATIVE = {"sinumerik": {"CYCLE93"}, "ab9": {"G77", "G76"}, "fanuc": {"G75", "G74"}, "haas": {"G75", "G74"}}
 SKIPPED = "FreeCAD part SKIPPED"
 
@@ -168,3 +169,31 @@ def test_programs_parse_back_with_the_engine(run, summary, dialect):
             run_rs274(linuxcnc, tool_table=tools_in(linuxcnc))
         except RS274Error as e:
             raise AssertionError("rs274 refused %s translated for LinuxCNC: %s\n%s" % (name, e, linuxcnc)) from None
+
+
+def test_every_example_program_is_in_the_demo():
+    programs = sorted(os.path.splitext(name)[0] for name in os.listdir(os.path.join(ROOT, "examples"))
+                      if not name.endswith(".tbl"))
+    assert programs == sorted(EXAMPLES)
+
+
+def test_each_turning_example_is_plotted_and_the_summary_lists_every_file(run):
+    out, _stdout = run
+    for name in PLOTTED:
+        assert (out / (name + ".png")).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", name
+    listed = (out / "summary.txt").read_text()
+    for name in EXAMPLES:
+        for path in (out / (name + ".ngc"), out / (name + ".fanuc.nc")):
+            assert str(path) in listed, path
+    for name in set(EXAMPLES) - set(PLOTTED):
+        assert "examples/%s" % name in listed and "not plotted: milled" in listed
+
+
+def test_the_gsk_slot_is_written_for_the_c_axis_lathes(run):
+    out, _stdout = run
+    linuxcnc = (out / "gsk_g7_1.ngc").read_text()
+    fanuc = (out / "gsk_g7_1.fanuc.nc").read_text()
+    # the example's path at the finishing pass's diameter 36 (J-4 from 40): along Z, then around C at
+    # 100 mm/min on R18 ... the developed surface's feed in degrees a minute at R20 (the G7.1 radius C20.)
+    assert "C90. F286.478898" in linuxcnc and "G1 X36." in linuxcnc
+    assert re.search(r"^C90\.? F286\.4789", fanuc, re.M), fanuc
