@@ -241,6 +241,7 @@ _MILLTRONICS_CODES = {
     "19": GCode(REFUSED, "plane selection: only the XY plane (G17) is translated"),
     "43": GCode(LENGTH_OFFSET, True),
     "49": GCode(LENGTH_OFFSET, False),
+    "98": GCode(CYCLE_RETURN, "G98"),
     "99": GCode(CYCLE_RETURN, "G99"),
     "41": GCode(CYCLE_COMPENSATION, "G41"),
     "42": GCode(CYCLE_COMPENSATION, "G42"),
