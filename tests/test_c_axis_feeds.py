@@ -18,6 +18,9 @@ import math
 import pytest
 from rs274 import require_rs274, run_rs274
 
+from freecad_groove.engine.cycles.gsk_g7_1 import GskG7_1
+from freecad_groove.engine.errors import ProgramError
+from freecad_groove.engine.moves import MachineState
 from freecad_groove.engine.numbers import format_decimal
 from freecad_groove.engine.output.targets import TARGETS
 from freecad_groove.engine.translator import translate_program
@@ -117,3 +120,25 @@ def test_the_issue_program_in_inch_is_written_for_fanuc_c_as_for_linuxcnc_c():
         written = translate_program(text, "gsk", target=target)
         turns = [line for line in written.splitlines() if line.startswith("C90.")]
         assert turns == ["C90. F286.478898"] * 3, written
+
+
+@pytest.mark.parametrize("type_ii", [False, True], ids=["type-i", "type-ii"])
+def test_a_region_whose_path_does_not_move_is_refused_naming_it(type_ii):
+    # found by tests/test_cli_fuzz_seed_inputs.py: Type II ended in "internal error (IndexError)"
+    text = "G20 G98\nG0 X%s Z0. C0.\nG7.1 C.8%s\nG1 C0. F2.\nG7.1 C0\nM30\n" % (
+        "1.7" if type_ii else "1.6", TYPE_II["inch"] if type_ii else "")
+    for target in C_TARGETS:
+        with pytest.raises(ProgramError, match=r"^G7.1 path: no block of the region moves Z or C from where the "
+                                               r"tool is \(Z0. C0.\): nothing to cut$") as raised:
+            translate_program(text, "gsk", target=target)
+        assert raised.value.line == 3
+
+
+def test_a_type_ii_path_back_to_its_start_makes_no_empty_return_move():
+    # found by test_gsk_g7_1's rs274 comparison: E = G, the return E -> G was a move of no length the writer drops
+    text = "G21 G98\nG0 X42. Z0. C0.\nG7.1 C20. J-3. R1. K0.2 L3\nG1 C0.1 F200.\nG1 C0.\nG7.1 C0\nM30\n"
+    region = GskG7_1.parse("G7.1 C20. J-3. R1. K0.2 L3\nG1 C0.1 F200.\nG1 C0.\nG7.1 C0")
+    moves = region.expand(MachineState(x=21.0, z=0.0, c=0.0, feed=None, feed_per_rev=False))
+    # per pass (3 rough, 1 finish): infeed, C0.1, C0, X out; the first pass after the rapid to G (X41)
+    assert [move.kind for move in moves] == ["G0"] + ["G1", "G1", "G1", "G0"] * 4
+    assert len(run_rs274(translate_program(text, "gsk", target="linuxcnc-c"), rotary=True)) == 1 + len(moves)
