@@ -3,8 +3,10 @@
 Expected move lists are worked out by hand from the sequence in ab_g83's
 notes: (G83.1: dress P first) plunge pick J at F; X strokes at E to X, to I,
 ...; at each reversal a cross pick K (at X) / R (at I) at F toward the
-crossover end Z; at a reversal where the crossover end is reached, the plunge
-pick Q (clipped to Y) and the crossover turns back; after Y one crossover at
+crossover end Z; at a reversal at I (the seed's step 4: "The plunge pick move
+(Q) begins as the X axis decelerates to the secondary reversal point") where
+the crossover end is reached, the plunge pick Q (clipped to Y) and the
+crossover turns back; at X the crossover end only turns; after Y one crossover at
 depth plus L spark-out crossovers; D dresses after plunges ceil(i n / D).
 Tuples are (kind, x, y, z, f or program number).
 """
@@ -52,18 +54,71 @@ def test_registered_for_the_grinder_control():
 # ---------------------------------------------------------------- hand-derived expansions
 
 
-def test_no_crossover_plunges_at_every_reversal_then_one_stroke_at_depth():
-    # Z = start Z: every reversal is a crossover end. J 0.1, then Q 0.1 to Y-0.25 (last clipped).
+def test_no_crossover_plunges_at_every_reversal_at_i_then_one_stroke_at_depth():
+    # Z = start Z: every reversal is a crossover end; Q only at I (step 4). J 0.1, then Q 0.1 to Y-0.25.
     m = G83(X=50.0, Y=-0.25, J=0.1, Z=0.0, K=1.0, F=20.0, E=3000.0)
     assert moves_of(m.expand(start())) == [
         (G1, 0.0, -0.1, 0.0, 20.0),  # plunge pick at start J
-        (G1, 50.0, -0.1, 0.0, 3000.0),  # stroke to the primary reversal X
-        (G1, 50.0, -0.2, 0.0, 20.0),  # plunge pick Q (= J)
-        (G1, 0.0, -0.2, 0.0, 3000.0),  # stroke to the secondary reversal: the start point (no I)
-        (G1, 0.0, -0.25, 0.0, 20.0),  # the last pick clipped to Y
+        (G1, 50.0, -0.1, 0.0, 3000.0),  # stroke to the primary reversal X: it only turns
+        (G1, 0.0, -0.1, 0.0, 3000.0),  # stroke to the secondary reversal: the start point (no I)
+        (G1, 0.0, -0.2, 0.0, 20.0),  # plunge pick Q (= J) at I
+        (G1, 50.0, -0.2, 0.0, 3000.0),
+        (G1, 0.0, -0.2, 0.0, 3000.0),
+        (G1, 0.0, -0.25, 0.0, 20.0),  # the last pick clipped to Y, at I
         (G1, 50.0, -0.25, 0.0, 3000.0),  # one stroke at the final depth, L = 0: the end
         (G1, 50.0, -0.25, 0.0, 20.0),  # F in force again (the last move was at E)
     ]
+
+
+# the issue's call (issue 20, item 2): from X20 Y0 Z0, I0, crossover to Z10 by R4 at I and K5 at X
+ISSUE = dict(X=50.0, I=0.0, Y=-0.1, J=0.05, Z=10.0, K=5.0, R=4.0, Q=0.03, F=10.0, E=2000.0)
+
+
+def test_the_plunge_pick_q_is_made_at_the_secondary_reversal_point_i_as_step_4_says():
+    assert moves_of(G83(**ISSUE).expand(start(20.0))) == [
+        (G1, 20.0, -0.05, 0.0, 10.0),  # J at the start
+        (G1, 0.0, -0.05, 0.0, 2000.0),  # step 3: to I first
+        (G1, 0.0, -0.05, 4.0, 10.0),  # R 4 at I
+        (G1, 50.0, -0.05, 4.0, 2000.0),
+        (G1, 50.0, -0.05, 9.0, 10.0),  # K 5 at X
+        (G1, 0.0, -0.05, 9.0, 2000.0),
+        (G1, 0.0, -0.05, 10.0, 10.0),  # R 4 clipped to Z10: the crossover end
+        (G1, 50.0, -0.05, 10.0, 2000.0),  # at X the end only turns: Q waits for I
+        (G1, 0.0, -0.05, 10.0, 2000.0),
+        (G1, 0.0, -0.08, 10.0, 10.0),  # Q 0.03 at I; the crossover turns back
+        (G1, 50.0, -0.08, 10.0, 2000.0),
+        (G1, 50.0, -0.08, 5.0, 10.0),  # K 5
+        (G1, 0.0, -0.08, 5.0, 2000.0),
+        (G1, 0.0, -0.08, 1.0, 10.0),  # R 4
+        (G1, 50.0, -0.08, 1.0, 2000.0),
+        (G1, 50.0, -0.08, 0.0, 10.0),  # K 5 clipped to the start Z
+        (G1, 0.0, -0.08, 0.0, 2000.0),
+        (G1, 0.0, -0.1, 0.0, 10.0),  # Q at I, 0.03 clipped to Y-0.1
+        (G1, 50.0, -0.1, 0.0, 2000.0),  # the crossover at depth
+        (G1, 50.0, -0.1, 5.0, 10.0),
+        (G1, 0.0, -0.1, 5.0, 2000.0),
+        (G1, 0.0, -0.1, 9.0, 10.0),
+        (G1, 50.0, -0.1, 9.0, 2000.0),
+        (G1, 50.0, -0.1, 10.0, 10.0),
+        (G1, 0.0, -0.1, 10.0, 2000.0),  # at the end: L0, the cycle ends at this reversal
+        (G1, 0.0, -0.1, 10.0, 10.0),  # F in force again
+    ]
+
+
+def test_without_crossover_the_issue_call_picks_q_only_at_i():
+    moves = G83(**dict(ISSUE, Z=0.0)).expand(start(20.0))
+    assert moves_of(moves) == [
+        (G1, 20.0, -0.05, 0.0, 10.0),
+        (G1, 0.0, -0.05, 0.0, 2000.0),
+        (G1, 0.0, -0.08, 0.0, 10.0),  # Q at I
+        (G1, 50.0, -0.08, 0.0, 2000.0),  # X only turns
+        (G1, 0.0, -0.08, 0.0, 2000.0),
+        (G1, 0.0, -0.1, 0.0, 10.0),  # Q at I reaches Y
+        (G1, 50.0, -0.1, 0.0, 2000.0),  # one stroke at depth
+        (G1, 50.0, -0.1, 0.0, 10.0),
+    ]
+    picks = [(b.x, b.y) for a, b in zip(moves, moves[1:]) if b.y != a.y]
+    assert [x for x, _ in picks] == [0.0, 0.0]  # every Q pick at I0, none at the primary X50
 
 
 def test_crossover_picks_k_and_r_then_plunge_q_at_the_crossover_end_and_turn_back():
@@ -160,7 +215,7 @@ def test_dresses_follow_the_plunges_spread_evenly_and_g83_1_dresses_first():
 def test_more_dresses_than_plunges_call_p_several_times_after_a_plunge():
     m = G83(X=10.0, Y=-0.2, J=0.1, Z=0.0, K=1.0, F=5.0, P=3, D=3)  # one Q plunge
     kinds = [move[0] for move in moves_of(m.expand(start()))]
-    assert kinds == [G1, G1, G1, DR, DR, DR, G1]  # E = F: no move to set F again
+    assert kinds == [G1, G1, G1, G1, DR, DR, DR, G1]  # J, to X, to I, Q at I, the dresses; E = F: no F move
 
 
 # ---------------------------------------------------------------- the program's memory
@@ -333,7 +388,8 @@ M30
 
 
 def test_a_grinder_program_becomes_a_mill_program_for_linuxcnc():
-    # Y1 -> 0.8: J 0.1 at the start, Q (= J) 0.1 at X50 reaching Y0.8, then one stroke back at depth.
+    # Y1 -> 0.8: J 0.1 at the start, to X50 (it only turns), back to I (the start X0), Q (= J) 0.1 there
+    # reaching Y0.8, then one stroke at depth.
     assert translate_program(SMALL, "ab9grind", target="linuxcnc").splitlines() == [
         "(PROGRAM: ab9grind program, cycles expanded for linuxcnc-mill by freecad-groove)",
         "G17 G21 G90 G91.1 G40",
@@ -343,9 +399,10 @@ def test_a_grinder_program_becomes_a_mill_program_for_linuxcnc():
         "o<dress7> call",  # G83.1: the dress first
         "G1 X0. Y0.9 Z0. F20.",  # after the call every axis, G1 and F again
         "X50. F3000.",
+        "X0.",
         "Y0.8 F20.",
         "o<dress7> call",  # D1: after the one plunge at a reversal
-        "G1 X0. Y0.8 Z0. F3000.",
+        "G1 X50. Y0.8 Z0. F3000.",
         "F20.",  # the plunge feed in force again after the cycle
         "M2",
     ]
@@ -363,7 +420,7 @@ def test_the_second_cycle_of_a_program_takes_the_omitted_words_from_the_first():
     second = lines[lines.index("(G83 Y-0.2 P8)"):]
     # X50 (absolute, remembered), J 0.1 (remembered), K; F the feed in force (F20: the first cycle ends
     # with it), E 3000 (remembered)
-    assert second == ["(G83 Y-0.2 P8)", "G1 Y0.9", "X50. F3000.", "Y0.8 F20.", "X0. F3000.", "F20.", "M2"]
+    assert second == ["(G83 Y-0.2 P8)", "G1 Y0.9", "X50. F3000.", "X0.", "Y0.8 F20.", "X50. F3000.", "F20.", "M2"]
 
 
 def test_a_cycle_whose_memory_depends_on_a_block_delete_line_is_refused():

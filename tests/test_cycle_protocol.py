@@ -206,7 +206,8 @@ def test_the_base_class_defaults_are_the_cycle_without_extras():
     assert toy.with_earlier({"X": 1.0}, None) is toy and toy.remembered(None) == {}
     assert ToyPlunge.region_ends("G79 X1.") is False and ToyPlunge.check_region_block("X1.", "ctx") == "ctx"
     assert (ToyPlunge.BLOCKS, ToyPlunge.MEMORY, ToyPlunge.PARAMETERS, ToyPlunge.MILL, ToyPlunge.Z_ONLY,
-            ToyPlunge.NEEDS_BLADE, ToyPlunge.RETRACT_BLOCK) == (SingleBlock, "", (), False, False, False, "")
+            ToyPlunge.FROM_UNKNOWN_Z, ToyPlunge.NEEDS_BLADE, ToyPlunge.RETRACT_BLOCK) == (
+        SingleBlock, "", (), False, False, False, False, "")
 
 
 # ---------------------------------------------------------------- a new block form, nothing else
@@ -279,7 +280,8 @@ def _declared_row(entry):
     cls = entry.cycle_class
     key = entry.key + (" (%s)" % ", ".join(entry.aliases) if entry.aliases else "")
     also = (["RETRACT_BLOCK " + cls.RETRACT_BLOCK] if cls.RETRACT_BLOCK else []) + [
-        name for name, flag in (("NEEDS_BLADE", cls.NEEDS_BLADE), ("MILL", cls.MILL), ("Z_ONLY", cls.Z_ONLY)) if flag]
+        name for name, flag in (("NEEDS_BLADE", cls.NEEDS_BLADE), ("MILL", cls.MILL), ("Z_ONLY", cls.Z_ONLY),
+                                ("FROM_UNKNOWN_Z", cls.FROM_UNKNOWN_Z)) if flag]
     return [entry.name, key, ", ".join(entry.dialects), "CALL" if entry.form == registry.CALL else "G_WORD",
             cls.BLOCKS.__name__, cls.MEMORY, " ".join(cls.PARAMETERS), ", ".join(also),
             cls.__module__.rsplit(".", 1)[1] + ".py"]

@@ -58,7 +58,7 @@ def test_the_example_program_runs_in_linuxcnc_and_every_move_stays_in_its_rectan
     assert proc.returncode == 0, proc.stderr
     canon = run_rs274(proc.stdout.decode(), xyz=True, tool_table=[1])  # T1 M6, G43 H1: tool 1 in the table
     inch = [c[:4] for c in canon]
-    assert inch[0] == ("G0", 0.0, 0.0, pytest.approx(4.0))  # the G32 before any X Y: Z alone
+    assert inch[0] == ("G0", 1.0, 2.0, 0.0)  # N3 G0 X1 Y2: X and Y alone (the seed as printed has no Z)
     cuts = [c for c in inch if c[3] < -1e-9]
     assert min(c[3] for c in cuts) == pytest.approx(-0.5)
     for _, x, y, _ in cuts:  # the facing (centre X1 Y2, 1 x 3) or the pocket (centre X4 Y2, 2 x 1.5)
@@ -307,7 +307,7 @@ def test_tool_changes_and_length_offsets_are_written_for_fanuc():
 
 def test_after_a_tool_change_the_position_is_unknown():
     text = "G20 G90\nG0 X0 Y0 Z1.\nT1 M6\nF20\nP151=1\nP152=1\nP155=.1\nG33 R.1 Z-.1 V-.1\nM30\n"
-    with pytest.raises(ProgramError, match="G33 needs its start point: program an absolute X, Y and Z") as raised:
+    with pytest.raises(ProgramError, match="G33 needs its start point: program an absolute X and Y before") as raised:
         translate_program(text, "milltronics", QUARTER, target="linuxcnc")
     assert raised.value.line == 8
 

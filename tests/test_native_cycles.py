@@ -145,7 +145,7 @@ def test_milltronics_autoroutines_are_written_with_their_d_register_and_p_blocks
     assert isinstance(G34.parse("\n".join(pocket[1:])), G34)
     # G31 after a native G33: the clearance plane R0.1 the call gave the control; G32: a machine setting
     assert lines_after(text, "G31: Z0.1, the last R") == ["G31"]
-    assert lines_after(text, "N21 (G32", 2) == ["(tool change position Z4.: a machine setting, "
+    assert lines_after(text, "N18 (G32", 2) == ["(tool change position Z4.: a machine setting, "
                                              "milltronics_tool_change_inch)", "G32"]
 
 

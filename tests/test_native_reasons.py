@@ -216,7 +216,7 @@ def test_an_allen_bradley_shift_is_no_cycle93():
 
 
 def test_an_autoroutine_without_a_d_register_and_the_g31_after_it_fall_back():
-    program = MILL.replace("N5 D1 G43 H1", "N5 G43 H1").replace("R.1 Z-.5", "R.2 Z-.5")
+    program = MILL.replace("M3 D1 G43 H1", "M3 G43 H1").replace("R.1 Z-.5", "R.2 Z-.5")
     settings = Settings(mill_tool_diameter=0.25)
     text = native(program, "milltronics", "milltronics", settings)
     expanded_with(text, "G33 reads the end mill's diameter from the D register in force, which the program does "

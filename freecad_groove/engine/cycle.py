@@ -55,6 +55,7 @@ class Cycle:
     NEEDS_BLADE: ClassVar[bool] = False  # its moves depend on the blade: expanded only with a known one (CYCLE93)
     MILL: ClassVar[bool] = False  # mill-style moves (X plain, Y set): a mill-style dialect's, on the mill twins
     Z_ONLY: ClassVar[bool] = False  # one rapid of Z alone: needs no start point, only the units (Milltronics G31)
+    FROM_UNKNOWN_Z: ClassVar[bool] = False  # runs with the Z before the call not known (Milltronics G33/G34)
     BLOCKS: ClassVar[Type[BlockForm]] = SingleBlock  # how its call is written over blocks (block_forms.py)
     RETRACT_BLOCK: ClassVar[str] = ""  # BLOCKS = RetractBlock: the letter of the first block "NAME R(e)"
     MEMORY: ClassVar[str] = ""  # a program memory's key: the words a call omits come from the previous call

@@ -41,7 +41,7 @@ FEED_MODE = "feed mode"
 DIAMETER = "diameter mode"
 SPEED_LIMIT = "spindle speed limit"
 CYCLE = "cycle"
-# G codes only a cycle's block may hold (Milltronics G99 and G41/G42 with G33/G34), two modal groups
+# G codes only a cycle's block may hold (Milltronics G98/G99 and G41/G42 with G33/G34), two modal groups
 CYCLE_RETURN = "cycle option: return"
 CYCLE_COMPENSATION = "cycle option: compensation"
 CYCLE_OPTIONS = (CYCLE_RETURN, CYCLE_COMPENSATION)
@@ -241,6 +241,7 @@ _MILLTRONICS_CODES = {
     "19": GCode(REFUSED, "plane selection: only the XY plane (G17) is translated"),
     "43": GCode(LENGTH_OFFSET, True),
     "49": GCode(LENGTH_OFFSET, False),
+    "98": GCode(CYCLE_RETURN, "G98"),
     "99": GCode(CYCLE_RETURN, "G99"),
     "41": GCode(CYCLE_COMPENSATION, "G41"),
     "42": GCode(CYCLE_COMPENSATION, "G42"),

@@ -29,7 +29,9 @@ class Move(NamedTuple):
     kind  RAPID, FEED, ARC_CW, ARC_CCW, DWELL or DRESS (a dress subprogram
           call, at the position held; each target writes its own subprogram call).
     x, z  target (radius, absolute); for DWELL the position held. x None: X
-          (and Y) not moved, a mill's Z-only rapid (Milltronics G31/G32).
+          (and Y) not moved, a mill's Z-only rapid (Milltronics G31/G32);
+          z None: Z not moved, a mill's X Y rapid at the height held when
+          the Z before a Milltronics G33/G34 is not known.
     f     feed for FEED moves, None = the feed already in force.
     p     dwell time in seconds for DWELL, the program number for DRESS, else 0.
     y     target Y of a cycle on a machine with a Y axis (mill-style
@@ -47,7 +49,7 @@ class Move(NamedTuple):
 
     kind: str
     x: Optional[float]
-    z: float
+    z: Optional[float]
     f: Optional[float] = None
     p: float = 0.0
     y: Optional[float] = None
@@ -133,7 +135,7 @@ class MachineState:
     """
 
     x: float = 0.0
-    z: float = 0.0
+    z: Optional[float] = 0.0  # None: not known (only a cycle with FROM_UNKNOWN_Z is called so)
     feed: Optional[float] = None
     diameter_mode: bool = True
     incremental: bool = False

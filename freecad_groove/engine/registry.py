@@ -3,7 +3,7 @@
 A cycle class derives from ``cycle.Cycle``, which names everything the rest of
 the project reads of a cycle, with its default: the declaration (NAME, KEY,
 ALIASES, DIALECTS, TITLE, FORM, WORD_HELP, COUNTED, NEEDS_BLADE, MILL,
-Z_ONLY, BLOCKS, RETRACT_BLOCK, MEMORY, MEMORY_WHAT, PARAMETERS) and the hooks
+Z_ONLY, FROM_UNKNOWN_Z, BLOCKS, RETRACT_BLOCK, MEMORY, MEMORY_WHAT, PARAMETERS) and the hooks
 (parse, emit, validate, expand, warnings, note, the memory hooks
 with_earlier/remembered, the region hooks region_ends/check_region_block).
 It is registered with the ``@register`` decorator, which checks the

@@ -56,8 +56,10 @@ class CycleTranslation(TranslatorBase):
             model.validate(settings)
         except CycleError as exc:
             self._fail(exc.message)
-        self._check_cycle_start(call.name, cycle.Z_ONLY)
+        self._check_cycle_start(call.name, cycle.Z_ONLY, cycle.FROM_UNKNOWN_Z)
         start = self.state.machine_state()
+        if cycle.FROM_UNKNOWN_Z and "z" in self.state.ambiguous - self._defined:
+            start.z = None  # a Z a block-delete line may have changed is not known: the cycle needs none
         try:
             if cycle.MEMORY:
                 model = with_memory(self, model, start)
@@ -159,18 +161,19 @@ class CycleTranslation(TranslatorBase):
 
     # -- state before and after ------------------------------------------------------------
 
-    def _check_cycle_start(self, name: str, z_only: bool = False) -> None:
+    def _check_cycle_start(self, name: str, z_only: bool = False, unknown_z: bool = False) -> None:
         """A cycle needs a known start point, feed mode and (per revolution) spindle; a cycle that is one
-        rapid of Z alone (``Z_ONLY``: Milltronics G31/G32) needs only the units its height is in."""
+        rapid of Z alone (``Z_ONLY``: Milltronics G31/G32) needs only the units its height is in, one that
+        runs from an unknown Z (``FROM_UNKNOWN_Z``: G33/G34) only X and Y of its start point."""
         state = self.state
         if z_only:
             self._not_ambiguous("metric", why=name)
             return
-        if state.x is None or state.z is None or (self.dialect.mill and state.y is None):
-            self._fail("%s needs its start point: program an absolute %s before the call"
-                       % (name, "X, Y and Z" if self.dialect.mill else "X and Z"))
-        self._not_ambiguous("x", "y", "z", "feed", "feed_per_rev", "metric", "diameter", "diam90", "incremental",
-                            why=name)
+        if state.x is None or (state.z is None and not unknown_z) or (self.dialect.mill and state.y is None):
+            axes = ("X and Y" if unknown_z else "X, Y and Z") if self.dialect.mill else "X and Z"
+            self._fail("%s needs its start point: program an absolute %s before the call" % (name, axes))
+        self._not_ambiguous("x", "y", *(() if unknown_z else ("z",)), "feed", "feed_per_rev", "metric", "diameter",
+                            "diam90", "incremental", why=name)
         if state.feed_per_rev is None:
             self._fail("%s before the feed mode is programmed (%s)" % (name, self.dialect.feed_mode_codes))
         if state.siemens_g70:

@@ -30,11 +30,15 @@ README row with a test):
    start is not on it (the manual's step 3), then to the primary X, to I, and
    so on. At each reversal the crossover axis picks K (at X)
    or R (at I) at F toward the crossover end, the last pick clipped to it.
-4. At a reversal where the crossover end has been reached, the plunge pick Q
-   at F instead (clipped to Y), and the crossover turns back toward the start
-   Z [choice]; that reversal makes no cross pick, so the strip at each end of
-   the crossover gets a second stroke. With no crossover (Z = the start Z)
-   every reversal plunges.
+4. The plunge pick Q at F (clipped to Y) is made at the secondary reversal
+   point I only, as the manual's step 4 says ("begins as the X axis
+   decelerates to the secondary reversal point"): at the first reversal at I
+   that finds the crossover end reached, instead of the cross pick, and the
+   crossover turns back toward the start Z [choice]. A reversal at X that
+   finds the crossover end reached only turns (no pick) and X strokes back
+   to I on that end strip [choice]; so the strip at each end of the crossover
+   gets a second stroke (two when the end is reached at X). With no crossover
+   (Z = the start Z) every reversal at I plunges, those at X only turn.
 5. After the pick that reaches Y: one crossover at the final depth (the pass
    that grinds the face there) [choice], then L spark-out crossovers, each a
    crossover end to end without plunge; with no crossover a pass is one stroke
@@ -372,17 +376,19 @@ def grind_moves(plan: GrindPlan, cycle: str = "G83") -> List[Move]:
         pick = plan.k if reversal == plan.primary else plan.r
         if abs(wheel.z - cross_to) > TOLERANCE:
             wheel.feed(plan.feed, z=_toward(wheel.z, cross_to, pick))
-        else:
-            if passes_left is None:
+        elif passes_left is None:
+            if reversal == plan.secondary:  # step 4: the plunge pick Q as X decelerates to I
                 wheel.feed(plan.feed, y=_toward(wheel.y, plan.depth, plan.q))
                 plunge += 1
                 for _ in range(dresses.get(plunge, 0)):
                     wheel.dress(plan.program)
                 if wheel.y == plan.depth:
                     passes_left = 1 + plan.spark_out
-            else:
-                passes_left -= 1
-                if passes_left == 0:
-                    return _ending_at_feed(wheel.moves, plan)
+                cross_to = plan.z0 if cross_to == plan.cross_end else plan.cross_end
+            # at the primary X the crossover end waits for I: no pick, one more stroke on the end strip
+        else:
+            passes_left -= 1
+            if passes_left == 0:
+                return _ending_at_feed(wheel.moves, plan)
             cross_to = plan.z0 if cross_to == plan.cross_end else plan.cross_end
         reversal = plan.secondary if reversal == plan.primary else plan.primary

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, List, Optional, Tuple
 
 from ..envelope import Envelope, Turn
 from ..moves import FEED, RAPID, REFERENCE_PLUS, Move, arc
-from ..numbers import MAX_WORD, format_given, format_value
+from ..numbers import MAX_DWELL_SECONDS, MAX_WORD, format_given, format_value
 from ..settings import Settings
 from .cycle93_constants import (
     ALARM_FORM,
@@ -132,6 +132,9 @@ class GrooveGeometry:
         for name in ("FAL1", "FAL2", "DWT", "VRT"):
             if p[name] < 0:
                 raise cycle93_error(name, getattr(call, name.lower()), "must not be negative (enter without sign)")
+        if p["DWT"] > MAX_DWELL_SECONDS:  # one bound for every output: native calls, expansions, the posts, the op
+            raise cycle93_error("DWT", call.dwt, "the dwell must be 0 to %s s, the longest every target writes"
+                                % format_given(MAX_DWELL_SECONDS))
         if p["FAL1"] >= p["DEPG"]:
             raise cycle93_error(
                 "FAL1",

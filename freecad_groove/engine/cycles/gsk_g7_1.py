@@ -390,6 +390,9 @@ class GskG7_1(Cycle):
             raise _fail("G99", None, "cylindrical interpolation feeds per minute: program G98 before %s" % self.code)
         scale = 1.0 if state.metric else 1.0 / MM_PER_INCH
         segments = path_segments(self.C, (state.z, state.c), self.path, state.feed, scale)
+        if not segments:  # every block ends where the tool is: no slot (Type II would retract from nowhere)
+            raise _fail("path", None, "no block of the region moves Z or C from where the tool is (Z%s C%s): "
+                        "nothing to cut" % (format_decimal(state.z, DECIMALS), format_decimal(state.c, DECIMALS)))
         passes = self.pass_radii(state)
         if len(passes) * (len(segments) + 3) > MAX_MOVES:
             raise _fail("L", self.L, "the region would expand into more than %d moves" % MAX_MOVES)
@@ -426,7 +429,8 @@ class GskG7_1(Cycle):
             moves.extend(Move(FEED, radius, seg.z, seg.f, c=seg.c) for seg in segments)  # An -> Dn
             end = segments[-1]
             moves.append(Move(RAPID, clear, end.z, c=end.c))  # Dn -> E
-            moves.append(Move(RAPID, clear, state.z, c=state.c))  # E -> G
+            if (end.z, end.c) != (state.z, state.c):  # a path back to its start: E is G already
+                moves.append(Move(RAPID, clear, state.z, c=state.c))  # E -> G
             infeed = next((b.f for b in reversed(self.path) if b.f is not None), infeed)
         return moves
 

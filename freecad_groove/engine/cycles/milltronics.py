@@ -3,7 +3,8 @@ rectangular pocket), as section four of the Milltronics mill manual documents th
 
 Program shape [documented]: the P parameters are set by assignment blocks
 before the call (``P151=1``) and stay in force until changed; the call block
-holds the autoroutine's G code, G99 (return to the Z clearance at the end),
+holds the autoroutine's G code, G99 (return to the Z clearance at the end; G98,
+not on the seed page, the initial level: the Z before the call [choice]),
 G41 or G42 (cutter compensation on), R (clearance plane), Z (final depth), V
 (first depth; omitted: R - Q), Q (Z increment) and F (Z feed; the X-Y feed is
 the F in force before the call). The rectangle is P151 (X size) x P152 (Y size)
@@ -40,8 +41,12 @@ row with a test), the tool an end mill of diameter ``Settings.mill_tool_diameter
 - The tool's moves are made in ``milltronics_paths``.
 - Before the first depth the tool goes to the clearance plane R, then over the
   start point, rapids to R and feeds down [choice]; at the end G99 rapids to R,
-  without G99 the tool rises the lift above the last depth [choice]; X and Y
-  stay where the cut ended.
+  G98 to the Z before the call, without either the tool rises the lift above
+  the last depth [choice]; X and Y stay where the cut ended.
+- The Z before the call may be unknown (the seed's own example: ``G43 H1``
+  then ``G0 X1 Y2``, no Z): as the control does, the tool rapids in X and Y
+  over the start at the height it is at, then Z to R [choice: nothing is
+  assumed of that height]; only G98, which returns to it, is refused.
 """
 
 import re
@@ -62,6 +67,7 @@ __all__ = ["G31", "G32", "G33", "G34", "MilltronicsCycle"]
 PARAMETERS = ("P150", "P151", "P152", "P153", "P154", "P155")
 LETTERS = ("R", "Z", "V", "Q", "F")
 COMPENSATION = ("G41", "G42")
+RETURNS = ("G98", "G99")  # the initial level (the Z before the call), the clearance plane R
 Memory = Dict[str, float]  # "P151" -> value, "R" -> the last clearance plane
 
 _ASSIGNMENT = re.compile(r"^P(\d+)=([+-]?(?:\d+\.?\d*|\.\d+))$")
@@ -89,8 +95,10 @@ def _read_call(line: str, cls: type, values: Dict[str, object]) -> None:
             code = "G%d" % int(float(number)) if float(number).is_integer() else "G" + number
             if code == name and not seen:
                 seen = True
-            elif code == "G99" and code in cls.OPTIONS:
-                values["G99"] = True
+            elif code in RETURNS and code in cls.OPTIONS:
+                if values.get("G98" if code == "G99" else "G99"):
+                    raise CycleError(code, None, "G98 and G99 in one block: program one", cycle=name)
+                values[code] = True
             elif code in COMPENSATION and code in cls.OPTIONS:
                 if values.get("compensation") not in (None, code):
                     raise CycleError(code, None, "G41 and G42 in one block: program one", cycle=name)
@@ -116,7 +124,8 @@ class MilltronicsCycle(Cycle):
     MILL: ClassVar[bool] = True
     COUNTED: ClassVar[tuple] = ()
     WORDS: ClassVar[tuple] = LETTERS  # the call's letter words; the P parameters come from assignment blocks
-    OPTIONS: ClassVar[tuple] = ("G99",) + COMPENSATION  # the G codes the call block may hold
+    OPTIONS: ClassVar[tuple] = RETURNS + COMPENSATION  # the G codes the call block may hold
+    FROM_UNKNOWN_Z: ClassVar[bool] = True  # X Y at the height held, then Z to R: needs no Z before the call
     PARAMETERS: ClassVar[tuple] = PARAMETERS  # set by assignment blocks (the translator keeps them under MEMORY)
     MEMORY_WHAT: ClassVar[str] = "the P parameters and the clearance plane R %s runs with"
 
@@ -126,6 +135,7 @@ class MilltronicsCycle(Cycle):
     Q: Optional[float] = None
     F: Optional[float] = None
     G99: bool = False
+    G98: bool = False
     compensation: Optional[str] = None  # "G41", "G42" or None
     P150: Optional[float] = None
     P151: Optional[float] = None
@@ -153,7 +163,8 @@ class MilltronicsCycle(Cycle):
         """The assignment blocks and the call as the control reads them."""
         lines = ["%s=%s" % (key, word_value(getattr(self, key))) for key in PARAMETERS
                  if getattr(self, key) is not None]
-        parts = [self.NAME] + (["G99"] if self.G99 else []) + ([self.compensation] if self.compensation else [])
+        parts = [self.NAME] + [code for code in RETURNS if getattr(self, code)]
+        parts += [self.compensation] if self.compensation else []
         parts += [letter + word_value(getattr(self, letter), letter) for letter in LETTERS
                   if getattr(self, letter) is not None]
         return "\n".join(lines + [" ".join(parts)])
@@ -169,6 +180,8 @@ class MilltronicsCycle(Cycle):
                 check_number(self.NAME, item.name, value)
         if self.compensation not in (None,) + COMPENSATION:
             raise self._error("compensation", "must be G41, G42 or none")
+        if self.G98 and self.G99:
+            raise CycleError("G98", None, "G98 and G99 in one block: program one", cycle=self.NAME)
         if self.Q is not None and not self.Q > 0:
             raise self._error("Q", "must be greater than 0: the depths would never reach Z")
         if self.F is not None and not self.F > 0:
@@ -242,10 +255,13 @@ class MilltronicsCycle(Cycle):
             raise CycleError("tool diameter", None, "is not known: give the end mill's diameter with "
                              "--tool-diameter, or program D<n> and give a tool table of diameters by D",
                              cycle=self.NAME)
-        for axis, value in (("X", state.x), ("Y", state.y), ("Z", state.z)):
+        for axis, value in (("X", state.x), ("Y", state.y)):
             if value is None:
                 raise CycleError(axis, None, "the start position is not known: program it before the call",
                                  cycle=self.NAME)
+        if state.z is None and self.G98:
+            raise CycleError("G98", None, "returns to the Z before the call, which is not known: program Z before "
+                             "the call, or G99 (return to R)", cycle=self.NAME)
         if state.incremental:
             raise CycleError("G91", None, "R, Z and V are read as absolute Z: program the autoroutine in G90",
                              cycle=self.NAME)
@@ -262,7 +278,14 @@ class MilltronicsCycle(Cycle):
         lift = settings.milltronics_lift_inch * (MM_PER_INCH if state.metric else 1.0)
         depths = self._depths(clearance, z if final is None else final)
         return Cut(state.x, state.y, state.z, size_x, size_y, width, diameter / 2.0, clearance, depths, lift,
-                   state.feed, state.feed if self.F is None else self.F, self.G99, self.compensation == "G42")
+                   state.feed, state.feed if self.F is None else self.F, self._back_to(state, clearance),
+                   self.compensation == "G42")
+
+    def _back_to(self, state: MachineState, clearance: float) -> Optional[float]:
+        """The Z the cycle ends at: G99 R, G98 the Z before the call; None: the lift above the last depth."""
+        if self.G99:
+            return clearance
+        return state.z if self.G98 else None
 
 
 @register
@@ -335,6 +358,7 @@ class G31(MilltronicsCycle):
     PARAMETERS: ClassVar[tuple] = ()  # reads none (the P parameters pass through its memory unchanged)
     WORD_HELP: ClassVar[tuple] = ()
     Z_ONLY: ClassVar[bool] = True  # moves Z alone: the translator needs no X Y before it
+    FROM_UNKNOWN_Z: ClassVar[bool] = False  # Z_ONLY needs no start point at all
 
     def height(self, state: MachineState, settings: Settings) -> float:
         """The Z the block goes to, in the program's units."""

@@ -24,7 +24,7 @@ class Cut(NamedTuple):
 
     cx: float  # the rectangle's centre: the XY position before the call
     cy: float
-    z0: float  # Z before the call
+    z0: Optional[float]  # Z before the call; None: not known (the first move is X Y at the height held)
     size_x: float  # P151
     size_y: float  # P152
     width: float  # P155
@@ -34,7 +34,7 @@ class Cut(NamedTuple):
     lift: float
     xy_feed: float
     z_feed: float
-    back_to_clearance: bool  # G99
+    back_to: Optional[float]  # the Z at the end: G99 R, G98 z0; None: the lift above the last depth
     clockwise: bool  # G42 (G34 laps)
 
 
@@ -47,9 +47,11 @@ class _Tool:
         self.x, self.y, self.z = cut.cx, cut.cy, cut.z0
         self.moves: List[Move] = []
 
-    def _add(self, kind: str, x: float, y: float, z: float, f: Optional[float],
+    def _add(self, kind: str, x: float, y: float, z: Optional[float], f: Optional[float],
              centre: Optional[Tuple[float, float]] = None) -> None:
-        if abs(x - self.x) <= TOLERANCE and abs(y - self.y) <= TOLERANCE and abs(z - self.z) <= TOLERANCE:
+        """A move to (x, y, z); z None only while the Z before the call is not known (the Z held)."""
+        same_z = z == self.z if z is None or self.z is None else abs(z - self.z) <= TOLERANCE
+        if abs(x - self.x) <= TOLERANCE and abs(y - self.y) <= TOLERANCE and same_z:
             return
         self.x, self.y, self.z = x, y, z
         self.moves.append(Move(kind, x, z, f, 0.0, y, centre=centre))
@@ -82,7 +84,8 @@ class _Tool:
     def enter(self, u: float, v: float, depth: float, first: bool) -> None:
         """To the start (u, v) of a depth: over it at the clearance plane first, else by the lift."""
         if first:
-            self.rapid_z(max(self.z, self.cut.clearance))
+            if self.z is not None:  # not known: X Y at the height held, then Z to R (the module notes)
+                self.rapid_z(max(self.z, self.cut.clearance))
             self.rapid_xy(u, v)
             self.rapid_z(self.cut.clearance)
         else:
@@ -91,8 +94,8 @@ class _Tool:
         self.feed_z(depth)
 
     def leave(self) -> List[Move]:
-        """G99: to the clearance plane; else the lift above the last depth."""
-        self.rapid_z(self.cut.clearance if self.cut.back_to_clearance else self.z + self.cut.lift)
+        """G99: to the clearance plane; G98: to the Z before the call; else the lift above the last depth."""
+        self.rapid_z(self.cut.back_to if self.cut.back_to is not None else self.z + self.cut.lift)
         return self.moves
 
 

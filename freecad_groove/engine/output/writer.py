@@ -208,10 +208,20 @@ class Writer(MachineWords):
         if self.x_text is None or self.z_text is None or self.c_text is None:
             raise ProgramError("a feed move in X/Z/C needs its start written before it (the %s feed of a "
                                "rotary move is computed from it)" % self.target.name)
-        linear = math.hypot(move.x - float(self.x_text) / (self.x_factor / self.scale), move.z - float(self.z_text))
-        turn = abs(move.c - float(self.c_text))
+        # the move as the control reads it: from the words written to the words this move writes (a radius
+        # 0.71000000000000001 written X1.42 again does not move X; its float residue would make the linear
+        # length 1e-16 and the feed 1e+20)
+        x_factor = self.x_factor / self.scale
+        dx = (self._written(move.x * x_factor, self.x_text) - float(self.x_text)) / x_factor
+        dz = self._written(move.z, self.z_text) - float(self.z_text)
+        linear = math.hypot(dx, dz)
+        turn = abs(self._written(move.c, self.c_text) - float(self.c_text))
         minutes = linear / f if linear > 0 else turn / f
         return math.hypot(linear, turn) / minutes if minutes > 0 else f
+
+    def _written(self, value: Optional[float], text: str) -> float:
+        """The number the control reads for an axis set to ``value`` (None: not set, ``text`` held)."""
+        return float(text) if value is None else float(format_decimal(value, self.digits))
 
     def _axis_words(self, move: Move, force: bool = False) -> List[str]:
         """The axis words of ``move`` whose written text changes (all it sets
