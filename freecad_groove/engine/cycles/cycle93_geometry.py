@@ -23,6 +23,7 @@ from .cycle93_constants import (
     LENGTH_PARAMS,
     MAX_FLANK_ANGLE,
     NAME,
+    OVERHANG_GAIN,
     PATH_TOLERANCE,
     cycle93_error,
 )
@@ -345,12 +346,33 @@ class GrooveGeometry:
         pts = [(lo, m * lo), (hi, m * hi), (hi, bottom), (lo, bottom)]
         return [self.frame.point(u, v) for u, v in pts]
 
+    def pass_range(self, env: Envelope, top: List[Point]) -> Point:
+        """Blade positions (minus edge) the contour passes over ``top`` run
+        between: from the opening's left edge - r to its right edge - w + r
+        (the flat front reaches both flanks), widened over an edge the blade
+        reaches lower beyond, overhanging it (a steep contour falls away past
+        the opening's lower edge): out to the first position where it stands
+        lowest, its flat front still over the edge (further out it stands no
+        lower: a paraxial blade may go anywhere it does not cut the part)."""
+        r, w = self.tool.corner_radius, self.tool.width
+        left, right = self.opening(top)
+        ua, ub = left - r, right - w + r
+        if self.slope == 0:
+            return ua, ub
+        return env.deepest(ua, left - w + r, OVERHANG_GAIN), env.deepest(ub, right - r, OVERHANG_GAIN)
+
     def plunge_positions(self) -> List[float]:
-        """u of the roughing plunges, from the start side, equally spaced."""
+        """u of the roughing plunges, from the start side, equally spaced:
+        from flank to flank, or out to where the roughing passes overhang
+        the opening's lower edge (``pass_range``)."""
         lo, hi = self.opening(self.rough_top)
         tool = self.tool
-        count = int(plunge_count(lo, hi, tool.width, tool.corner_radius))
-        hi -= tool.width
+        w, r = tool.width, tool.corner_radius
+        hi -= w
+        if self.slope != 0:
+            ua, ub = self.pass_range(self.rough_env, self.rough_top)
+            lo, hi = min(lo, ua) if ua < lo - r else lo, max(hi, ub) if ub > hi + r else hi
+        count = int(plunge_count(lo, hi + w, w, r))
         if count == 1:
             return [0.5 * (lo + hi)]
         n = count - 1
@@ -410,10 +432,8 @@ class GrooveGeometry:
         """From each edge of the opening toward the middle along the envelope."""
         r, w = self.tool.corner_radius, self.tool.width
         left, right = self.opening(top)
-        ua = left - r
-        ub = right - w + r
-        mid = 0.5 * (ua + ub)
-        for start in (ua, ub):
+        mid = 0.5 * (left - r + right - w + r)
+        for start in self.pass_range(env, top):
             chorded, exact = env.traces(start, mid, PATH_TOLERANCE)
             pts = split_at(chorded, steps)
             feed_where_material(self, pts, go, material, steps, top, env, top is self.rough_top, exact)

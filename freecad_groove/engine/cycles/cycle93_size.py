@@ -92,6 +92,11 @@ class ExpansionSize:
         self.geo = geo
         rough = geo.rough_corners
         lo, hi = rough[0].vertex[0], rough[-1].vertex[0]
+        if geo.slope != 0:
+            # The plunges may run on over the opening's lower edge (GrooveGeometry.pass_range): by less
+            # than the blade's flat front, on either side as far as this count knows.
+            reach = tool.width - 2 * tool.corner_radius
+            lo, hi = lo - reach, hi + reach
         self.plunges = plunge_count(lo, hi, tool.width, tool.corner_radius)
         top = max(geo.contour_top(lo), geo.contour_top(hi - tool.width))
         bottom = min(c.vertex[1] for c in rough)
