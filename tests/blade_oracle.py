@@ -25,7 +25,8 @@ from shapely.geometry import Polygon
 from freecad_groove.engine.moves import MINUS_X, MINUS_Z, PLUS_X, PLUS_Z
 
 STEP = 0.002  # mm between the grid's columns
-CHUNK = 256  # placements a numpy window holds at once
+CHUNK = 256
+SEAM = 1e-7  # placements a numpy window holds at once
 
 # (z, x) -> (a across the plunge, d out of the part) as an affine map [a, b, d, e, 0, 0]: a = a*z + b*x, d = d*z + e*x.
 _TO_FRAME = {
@@ -58,12 +59,27 @@ def _windowed(values, outline, reduce):
     return np.concatenate([reduce(windows[i:i + CHUNK] + outline, axis=1) for i in range(0, len(windows), CHUNK)])
 
 
-def lowest_reached(part, width, radius, a_from, a_to, step=STEP):
+def _walls(shape, a_from, a_to):
+    """The columns of the shape's walls (edges along the plunge axis) from a_from to a_to."""
+    out = []
+    for ring in shapely.get_rings(shapely.get_parts(shape)):
+        c = shapely.get_coordinates(ring)
+        wall = (np.abs(np.diff(c[:, 0])) < 1e-12) & (np.abs(np.diff(c[:, 1])) > 1e-6)
+        out.extend(a for a in c[:-1][wall, 0] if a_from - 1e-6 <= a <= a_to + 1e-6)
+    return sorted(out)
+
+
+def lowest_reached(part, goal, width, radius, step=STEP):
     """(columns, level): the lowest level a placement of the blade reaches in
-    each column from a_from to a_to, part in the plunge frame (a, d)."""
+    each column of the goal, part and goal in the plunge frame (a, d). The grid
+    runs through the goal's first wall (and, w being a whole number of steps, through
+    a wall w from it: a blade as wide as a slot fits it)."""
+    a_from, _low, a_to, _high = goal.bounds
     n = max(int(np.ceil(width / step)), 1)
     step = width / n
-    columns = a_from - width + step * np.arange(int(np.ceil((a_to - a_from + 2 * width) / step)) + 1)
+    anchor = (_walls(goal, a_from, a_to) or [a_from])[0]
+    first = anchor - width - step * np.ceil((anchor - a_from) / step)
+    columns = first + step * np.arange(int(np.ceil((a_to + width - first) / step)) + 1)
     _a0, low, _a1, high = part.bounds
     outline = _outline(width, radius, n)
     tops = _tops(part, columns, low - 1.0, high + 1.0)
@@ -77,10 +93,12 @@ def blade_reach(stock, target, width, radius, plunge, step=STEP):
     """(reachable, unreachable): the parts of ``target`` a paraxial blade
     reaches without entering ``stock`` less ``target``, and the rest."""
     forward = _TO_FRAME[plunge]
-    part = affinity.affine_transform(stock.difference(target), forward)
+    # The target grown by SEAM: where its top runs along the stock's surface the two agree only to rounding,
+    # and the bare difference would leave a seam of part along the groove's mouth, closing it.
+    part = affinity.affine_transform(stock.difference(target.buffer(SEAM, join_style="mitre")), forward)
     goal = affinity.affine_transform(target, forward)
     a_from, low, a_to, high = goal.bounds
-    columns, level = lowest_reached(part, width, radius, a_from, a_to, step)
+    columns, level = lowest_reached(part, goal, width, radius, step)
     level = np.clip(level, low - 1.0, high + 1.0)
     above = Polygon(list(zip(columns, level)) + [(columns[-1], high + 2.0), (columns[0], high + 2.0)]).buffer(0)
     reachable = goal.intersection(above)

@@ -346,20 +346,24 @@ class GrooveGeometry:
         pts = [(lo, m * lo), (hi, m * hi), (hi, bottom), (lo, bottom)]
         return [self.frame.point(u, v) for u, v in pts]
 
-    def pass_range(self, env: Envelope, top: List[Point]) -> Point:
-        """Blade positions (minus edge) the contour passes over ``top`` run
-        between: from the opening's left edge - r to its right edge - w + r
-        (the flat front reaches both flanks), widened over an edge the blade
-        reaches lower beyond, overhanging it (a steep contour falls away past
-        the opening's lower edge): out to the first position where it stands
-        lowest, its flat front still over the edge (further out it stands no
-        lower: a paraxial blade may go anywhere it does not cut the part)."""
+    def pass_range(self, env: Envelope, top: List[Point], flat: bool = False) -> Point:
+        """Blade positions (minus edge) the contour passes over ``top`` start
+        from: the opening's left edge - r and right edge - w + r (the flat
+        front reaches both flanks). On an oblique contour the pass from the
+        opening's lower edge starts further out, overhanging it: a paraxial
+        blade goes wherever it does not cut the part, and beyond that edge the
+        contour falls away. With ``flat``: out to the first position where the
+        blade stands lowest while its flat front is over the edge (where the
+        plunges end); without: out to where the blade leaves the opening (its
+        rounded corner may still reach under a radius or a chamfer there)."""
         r, w = self.tool.corner_radius, self.tool.width
         left, right = self.opening(top)
         ua, ub = left - r, right - w + r
         if self.slope == 0:
             return ua, ub
-        return env.deepest(ua, left - w + r, OVERHANG_GAIN), env.deepest(ub, right - r, OVERHANG_GAIN)
+        if flat:
+            return env.deepest(ua, left - w + r, OVERHANG_GAIN), env.deepest(ub, right - r, OVERHANG_GAIN)
+        return (left - w, ub) if self.slope > 0 else (ua, right)
 
     def plunge_positions(self) -> List[float]:
         """u of the roughing plunges, from the start side, equally spaced:
@@ -370,7 +374,7 @@ class GrooveGeometry:
         w, r = tool.width, tool.corner_radius
         hi -= w
         if self.slope != 0:
-            ua, ub = self.pass_range(self.rough_env, self.rough_top)
+            ua, ub = self.pass_range(self.rough_env, self.rough_top, flat=True)
             lo, hi = min(lo, ua) if ua < lo - r else lo, max(hi, ub) if ub > hi + r else hi
         count = int(plunge_count(lo, hi + w, w, r))
         if count == 1:
@@ -433,6 +437,9 @@ class GrooveGeometry:
         r, w = self.tool.corner_radius, self.tool.width
         left, right = self.opening(top)
         mid = 0.5 * (left - r + right - w + r)
+        # Past an edge the stretches also part where the flat front leaves the opening and where it stands
+        # lowest over the edge: each is fed only if it cuts (out there mostly air).
+        steps = sorted(set(steps).union((left - w + r, right - r), self.pass_range(env, top, flat=True)))
         for start in self.pass_range(env, top):
             chorded, exact = env.traces(start, mid, PATH_TOLERANCE)
             pts = split_at(chorded, steps)

@@ -12,13 +12,12 @@ final profile's envelope, ``bottom`` the blade's front outline); material is
 left where g(x) > f(x), f the final profile's top. Its area is the integral of
 g - f, its depth the largest g - f: measured along the plunge axis.
 
-The blade positions are every one whose flat front overlaps the opening,
-from its left edge - w + r to its right edge - r: a paraxial blade goes
-wherever it does not cut the part, also overhanging the opening's lower edge
-where a steep contour falls away beyond it (the passes run out there,
-``GrooveGeometry.pass_range``); further out only a rounded corner overhangs
-an edge, standing no lower than the blade whose flat rests on it. Material
-counts only below the contour line (the stock's top).
+The blade positions are every one over the opening, from its left edge - w
+to its right edge: a paraxial blade goes wherever it does not cut the part,
+also overhanging an edge of the opening (where an oblique contour falls away
+beyond it, lower than the flanks let it go: the passes run out there,
+``GrooveGeometry.pass_range``). Material counts only below the contour line
+(the stock's top).
 
 How it is computed exactly, without a grid over columns: a column x the
 blade cannot touch is best approached by a blade *stuck* in a position where
@@ -307,9 +306,9 @@ def unreachable_regions(geometry: "GrooveGeometry", tolerance: Optional[float] =
     tool = geometry.tool
     width, radius = tool.width, tool.corner_radius
     left, right = geometry.opening(geometry.final_top)
-    # Every blade position whose flat front overlaps the opening (further out only a rounded corner overhangs
-    # an edge, standing no lower than the blade whose flat rests on it): the finishing passes' and more.
-    lo, hi = left - width + radius, right - radius
+    # Every blade position over the opening, also overhanging an edge (the finishing passes run out past the
+    # lower one).
+    lo, hi = left - width, right
     env = geometry.final_env
     profile = _Profile(env.points, env.arcs, geometry.slope)
     spans = [(min(p[0] for p in ends), max(p[0] for p in ends))
