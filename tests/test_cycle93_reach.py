@@ -14,7 +14,6 @@ from shapely.geometry import LineString, Polygon
 from test_cycle93_simulation import SEED_CALL, grooves, simulated
 
 from freecad_groove import verify as sim
-
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
 from freecad_groove.engine.cycles import cycle93
 from freecad_groove.engine.cycles.cycle93 import Cycle93
@@ -79,7 +78,8 @@ def test_inch_program_says_square_inches_and_inches():
 @pytest.mark.parametrize("call, tool", [
     # ANGC 6.1 into a large edge radius RCO1 on the opening's lower edge: the passes used to start with the blade's
     # flat on the radius' top and left 1.4 um there (0.000047 mm², reported at edge corner 1).
-    ("CYCLE93(29.02, 10.84, 11.11, 6.37, 6.1, 19, 0, 0.97, 0, 0, -1.12, 0.2, 0, 3.46, 0, 11, 0)", GroovingTool(2.39, 0.37)),
+    ("CYCLE93(29.02, 10.84, 11.11, 6.37, 6.1, 19, 0, 0.97, 0, 0, -1.12, 0.2, 0, 3.46, 0, 11, 0)",
+     GroovingTool(2.39, 0.37)),
     # A steep face contour (ANGC 149.4) past an edge radius RCO1 0.19: 0.02 mm (0.00091 mm²) was left between the
     # contour line and the radius, that only a blade overhanging the edge reaches with its rounded corner.
     ("CYCLE93(30, 10, 5.55, 4.28, 149.4, 0, 9.1, 0.19, 0, -0.71, -0.31, 0, 0, 2, 0, 6, 0)", GroovingTool(3.7, 0.45)),
