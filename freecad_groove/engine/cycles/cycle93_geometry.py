@@ -350,20 +350,26 @@ class GrooveGeometry:
         """Blade positions (minus edge) the contour passes over ``top`` start
         from: the opening's left edge - r and right edge - w + r (the flat
         front reaches both flanks). On an oblique contour the pass from the
-        opening's lower edge starts further out, overhanging it: a paraxial
+        opening's lower edge may start further out, overhanging it: a paraxial
         blade goes wherever it does not cut the part, and beyond that edge the
-        contour falls away. With ``flat``: out to the first position where the
-        blade stands lowest while its flat front is over the edge (where the
-        plunges end); without: out to where the blade leaves the opening (its
-        rounded corner may still reach under a radius or a chamfer there)."""
+        contour falls away. Out to the first position where the blade stands
+        lowest while its flat front is over the edge (with ``flat``: where the
+        plunges end); then, where that is lower than the flanks let it go or
+        the edge is rounded or chamfered, on to where the blade leaves the
+        opening (its rounded corner reaches under the edge's radius, or
+        chamfer, there). A sharp edge the blade rests on keeps it no lower."""
         r, w = self.tool.corner_radius, self.tool.width
         left, right = self.opening(top)
         ua, ub = left - r, right - w + r
         if self.slope == 0:
             return ua, ub
-        if flat:
-            return env.deepest(ua, left - w + r, OVERHANG_GAIN), env.deepest(ub, right - r, OVERHANG_GAIN)
-        return (left - w, ub) if self.slope > 0 else (ua, right)
+        lower_left = self.slope > 0
+        start, end = (ua, left - w + r) if lower_left else (ub, right - r)
+        out = env.deepest(start, end, OVERHANG_GAIN)
+        corners = self.final_corners if top is self.final_top else self.rough_corners
+        if not flat and (out != start or corners[0 if lower_left else 3].value != 0):
+            out = left - w if lower_left else right
+        return (out, ub) if lower_left else (ua, out)
 
     def plunge_positions(self) -> List[float]:
         """u of the roughing plunges, from the start side, equally spaced:
