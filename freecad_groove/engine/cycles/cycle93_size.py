@@ -105,8 +105,9 @@ class ExpansionSize:
         # dwell, the free-off, out: 1 + n + 2 (n - 1) + 3.
         self.plunge_moves = self.plunges * (3 * self.infeeds + 2)
         self.contour_moves = sum(trace_points(corners, tool.corner_radius) for corners in (rough, geo.final_corners))
-        # Each of the (at most four) passes is split where it crosses a plunge position.
-        self.contour_moves += 4 * self.plunges
+        # Each of the (at most four) passes is split where it crosses a plunge position, and past an edge where
+        # the flat front leaves the opening and where it stands lowest (GrooveGeometry._contour_passes).
+        self.contour_moves += 4 * (self.plunges + 4)
         self.moves = FRAME_MOVES + self.plunge_moves + self.contour_moves
 
     def check(self) -> None:
