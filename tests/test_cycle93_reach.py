@@ -1,12 +1,19 @@
 """CYCLE93: the material a flat blade cannot reach is reported (issue 9 item 2,
 engine/cycles/cycle93_reach.py), and it is exactly what the simulation of the
-expanded moves leaves standing."""
+expanded moves leaves standing; on steep contours, held against an independent
+model of the blade's reach (tests/blade_oracle.py, issue 20 item 4): nothing a
+blade reaches is left, and the warning is what no placement of it reaches."""
+
+import dataclasses
 
 import pytest
+from blade_oracle import blade_reach
 from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
 from shapely.geometry import LineString, Polygon
 from test_cycle93_simulation import SEED_CALL, grooves, simulated
 
+from freecad_groove import verify as sim
 from freecad_groove.engine import CycleError, GroovingTool, MachineState, Settings
 from freecad_groove.engine.cycles import cycle93
 from freecad_groove.engine.cycles.cycle93 import Cycle93
@@ -68,15 +75,21 @@ def test_inch_program_says_square_inches_and_inches():
                     "blade (r0)")
 
 
-def test_a_sliver_at_an_edge_radius_is_named_at_its_edge_corner():
-    # An oblique contour (ANGC 6.1) into a large edge radius RCO1: the passes start with the blade's flat on
-    # the radius' top, leaving 1.4 um between it, the contour line and the radius. Thin (0.000047 mm²) but deeper
-    # than the tolerance, so it is reported, at the edge corner (framing RCO1), in decimals (no exponent).
-    call = Cycle93.parse("CYCLE93(29.02, 10.84, 11.11, 6.37, 6.1, 19, 0, 0.97, 0, 0, -1.12, 0.2, 0, 3.46, 0, 11, 0)")
-    (edge,) = [w for w in call.warnings(START, Settings(tool=GroovingTool(2.39, 0.37))) if w.parameter == "RCO1"]
-    assert edge.text == ("CYCLE93: 0.000047 mm² up to 0.0014 mm deep at edge corner 1 cannot be reached by a 2.39 mm "
-                         "flat blade (r0.37)")
-    assert_left_is_what_is_warned(call, GroovingTool(2.39, 0.37))
+@pytest.mark.parametrize("call, tool", [
+    # ANGC 6.1 into a large edge radius RCO1 on the opening's lower edge: the passes used to start with the blade's
+    # flat on the radius' top and left 1.4 um there (0.000047 mm², reported at edge corner 1).
+    ("CYCLE93(29.02, 10.84, 11.11, 6.37, 6.1, 19, 0, 0.97, 0, 0, -1.12, 0.2, 0, 3.46, 0, 11, 0)",
+     GroovingTool(2.39, 0.37)),
+    # A steep face contour (ANGC 149.4) past an edge radius RCO1 0.19: 0.02 mm (0.00091 mm²) was left between the
+    # contour line and the radius, that only a blade overhanging the edge reaches with its rounded corner.
+    ("CYCLE93(30, 10, 5.55, 4.28, 149.4, 0, 9.1, 0.19, 0, -0.71, -0.31, 0, 0, 2, 0, 6, 0)", GroovingTool(3.7, 0.45)),
+])
+def test_an_edge_radius_on_the_lower_edge_of_an_oblique_contour_is_rolled_over(call, tool):
+    # Overhanging the edge, the blade's corner rolls down the radius to the contour line: nothing is left there,
+    # and no warning names the edge.
+    call = Cycle93.parse(call)
+    assert [w.parameter for w in call.warnings(START, Settings(tool=tool))] == ["RCI1", "RCI2"]
+    assert_left_is_what_is_warned(call, tool)
 
 
 def test_a_program_line_builds_its_groove_once_for_validation_moves_and_warnings(monkeypatch):
@@ -219,4 +232,65 @@ def test_generated_grooves_leave_exactly_what_is_warned(case):
         call.validate(Settings(tool=tool))
     except CycleError:
         assume(False)  # validation's own tests cover refusals
+    assert_left_is_what_is_warned(call, tool)
+
+
+# ---------------------------------------------------------------- against an independent model of the reach
+
+
+def assert_cuts_what_a_blade_reaches(call, tool, thick=0.01):
+    """The simulated moves (rs274 reads them back the same) gouge nothing, rapid
+    into no stock, leave nothing thicker than ``thick`` that a placement of the
+    blade reaches (blade_oracle: over the opening or overhanging its edges), and
+    the warned area is what no placement reaches (the oracle's grid, STEP mm
+    across, misses a wall by up to a step: the slack)."""
+    result, _target, geo, _moves = simulated(call, tool)
+    stock = Polygon([(z, x) for x, z in geo.stock_world()])
+    target = Polygon([(z, x) for x, z in geo.region_world(1e-5)]).buffer(0)
+    verdict = sim.check_groove(result, target, tool, tol=0.001, plunge=call.plunge_direction(), label=call.emit())
+    assert not verdict.gouged and not verdict.rapid_collisions, verdict.describe()
+    _reachable, unreachable = blade_reach(stock, target, tool.width, tool.corner_radius, call.plunge_direction())
+    left = result.remaining.intersection(target).difference(unreachable)
+    core = left.buffer(-thick / 2)
+    assert core.is_empty or core.area < 1e-9, (call.emit(), tool, core.bounds)
+    warned = sum(region.area for region in unreachable_regions(geo))
+    assert warned == pytest.approx(unreachable.area, abs=0.02 + 0.01 * unreachable.area), (call.emit(), tool)
+
+
+def test_a_steep_contour_is_cut_where_the_blade_overhangs_the_lower_edge():
+    # Issue 20 item 4: ANGC 60, a 3 mm r0.2 blade. The contour falls away past the opening's lower edge, so a
+    # blade overhanging it reaches down to that edge's level: the warning was 5.55 mm² and 2.95 mm² (1.7 mm thick)
+    # of it was left where the blade reaches. Now the plunges and passes run out over the edge, and the warning is
+    # the wedge below the edge's level between the base and the flank.
+    call = Cycle93.parse("CYCLE93(20, -10, 6, 3, 60, 0, 0, 0, 0, 0, 0, 0.2, 0.2, 2, 0, 5, 0)")
+    tool = GroovingTool(3.0, 0.2)
+    state = MachineState(x=80.0, z=10.0, feed=0.1)
+    assert [w.text for w in call.warnings(state, Settings(tool=tool))][-1] == (
+        "CYCLE93: 2.60 mm² up to 3.00 mm deep at base corner 2 cannot be reached by a 3 mm flat blade (r0.2)")
+    assert call.geometry(Settings(tool=tool)).plunge_positions()[-1] > 3.0  # past the 6 - 3 the flanks allow
+    assert_cuts_what_a_blade_reaches(call, tool)
+    assert_left_is_what_is_warned(call, tool)
+
+
+@st.composite
+def steep_grooves(draw):
+    """grooves() on a contour 45 to 80 degrees off the groove's own axis, either way: ANGC 45..135 for a
+    longitudinal groove, 10..45 and 135..170 for a face groove (its contour runs along X)."""
+    call, tool = draw(grooves())
+    tilt = draw(st.decimals("45", "80", places=1).map(float))
+    longitudinal = call.kind()[0]
+    angc = draw(st.sampled_from([tilt, 180 - tilt] if longitudinal else [90 - tilt, 90 + tilt]))
+    return dataclasses.replace(call, angc=angc, idep=max(call.idep, 1.0)), tool
+
+
+@settings(derandomize=True, database=None, max_examples=40, deadline=None,
+          suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow])
+@given(steep_grooves())
+def test_generated_steep_grooves_leave_nothing_a_blade_reaches_and_warn_the_rest(case):
+    call, tool = case
+    try:
+        call.validate(Settings(tool=tool))
+    except CycleError:
+        assume(False)  # validation's own tests cover refusals
+    assert_cuts_what_a_blade_reaches(call, tool)
     assert_left_is_what_is_warned(call, tool)

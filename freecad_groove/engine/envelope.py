@@ -154,6 +154,22 @@ class Envelope:
             return chorded, None
         return chorded, _drop_collinear(_without_slivers([PathPoint(*point) for point in ends]))
 
+    def deepest(self, start: float, end: float, gain: float = 0.0) -> float:
+        """The blade position between ``start`` and ``end`` (either way round)
+        nearest ``start`` where the front stands lowest; ``start`` itself
+        unless that is more than ``gain`` below ``lowest(start)``. A piece is
+        lowest at an end or at the bottom of a cup."""
+        found = []
+        for a, b, piece in self._runs(min(start, end), max(start, end)):
+            xs = [a, b] + ([piece.cu] if piece.kind == CUP and a < piece.cu < b else [])
+            found.extend((value(piece, x), x) for x in xs)
+        if not found:
+            return start
+        level = min(found)[0]
+        if level >= self.lowest(start) - gain:
+            return start
+        return min((x for v, x in found if v <= level + JUMP), key=lambda x: abs(x - start))
+
     def walls(self, lo: float, hi: float) -> Set[float]:
         """Blade positions in (lo, hi) where a side edge passes a vertical step of the top."""
         out = set()

@@ -31,6 +31,10 @@ FREE_OFF_MM = 1.0
 FREE_OFF_INCH = 0.04
 PATH_TOLERANCE = 0.0002  # chord error allowed on contour passes and arcs
 EPS = 1e-9
+# The contour passes run on past the opening's lower edge, overhanging it,
+# only where the blade reaches more than this lower there (see
+# GrooveGeometry.pass_range): not for float noise.
+OVERHANG_GAIN = 1e-6
 # A plunge that ends this close to the roughing profile's base line is on the
 # base: DWT dwells there only ("dwell time at recess base").
 BASE_TOLERANCE = 1e-6

@@ -23,6 +23,7 @@ from .cycle93_constants import (
     LENGTH_PARAMS,
     MAX_FLANK_ANGLE,
     NAME,
+    OVERHANG_GAIN,
     PATH_TOLERANCE,
     cycle93_error,
 )
@@ -348,12 +349,43 @@ class GrooveGeometry:
         pts = [(lo, m * lo), (hi, m * hi), (hi, bottom), (lo, bottom)]
         return [self.frame.point(u, v) for u, v in pts]
 
+    def pass_range(self, env: Envelope, top: List[Point], flat: bool = False) -> Point:
+        """Blade positions (minus edge) the contour passes over ``top`` start
+        from: the opening's left edge - r and right edge - w + r (the flat
+        front reaches both flanks). On an oblique contour the pass from the
+        opening's lower edge may start further out, overhanging it: a paraxial
+        blade goes wherever it does not cut the part, and beyond that edge the
+        contour falls away. Out to the first position where the blade stands
+        lowest while its flat front is over the edge (with ``flat``: where the
+        plunges end); then, where that is lower than the flanks let it go or
+        the edge is rounded or chamfered, on to where the blade leaves the
+        opening (its rounded corner reaches under the edge's radius, or
+        chamfer, there). A sharp edge the blade rests on keeps it no lower."""
+        r, w = self.tool.corner_radius, self.tool.width
+        left, right = self.opening(top)
+        ua, ub = left - r, right - w + r
+        if self.slope == 0:
+            return ua, ub
+        lower_left = self.slope > 0
+        start, end = (ua, left - w + r) if lower_left else (ub, right - r)
+        out = env.deepest(start, end, OVERHANG_GAIN)
+        corners = self.final_corners if top is self.final_top else self.rough_corners
+        if not flat and (out != start or corners[0 if lower_left else 3].value != 0):
+            out = left - w if lower_left else right
+        return (out, ub) if lower_left else (ua, out)
+
     def plunge_positions(self) -> List[float]:
-        """u of the roughing plunges, from the start side, equally spaced."""
+        """u of the roughing plunges, from the start side, equally spaced:
+        from flank to flank, or out to where the roughing passes overhang
+        the opening's lower edge (``pass_range``)."""
         lo, hi = self.opening(self.rough_top)
         tool = self.tool
-        count = int(plunge_count(lo, hi, tool.width, tool.corner_radius))
-        hi -= tool.width
+        w, r = tool.width, tool.corner_radius
+        hi -= w
+        if self.slope != 0:
+            ua, ub = self.pass_range(self.rough_env, self.rough_top, flat=True)
+            lo, hi = min(lo, ua) if ua < lo - r else lo, max(hi, ub) if ub > hi + r else hi
+        count = int(plunge_count(lo, hi + w, w, r))
         if count == 1:
             return [0.5 * (lo + hi)]
         n = count - 1
@@ -413,10 +445,11 @@ class GrooveGeometry:
         """From each edge of the opening toward the middle along the envelope."""
         r, w = self.tool.corner_radius, self.tool.width
         left, right = self.opening(top)
-        ua = left - r
-        ub = right - w + r
-        mid = 0.5 * (ua + ub)
-        for start in (ua, ub):
+        mid = 0.5 * (left - r + right - w + r)
+        # Past an edge the stretches also part where the flat front leaves the opening and where it stands
+        # lowest over the edge: each is fed only if it cuts (out there mostly air).
+        steps = sorted(set(steps).union((left - w + r, right - r), self.pass_range(env, top, flat=True)))
+        for start in self.pass_range(env, top):
             chorded, exact = env.traces(start, mid, PATH_TOLERANCE)
             pts = split_at(chorded, steps)
             feed_where_material(self, pts, go, material, steps, top, env, top is self.rough_top, exact)

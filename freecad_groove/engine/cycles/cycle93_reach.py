@@ -12,9 +12,12 @@ final profile's envelope, ``bottom`` the blade's front outline); material is
 left where g(x) > f(x), f the final profile's top. Its area is the integral of
 g - f, its depth the largest g - f: measured along the plunge axis.
 
-The blade positions are those the contour and finishing passes use (the
-plunges lie between them): from the opening's left edge - r to its right edge
-- w + r; material counts only below the contour line (the stock's top).
+The blade positions are every one over the opening, from its left edge - w
+to its right edge: a paraxial blade goes wherever it does not cut the part,
+also overhanging an edge of the opening (where an oblique contour falls away
+beyond it, lower than the flanks let it go: the passes run out there,
+``GrooveGeometry.pass_range``). Material counts only below the contour line
+(the stock's top).
 
 How it is computed exactly, without a grid over columns: a column x the
 blade cannot touch is best approached by a blade *stuck* in a position where
@@ -303,8 +306,9 @@ def unreachable_regions(geometry: "GrooveGeometry", tolerance: Optional[float] =
     tool = geometry.tool
     width, radius = tool.width, tool.corner_radius
     left, right = geometry.opening(geometry.final_top)
-    # The blade positions the contour and finishing passes use (and the plunges, between them).
-    lo, hi = left - radius, right - width + radius
+    # Every blade position over the opening, also overhanging an edge (the finishing passes run out past the
+    # lower one).
+    lo, hi = left - width, right
     env = geometry.final_env
     profile = _Profile(env.points, env.arcs, geometry.slope)
     spans = [(min(p[0] for p in ends), max(p[0] for p in ends))

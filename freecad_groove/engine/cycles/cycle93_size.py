@@ -92,6 +92,11 @@ class ExpansionSize:
         self.geo = geo
         rough = geo.rough_corners
         lo, hi = rough[0].vertex[0], rough[-1].vertex[0]
+        if geo.slope != 0:
+            # The plunges may run on over the opening's lower edge (GrooveGeometry.pass_range): by less
+            # than the blade's flat front, on either side as far as this count knows.
+            reach = tool.width - 2 * tool.corner_radius
+            lo, hi = lo - reach, hi + reach
         self.plunges = plunge_count(lo, hi, tool.width, tool.corner_radius)
         top = max(geo.contour_top(lo), geo.contour_top(hi - tool.width))
         bottom = min(c.vertex[1] for c in rough)
@@ -100,8 +105,9 @@ class ExpansionSize:
         # dwell, the free-off, out: 1 + n + 2 (n - 1) + 3.
         self.plunge_moves = self.plunges * (3 * self.infeeds + 2)
         self.contour_moves = sum(trace_points(corners, tool.corner_radius) for corners in (rough, geo.final_corners))
-        # Each of the (at most four) passes is split where it crosses a plunge position.
-        self.contour_moves += 4 * self.plunges
+        # Each of the (at most four) passes is split where it crosses a plunge position, and past an edge where
+        # the flat front leaves the opening and where it stands lowest (GrooveGeometry._contour_passes).
+        self.contour_moves += 4 * (self.plunges + 4)
         self.moves = FRAME_MOVES + self.plunge_moves + self.contour_moves
 
     def check(self) -> None:
