@@ -42,6 +42,34 @@ def wait_for(predicate, timeout=5.0, what="condition"):
         time.sleep(0.005)
 
 
+class Poll:
+    """Calls ``action(value)`` once ``predicate()`` gives a true value, checking from a timer on the Qt event loop
+    every ``interval_ms``; ``failed(text)`` instead when ``timeout`` s pass first. For steps inside modal dialogs:
+    a check never waits itself (``wait_for`` there would stop the code that is still building the dialog, when it
+    lets the event loop run before its own exec(), until the wait times out). Keep the Poll referenced."""
+
+    def __init__(self, predicate, action, failed, what, timeout=60.0, interval_ms=20):
+        self.predicate, self.action, self.failed, self.what = predicate, action, failed, what
+        self.end = time.monotonic() + timeout
+        self.timeout = timeout
+        self.timer = QtCore.QTimer()
+        self.timer.setInterval(interval_ms)
+        self.timer.timeout.connect(self._check)
+        self.timer.start()
+
+    def _check(self):
+        value = self.predicate()
+        if value or time.monotonic() > self.end:
+            self.timer.stop()  # before acting: the action may run a modal dialog's event loop
+            if value:
+                self.action(value)
+            else:
+                self.failed("timed out after %.1f s waiting for %s" % (self.timeout, self.what))
+
+    def stop(self):
+        self.timer.stop()
+
+
 def key_of(char):
     """The Qt key code of a character."""
     if char.isdigit():
@@ -78,13 +106,33 @@ def choose(combo, value):
     process()
 
 
-def task_button(panel, which):
-    """The task panel's OK/Apply/Cancel button (QDialogButtonBox.StandardButton).
-    (From the panel: searching the main window can reach boxes of closed
-    dialogs whose C++ side is gone, which crashes PySide2.)"""
-    button = panel.buttonBox.button(which)
-    assert button is not None and button.isVisible(), "no visible task dialog button %s" % which
-    return button
+def task_button(panel, which, timeout=30.0):
+    """The task panel's OK/Apply/Cancel button (QDialogButtonBox.StandardButton) once it shows: FreeCAD puts the
+    button box into the task view when the panel opens, and Qt shows a widget put into a shown window only when
+    its event loop runs again (on a busy machine a test could look before). (From the panel: searching the main
+    window can reach boxes of closed dialogs whose C++ side is gone, which crashes PySide2.) AssertionError
+    naming what hides it when it does not show."""
+    def shown():
+        button = panel.buttonBox.button(which) if getattr(panel, "buttonBox", None) is not None else None
+        return button if button is not None and button.isVisible() else None
+
+    try:
+        return wait_for(shown, timeout=timeout, what="the task dialog button %s" % which)
+    except AssertionError as error:
+        raise AssertionError("%s; hidden: %s" % (error, hidden_part(panel, which))) from None
+
+
+def hidden_part(panel, which):
+    """What keeps the panel's button ``which`` from showing: the widget itself or its first hidden ancestor."""
+    box = getattr(panel, "buttonBox", None)
+    widget = box.button(which) if box is not None else None
+    if widget is None:
+        return "no button box" if box is None else "no such button"
+    while widget is not None:
+        if widget.isHidden():
+            return "%s %r" % (type(widget).__name__, widget.objectName())
+        widget = widget.parentWidget()
+    return "nothing hidden (the main window not shown?)"
 
 
 def buttons_shown(panel):
