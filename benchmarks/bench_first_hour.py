@@ -7,7 +7,9 @@ FREECAD_GROOVE_BENCH_PHASE=session (the first FreeCAD):
       Groove button on the stepped shaft's cylinder, the panel's "New grooving
       tool controller" button, the width dialog answered 3 mm (the dialog
       itself replaced: no user in the figure). Measured: from the click to the
-      panel's preview of the groove with the new blade.
+      panel's preview of the groove with the new blade. Beside it, once the
+      panel is closed with OK, CAM's own end mill tool controller made as
+      CAM's Job makes its default one (FreeCAD without the add-on's bit).
   The Job with two Groove ops is then saved (first_hour.FCStd) and closed.
   (b) the first Job panel OK after reopening: the saved document opened again,
       the Job's panel opened as a double click does, OK pressed. Measured: from
@@ -115,10 +117,10 @@ def _tool_controller(lines):
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(doc.Name, model.Name, face_name(model.Shape, "cylinder"))
     toolbar_action("New Operations", "Turning Groove").trigger()
-    panel = wait_for(lambda: open_panel(doc), what="the Groove panel")
-    wait_for(lambda: buttons_shown(panel), what="the panel's buttons")
+    panel = wait_for(lambda: open_panel(doc), timeout=60, what="the Groove panel")
+    wait_for(lambda: buttons_shown(panel), timeout=60, what="the panel's buttons")
     groove = panel.groove_page
-    wait_for(lambda: groove.replans > 0 and not groove._timer.isActive(), what="the panel's values checked")
+    wait_for(lambda: groove.replans > 0 and not groove._timer.isActive(), timeout=60, what="the panel's values checked")
     tool_page.ask_blade_width = lambda parent: 3.0  # the width dialog, answered 3 mm
     page = next(p for p in panel.featurePages if isinstance(p, tool_page.ToolPage))
     _timed("tool_controller", page.form.newGroovingTool.click,
@@ -126,7 +128,8 @@ def _tool_controller(lines):
            lines, "(a) New grooving tool controller: click to the preview",
            "first hour: the grooving tool controller, from the click to the preview")
     panel.buttonBox.button(QtGui.QDialogButtonBox.Ok).click()
-    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel closed")
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), timeout=60, what="the panel closed")
+    _cam_tool_controller(lines, job)
     (op,) = [o for o in job.Operations.Group if hasattr(o, "GrooveCount")]
     make_groove(job, (model, face_name(model.Shape, "cylinder")), tool_controller=op.ToolController,
                 width=4, depth=1.5, position=12)
@@ -137,6 +140,20 @@ def _tool_controller(lines):
     doc.saveAs(os.path.join(SHARE, SAVED["ours"]))
     FreeCAD.closeDocument(doc.Name)
     process(0.1)
+
+
+def _cam_tool_controller(lines, job):
+    """(a) for CAM's own end mill: the tool controller CAM's Job makes (Controller.Create with
+    no tool: CAM's default end mill bit), added to the Job and the document recomputed."""
+    import Path.Tool.Controller as PathToolController
+
+    def start():
+        tc = PathToolController.Create("TC: CAM end mill", toolNumber=job.Proxy.nextToolNumber())
+        job.Proxy.addToolController(tc)
+        job.Document.recompute()
+
+    _timed("cam_tool_controller", start, lambda: True, lines, "(a) CAM's own end mill tool controller, the same way",
+           "first hour: CAM's own end mill tool controller made in the same state (no add-on code)")
 
 
 def _cam_document():
