@@ -208,14 +208,37 @@ def zoom_to(doc, x, z, size):
     return view
 
 
+DEFAULT_DOCK_WIDTHS = {}  # dock title -> its width before roomy_task_panel first widened it: as FreeCAD starts
+TASK_DOCKS = ("Tasks", "Combo View", "Combo view")
+
+
 def roomy_task_panel():
     """Widen the docks (combo view, tasks) so the panel shows whole in screenshots."""
     mw = FreeCADGui.getMainWindow()
-    docks = [d for d in mw.findChildren(QtGui.QDockWidget)
-             if d.isVisible() and d.windowTitle() in ("Tasks", "Combo View", "Combo view")]
+    docks = [d for d in mw.findChildren(QtGui.QDockWidget) if d.isVisible() and d.windowTitle() in TASK_DOCKS]
+    for dock in docks:
+        DEFAULT_DOCK_WIDTHS.setdefault(dock.windowTitle(), dock.width())
     if docks:
         mw.resizeDocks(docks, [480] * len(docks), QtCore.Qt.Horizontal)
     process()
+
+
+def screenshot_dock(name):
+    """The task dock (1.1: the tasks dock, 1.0: the combo view) put back at the width FreeCAD gives it
+    (roomy_task_panel widens it), saved as <name>.png in 256 colours (small enough for the README). (Found from
+    the main window, as roomy_task_panel finds it: no wrappers made of the widgets between it and the panel.)"""
+    mw = FreeCADGui.getMainWindow()
+    docks = [d for d in mw.findChildren(QtGui.QDockWidget) if d.isVisible() and d.windowTitle() in TASK_DOCKS]
+    assert docks, "no task dock shown"
+    widths = [DEFAULT_DOCK_WIDTHS.get(d.windowTitle(), d.width()) for d in docks]
+    mw.resizeDocks(docks, widths, QtCore.Qt.Horizontal)
+    folder = screenshot_folder()
+    if folder is None:
+        return None
+    process(0.1)
+    path = os.path.join(folder, name + ".png")
+    docks[0].grab().toImage().convertToFormat(QtGui.QImage.Format_Indexed8).save(path)
+    return path
 
 
 def close_shop(doc):
