@@ -52,24 +52,11 @@ def make_bit(doc: object, shape_file: str, load_shape: Callable, proxy_class: ob
             bit = PathToolBit.Factory.Create("ToolBit", shape_file)
             for name, value in values.items():
                 setattr(bit, name, value)
-            _push_to_body(bit)
+            bit.Proxy._updateBitShape(bit)  # push the values into the body
             bit.Label = label
     if getattr(bit, "ViewObject", None) is not None:
         bit.ViewObject.Visibility = False
     return bit
-
-
-def _push_to_body(bit: object) -> None:
-    """FreeCAD 1.0: the bit's shape values into its body's PropertyBag, the body recomputed alone and its shape
-    made the bit's (what Bit._updateBitShape does, but that recomputes the whole document: the Job, its stock and
-    every op again, while the body is all that changed)."""
-    body = bit.BitBody
-    for bag in [o for o in body.Group if hasattr(getattr(o, "Proxy", None), "getCustomProperties")]:
-        for prop in bag.Proxy.getCustomProperties():
-            if hasattr(bit, prop):
-                setattr(bag, prop, bit.getPropertyByName(prop))
-    body.recompute(True)  # with what it depends on: the bag, the sketches, the features
-    bit.Shape = body.Shape
 
 
 def make_tool_controller(job: object, bit: object, name: str, tool_number: object = None) -> object:
