@@ -242,8 +242,16 @@ def screenshot_dock(name):
 
 
 def close_shop(doc):
-    """The end of a GUI fixture: its task dialog (if open) and its document closed."""
-    FreeCADGui.Control.closeDialog()
+    """The end of a GUI fixture: its task dialog (if open) cancelled as its Cancel button does, and its document
+    closed. (Not closeDialog alone: CAM's op panel stops observing the selection only in its accept or reject; a
+    panel closed without either stayed an observer and, once the garbage collector had deleted its widgets,
+    answered every later selection with a traceback in the Report view, which failed a later test that reads
+    the Report view, or not, as the collector ran.)"""
+    if FreeCADGui.Control.activeDialog():
+        FreeCADGui.Control.reject()
+        process()
+    if FreeCADGui.Control.activeDialog():
+        FreeCADGui.Control.closeDialog()
     process()
     FreeCAD.closeDocument(doc.Name)
     process()
