@@ -241,18 +241,23 @@ def screenshot_dock(name):
     return path
 
 
-def close_shop(doc):
-    """The end of a GUI fixture: its task dialog (if open) cancelled as its Cancel button does, and its document
-    closed. (Not closeDialog alone: CAM's op panel stops observing the selection only in its accept or reject; a
-    panel closed without either stayed an observer and, once the garbage collector had deleted its widgets,
-    answered every later selection with a traceback in the Report view, which failed a later test that reads
-    the Report view, or not, as the collector ran.)"""
+def cancel_open_panel():
+    """The open task panel (if any) cancelled as its Cancel button does (close_shop says why not closeDialog)."""
     if FreeCADGui.Control.activeDialog():
         FreeCADGui.Control.reject()
         process()
     if FreeCADGui.Control.activeDialog():
         FreeCADGui.Control.closeDialog()
     process()
+
+
+def close_shop(doc):
+    """The end of a GUI fixture: its task dialog (if open) cancelled as its Cancel button does, and its document
+    closed. (Not closeDialog alone: CAM's op panel stops observing the selection only in its accept or reject; a
+    panel closed without either stayed an observer and, once the garbage collector had deleted its widgets,
+    answered every later selection with a traceback in the Report view, which failed a later test that reads
+    the Report view, or not, as the collector ran.)"""
+    cancel_open_panel()
     FreeCAD.closeDocument(doc.Name)
     process()
 
