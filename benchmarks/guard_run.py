@@ -28,7 +28,7 @@ import guard_suite
 BENCH_DIR = os.path.dirname(os.path.abspath(__file__))
 TREE = os.path.dirname(BENCH_DIR)
 LABEL = "1.1"  # the FreeCAD the FreeCAD benchmarks run in
-XVFB = 'exec xvfb-run -a -s "-screen 0 1600x1000x24" freecad -M "$FREECAD_GROOVE_CHECKOUT" "$FREECAD_GROOVE_SHARE/%s"'
+XVFB = '%s xvfb-run -a -s "-screen 0 1600x1000x24" freecad -M "$FREECAD_GROOVE_CHECKOUT" "$FREECAD_GROOVE_SHARE/%s"'
 FREECADCMD = '%s freecadcmd -M "$FREECAD_GROOVE_CHECKOUT" -c "$%d"'
 # Short: FreeCAD 1.1 crashes on a -c text of 256 characters or more.
 CODE = ("import os, sys; B = os.environ['FREECAD_GROOVE_SHARE'] + '/bench'; sys.path.insert(0, B); "
@@ -165,8 +165,8 @@ class Runner:
 
     def in_freecad(self, bench, checkout: str, share: str, env: dict) -> tuple:
         """(the finished process, or None; a failure, or None) of the FreeCAD run."""
-        if bench.freecad == "gui":
-            script, codes = XVFB % ("bench/" + bench.script), []
+        if bench.freecad == "gui":  # each step a FreeCAD GUI of its own
+            script, codes = " && ".join(XVFB % (prefix, "bench/" + name) for prefix, name in bench.files()), []
         else:
             files = bench.files()
             script = " && ".join(FREECADCMD % (prefix, k + 1) for k, (prefix, _f) in enumerate(files))

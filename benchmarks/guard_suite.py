@@ -3,10 +3,11 @@ project, each with the options that give issue 22's figures.
 
 ``freecad``: "" runs on the host's Python; "cmd" inside freecadcmd, "gui" in
 FreeCAD's GUI under Xvfb (FreeCAD 1.1 of scripts/freecad-roots; skipped by
---quick). ``steps``: the files run one after the other in one FreeCAD run,
-each with its environment (bench_freecad.py, then bench_freecad_fresh.py in
-two fresh FreeCADs). ``max_rounds``: long runs measured once a side whatever
---rounds says (their figures are memory or minutes-long, not noise-bound).
+--quick). ``steps``: the files run one after the other, each in a FreeCAD of
+its own with its environment (bench_freecad.py, then bench_freecad_fresh.py in
+two fresh FreeCADs; bench_first_hour.py in a session, then fresh).
+``max_rounds``: long runs measured once a side whatever --rounds says (their
+figures are memory or minutes-long, not noise-bound).
 """
 
 from dataclasses import dataclass
@@ -19,7 +20,7 @@ class Bench:
     about: str
     args: tuple = ()
     freecad: str = ""
-    steps: tuple = ()  # ((environment assignments for sh, file), ...): "cmd" runs of more than one file
+    steps: tuple = ()  # ((environment assignments for sh, file), ...): runs of more than one file
     env: tuple = ()  # ((name, value), ...) for the run
     max_rounds: int | None = None
     quick: bool = True  # run by --quick
@@ -33,6 +34,9 @@ class Bench:
 
 FRESH = (("", "bench_freecad.py"), ("FREECAD_GROOVE_BENCH_FRESH=ours", "bench_freecad_fresh.py"),
          ("FREECAD_GROOVE_BENCH_FRESH=freecad", "bench_freecad_fresh.py"))
+
+FIRST_HOUR = tuple(("FREECAD_GROOVE_BENCH_PHASE=%s" % phase, "bench_first_hour.py") for phase in ("session", "fresh",
+                                                                                                   "cam"))
 
 BENCHES = (
     Bench("engine", "bench_engine.py", "G77 pattern and CYCLE93 program: expand and write"),
@@ -64,6 +68,9 @@ BENCHES = (
           quick=False),
     Bench("preview", "bench_preview.py", "the Groove panel's live preview (GUI, Xvfb)", freecad="gui",
           quick=False),
+    Bench("first_hour", "bench_first_hour.py", "a new user's slow steps: the grooving tool controller, the first "
+          "Job panel OK after reopening, recomputing in a fresh FreeCAD (GUI, Xvfb)", freecad="gui",
+          steps=FIRST_HOUR, quick=False),
 )
 
 

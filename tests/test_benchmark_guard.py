@@ -165,3 +165,23 @@ def test_every_benchmark_script_the_guard_names_exists_and_records_figures():
         for _prefix, name in bench.files():
             with open(os.path.join(ROOT, "benchmarks", name)) as f:
                 assert "figures.record(" in f.read(), name
+
+
+def test_a_gui_benchmark_s_steps_each_run_in_a_freecad_gui_of_their_own_with_their_environment(monkeypatch):
+    ran = []
+
+    class Done:
+        returncode = 0
+
+    monkeypatch.setattr(guard_run.subprocess, "run", lambda argv, **kw: ran.append(argv) or Done())
+    (first_hour,) = guard_suite.select(["first_hour"], quick=False)
+    guard_run.Runner("/ref", "python3").in_freecad(first_hour, "/checkout", "/share", {})
+    (argv,) = ran
+    script = argv[argv.index("-c") + 1]
+    steps = script.split(" && ")
+    assert [s.split()[0] for s in steps] == ["FREECAD_GROOVE_BENCH_PHASE=%s" % p for p in ("session", "fresh", "cam")]
+    assert all("xvfb-run" in s and s.endswith('"$FREECAD_GROOVE_SHARE/bench/bench_first_hour.py"') for s in steps)
+    ran.clear()
+    (preview,) = guard_suite.select(["preview"], quick=False)
+    guard_run.Runner("/ref", "python3").in_freecad(preview, "/checkout", "/share", {})
+    assert " && " not in ran[0][ran[0].index("-c") + 1] and "bench/bench_preview.py" in ran[0][ran[0].index("-c") + 1]

@@ -42,6 +42,34 @@ def wait_for(predicate, timeout=5.0, what="condition"):
         time.sleep(0.005)
 
 
+class Poll:
+    """Calls ``action(value)`` once ``predicate()`` gives a true value, checking from a timer on the Qt event loop
+    every ``interval_ms``; ``failed(text)`` instead when ``timeout`` s pass first. For steps inside modal dialogs:
+    a check never waits itself (``wait_for`` there would stop the code that is still building the dialog, when it
+    lets the event loop run before its own exec(), until the wait times out). Keep the Poll referenced."""
+
+    def __init__(self, predicate, action, failed, what, timeout=60.0, interval_ms=20):
+        self.predicate, self.action, self.failed, self.what = predicate, action, failed, what
+        self.end = time.monotonic() + timeout
+        self.timeout = timeout
+        self.timer = QtCore.QTimer()
+        self.timer.setInterval(interval_ms)
+        self.timer.timeout.connect(self._check)
+        self.timer.start()
+
+    def _check(self):
+        value = self.predicate()
+        if value or time.monotonic() > self.end:
+            self.timer.stop()  # before acting: the action may run a modal dialog's event loop
+            if value:
+                self.action(value)
+            else:
+                self.failed("timed out after %.1f s waiting for %s" % (self.timeout, self.what))
+
+    def stop(self):
+        self.timer.stop()
+
+
 def key_of(char):
     """The Qt key code of a character."""
     if char.isdigit():
@@ -78,13 +106,33 @@ def choose(combo, value):
     process()
 
 
-def task_button(panel, which):
-    """The task panel's OK/Apply/Cancel button (QDialogButtonBox.StandardButton).
-    (From the panel: searching the main window can reach boxes of closed
-    dialogs whose C++ side is gone, which crashes PySide2.)"""
-    button = panel.buttonBox.button(which)
-    assert button is not None and button.isVisible(), "no visible task dialog button %s" % which
-    return button
+def task_button(panel, which, timeout=30.0):
+    """The task panel's OK/Apply/Cancel button (QDialogButtonBox.StandardButton) once it shows: FreeCAD puts the
+    button box into the task view when the panel opens, and Qt shows a widget put into a shown window only when
+    its event loop runs again (on a busy machine a test could look before). (From the panel: searching the main
+    window can reach boxes of closed dialogs whose C++ side is gone, which crashes PySide2.) AssertionError
+    naming what hides it when it does not show."""
+    def shown():
+        button = panel.buttonBox.button(which) if getattr(panel, "buttonBox", None) is not None else None
+        return button if button is not None and button.isVisible() else None
+
+    try:
+        return wait_for(shown, timeout=timeout, what="the task dialog button %s" % which)
+    except AssertionError as error:
+        raise AssertionError("%s; hidden: %s" % (error, hidden_part(panel, which))) from None
+
+
+def hidden_part(panel, which):
+    """What keeps the panel's button ``which`` from showing: the widget itself or its first hidden ancestor."""
+    box = getattr(panel, "buttonBox", None)
+    widget = box.button(which) if box is not None else None
+    if widget is None:
+        return "no button box" if box is None else "no such button"
+    while widget is not None:
+        if widget.isHidden():
+            return "%s %r" % (type(widget).__name__, widget.objectName())
+        widget = widget.parentWidget()
+    return "nothing hidden (the main window not shown?)"
 
 
 def buttons_shown(panel):
@@ -160,20 +208,56 @@ def zoom_to(doc, x, z, size):
     return view
 
 
+DEFAULT_DOCK_WIDTHS = {}  # dock title -> its width before roomy_task_panel first widened it: as FreeCAD starts
+TASK_DOCKS = ("Tasks", "Combo View", "Combo view")
+
+
 def roomy_task_panel():
     """Widen the docks (combo view, tasks) so the panel shows whole in screenshots."""
     mw = FreeCADGui.getMainWindow()
-    docks = [d for d in mw.findChildren(QtGui.QDockWidget)
-             if d.isVisible() and d.windowTitle() in ("Tasks", "Combo View", "Combo view")]
+    docks = [d for d in mw.findChildren(QtGui.QDockWidget) if d.isVisible() and d.windowTitle() in TASK_DOCKS]
+    for dock in docks:
+        DEFAULT_DOCK_WIDTHS.setdefault(dock.windowTitle(), dock.width())
     if docks:
         mw.resizeDocks(docks, [480] * len(docks), QtCore.Qt.Horizontal)
     process()
 
 
-def close_shop(doc):
-    """The end of a GUI fixture: its task dialog (if open) and its document closed."""
-    FreeCADGui.Control.closeDialog()
+def screenshot_dock(name):
+    """The task dock (1.1: the tasks dock, 1.0: the combo view) put back at the width FreeCAD gives it
+    (roomy_task_panel widens it), saved as <name>.png in 256 colours (small enough for the README). (Found from
+    the main window, as roomy_task_panel finds it: no wrappers made of the widgets between it and the panel.)"""
+    mw = FreeCADGui.getMainWindow()
+    docks = [d for d in mw.findChildren(QtGui.QDockWidget) if d.isVisible() and d.windowTitle() in TASK_DOCKS]
+    assert docks, "no task dock shown"
+    widths = [DEFAULT_DOCK_WIDTHS.get(d.windowTitle(), d.width()) for d in docks]
+    mw.resizeDocks(docks, widths, QtCore.Qt.Horizontal)
+    folder = screenshot_folder()
+    if folder is None:
+        return None
+    process(0.1)
+    path = os.path.join(folder, name + ".png")
+    docks[0].grab().toImage().convertToFormat(QtGui.QImage.Format_Indexed8).save(path)
+    return path
+
+
+def cancel_open_panel():
+    """The open task panel (if any) cancelled as its Cancel button does (close_shop says why not closeDialog)."""
+    if FreeCADGui.Control.activeDialog():
+        FreeCADGui.Control.reject()
+        process()
+    if FreeCADGui.Control.activeDialog():
+        FreeCADGui.Control.closeDialog()
     process()
+
+
+def close_shop(doc):
+    """The end of a GUI fixture: its task dialog (if open) cancelled as its Cancel button does, and its document
+    closed. (Not closeDialog alone: CAM's op panel stops observing the selection only in its accept or reject; a
+    panel closed without either stayed an observer and, once the garbage collector had deleted its widgets,
+    answered every later selection with a traceback in the Report view, which failed a later test that reads
+    the Report view, or not, as the collector ran.)"""
+    cancel_open_panel()
     FreeCAD.closeDocument(doc.Name)
     process()
 

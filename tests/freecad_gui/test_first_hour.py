@@ -9,7 +9,9 @@ Nowhere a traceback in the Report view, nor CAM's Job error (its Job panel
 failed on every OK with KeyError 'Allowance' once a Cylinder slot had
 registered its SetupSheet properties without them in its prototype). The
 LinuxCNC programs go to $FREECAD_GROOVE_SHARE/posted/, where
-tests/test_freecad.py runs LinuxCNC's rs274 on them.
+tests/test_freecad.py runs LinuxCNC's rs274 on them; each op's panel, ready
+for OK, is saved at the dock's default width (<version>-first-hour-<op>.png:
+the README's pictures, through scripts/screenshots).
 """
 
 import os
@@ -25,9 +27,11 @@ from gui_helpers import (
     post_with_cam_post,
     process,
     report_view,
+    screenshot_dock,
     task_button,
     toolbar_action,
     type_into,
+    version,
     wait_for,
 )
 from parts import face_name
@@ -154,6 +158,7 @@ def test_the_groove_from_a_new_job_to_every_lathe_post(monkeypatch):
         page = next(p for p in panel.featurePages if isinstance(p, tool_page.ToolPage))
         page.form.newGroovingTool.click()  # the one click the panel offers
         wait_for(lambda: panel.groove_page.error is None, what="a valid groove with the grooving tool")
+        screenshot_dock("%s-first-hour-groove" % version())  # the README's: what a new user sees
         press_ok(panel)
         (op,) = ops_of(job, "ObjectGroove")
         no_job_error("OK")
@@ -182,6 +187,7 @@ def test_the_cylinder_slot_from_a_new_job_to_the_posts_with_a_c_axis():
         assert page.error is None, page.error  # a new Job's tool controller: the documented defaults
         feeds = page.form.findChild(QtGui.QLabel, "feedsAndSpeeds").text()
         assert feeds.startswith("feed 50 mm/min (default") and "live tool 1000 rpm" in feeds, feeds
+        screenshot_dock("%s-first-hour-slot" % version())
         press_ok(panel)
         (op,) = ops_of(job, "ObjectCylinderSlot")
         no_job_error("OK")
@@ -214,6 +220,7 @@ def test_the_plunge_grind_from_a_new_job_to_the_grinder_posts(monkeypatch):
         type_into(page.field("PlungeFeed"), "1")  # mm/s: FreeCAD's default unit schema
         type_into(page.field("ReciprocationFeed"), "100")
         wait_for(lambda: page.error is None and not page._timer.isActive(), what="a valid grind")
+        screenshot_dock("%s-first-hour-grind" % version())
         press_ok(panel)
         (op,) = ops_of(job, "ObjectPlungeGrind")
         no_job_error("OK")

@@ -24,7 +24,7 @@ import os
 import FreeCADGui
 import PathScripts.PathUtils as PathUtils
 import pytest
-from gui_helpers import open_panel, process, screenshot, task_button, version, wait_for
+from gui_helpers import cancel_open_panel, open_panel, process, screenshot, task_button, version, wait_for
 from PySide import QtGui
 
 # isort: split
@@ -56,8 +56,7 @@ def saved():
     with opened(GUI_AT_BFB45FF) as doc:
         process()
         yield doc, doc.getObject("Groove")
-        FreeCADGui.Control.closeDialog()
-        process()
+        cancel_open_panel()
     process()
 
 
@@ -149,8 +148,7 @@ def ops_saved():
     with opened(OPS_AT_3D18F68) as doc:
         process()
         yield doc
-        FreeCADGui.Control.closeDialog()
-        process()
+        cancel_open_panel()
     process()
 
 

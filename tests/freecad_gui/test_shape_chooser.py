@@ -3,9 +3,11 @@
 What a user does: CAM > Tool library editor (CAM_ToolBitLibraryOpen), "Add
 tool bit", the shape chooser opens; "Grooving blade" is among its entries,
 drawn with its icon; a click on it makes a tool bit, which then works in a
-Groove op. The dialogs are modal: the steps inside them run from timers,
-and a watchdog closes whatever is still open so a failure cannot hang the
-suite. FreeCAD 1.0 has no shape chooser: skipped.
+Groove op. The dialogs are modal: the steps inside them run from a timer
+once each dialog shows (never a wait inside the timer: CAM builds the
+chooser, letting the event loop run, before it shows it; a wait there held it
+until it timed out), and a watchdog closes whatever is still open so a
+failure cannot hang the suite. FreeCAD 1.0 has no shape chooser: skipped.
 """
 
 import traceback
@@ -13,7 +15,7 @@ import traceback
 import FreeCADGui
 import Part
 import pytest
-from gui_helpers import close_shop, make_gui_shop, process, screenshot_widget, version, wait_for
+from gui_helpers import Poll, close_shop, make_gui_shop, process, screenshot_widget, version
 from parts import face_name
 from PySide import QtCore, QtGui
 
@@ -23,7 +25,8 @@ from freecad_groove.freecad.addon_op import op_error
 
 pytestmark = pytest.mark.skipif(not shape_assets.AVAILABLE, reason="FreeCAD 1.0 has no tool bit shape chooser: "
                                 "the grooving blade comes from the Groove panel's tool page")
-WATCHDOG_MS = 60000
+POLL_S = 60.0  # a dialog not shown by then did not open: a failure
+WATCHDOG_MS = 90000
 
 
 @pytest.fixture(scope="module", autouse=True)
@@ -59,10 +62,16 @@ def _shape_buttons():
     return (chooser, buttons) if buttons else None
 
 
-def _in_the_chooser(seen):
-    """Inside the shape chooser: find "Grooving blade", note what it shows, click it."""
+def _failed(seen, text):
+    seen.setdefault("error", text)
+    _close_modal_dialogs()
+
+
+def _in_the_chooser(seen, found):
+    """Inside the shape chooser (``found``: it and its ShapeButtons): find the shape, note what it shows, click
+    it."""
     try:
-        chooser, buttons = wait_for(_shape_buttons, timeout=30, what="the shape chooser")
+        chooser, buttons = found
         seen["entries"] = sorted(b.label_widget.text() for b in buttons)
         (button,) = [b for b in buttons if b.shape.id == seen.get("shape_id", shape_assets.SHAPE_ID)]
         seen["label"] = button.label_widget.text()
@@ -71,15 +80,15 @@ def _in_the_chooser(seen):
         screenshot_widget("%s-shape-chooser%s" % (version(), seen.get("shot", "")), chooser)
         button.click()
     except Exception:
-        seen["error"] = traceback.format_exc()
-        _close_modal_dialogs()
+        _failed(seen, traceback.format_exc())
 
 
-def _in_the_editor(seen):
-    """Inside the tool library editor: press "Add tool bit", then close it."""
+def _in_the_editor(seen, editor):
+    """Inside the tool library editor: press "Add tool bit" (the chooser's steps start once it runs), then close
+    the editor."""
     try:
-        editor = wait_for(lambda: _dialog_with("addToolBitButton"), timeout=30, what="the tool library editor")
-        QtCore.QTimer.singleShot(200, lambda: _in_the_chooser(seen))
+        seen["polls"].append(Poll(_shape_buttons, lambda found: _in_the_chooser(seen, found),
+                                  lambda text: _failed(seen, text), "the shape chooser", timeout=POLL_S))
         editor.findChild(QtCore.QObject, "addToolBitButton").click()  # returns when the chooser closes
         process(0.2)
         screenshot_widget("%s-tool-library-editor" % version(), editor)
@@ -96,8 +105,10 @@ def _local_toolbits():
 
 def _choose_in_the_tool_library(seen):
     """CAM > Tool library editor > Add tool bit > the shape ``seen["shape_id"]`` (default the grooving blade);
-    ``seen`` gets what the chooser showed."""
-    QtCore.QTimer.singleShot(200, lambda: _in_the_editor(seen))
+    ``seen`` gets what the chooser showed. Each step starts when its dialog is shown (Poll: the editor and the
+    chooser let the event loop run while they are built, before they show)."""
+    seen["polls"] = [Poll(lambda: _dialog_with("addToolBitButton"), lambda editor: _in_the_editor(seen, editor),
+                          lambda text: _failed(seen, text), "the tool library editor", timeout=POLL_S)]
     watchdog = QtCore.QTimer()  # stopped below: it must not close a later test's dialogs
     watchdog.setSingleShot(True)
     watchdog.timeout.connect(_close_modal_dialogs)
@@ -107,6 +118,8 @@ def _choose_in_the_tool_library(seen):
         process(0.2)
     finally:
         watchdog.stop()
+        for poll in seen.pop("polls"):
+            poll.stop()
 
 
 def test_the_shape_chooser_offers_the_grooving_blade():
