@@ -1,60 +1,106 @@
 """The distances the column model's check reports: how deep a gouge reaches
 into the part (to the exact edges of the part's rings), the part of it deeper
 than the tolerance, and whether material left standing is thicker than it.
+A gouge is measured on exact lines, not on the model's columns: the columns
+find where to look (a column holds one interval across its width, and on a
+steep wall that interval is off at the column's sides by the slope times
+half the width), the lines measure.
 
 Rows are flat intervals along X on a window's columns (columns.Flat).
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Optional
+
 import numpy as np
 
 from . import columns as col
+from .column_sweep import FeedPath, swept_rows
 from .columns import DIFFERENCE, INTERSECTION, UNION, Flat, Grid
-from .shapes import Edges, capsule_rows, distances
+from .shapes import Edges, Shape, capsule_rows, distances
 
 NOISE_AREA = 1e-10  # mm^2, as overlay.NOISE_AREA
 SUBLINES = 4  # lines per column the part of a gouge deeper than the tolerance is measured on
-NARROW = 0.005  # mm: in columns narrower than this a gouge's depth is also measured at the column's sides
+NARROW = 0.005  # mm: a column narrower than this is measured on its sides too, whatever its centre shows
 
 
-def _near(rows: Flat, grid: Grid, edges: Edges, margin: float) -> np.ndarray:
-    cols = rows[0]
-    return edges.near(float(grid.edges[cols.min()]) - margin, float(grid.edges[cols.max() + 1]) + margin)
+@dataclass
+class Gouge:
+    """A gouge: the area of it deeper than the tolerance, its depth, its deepest point (x, z), where it is."""
+
+    area: float
+    depth: float
+    at: tuple[float, float]
+    rows: Flat  # on the window's columns
 
 
-def deepest(rows: Flat, grid: Grid, edges: Edges) -> tuple[float, tuple[float, float]]:
-    """(the largest distance of a point of ``rows`` from the part's edges, that point (x, z))."""
-    cols, lo, hi = rows
-    zmin, zmax = grid.edges[cols.min()], grid.edges[cols.max() + 1]
-    reach = (zmax - zmin) + float(np.max(hi) - np.min(lo)) + 1.0
-    segments = _near(rows, grid, edges, reach)
-    zs = [grid.centres[cols]]
-    narrow = grid.widths[cols] <= NARROW
-    if narrow.any():
-        zs += [np.where(narrow, grid.edges[cols], np.nan), np.where(narrow, grid.edges[cols + 1], np.nan)]
-    points = [np.column_stack([z, x]) for z in zs for x in (lo, 0.5 * (lo + hi), hi)]
-    points = np.concatenate(points)
-    points = points[np.isfinite(points[:, 0])]
-    depth = distances(points, segments)
+def hinted(cut: Flat, grid: Grid, edges: Edges, tol: float) -> Flat:
+    """The rows of ``cut`` whose column may hold a gouge deeper than tol:
+    some of it farther than tol from the part's edges on the column's centre
+    line (where the model is exact), or, in a column narrower than NARROW (a
+    sliver beside a wall, deepest at the column's side), on a side line."""
+    cols = np.unique(cut[0])
+    segments = edges.near(float(grid.edges[cols[0]]) - tol, float(grid.edges[cols[-1] + 1]) + tol)
+    deep = np.zeros(len(grid), dtype=bool)
+    narrow = grid.widths < NARROW
+    for lines, pick in ((grid.centres, None), (grid.edges[:-1], narrow), (grid.edges[1:], narrow)):
+        rows = cut if pick is None else col.select(cut, pick[cut[0]])
+        if len(rows[0]):
+            core = col.combine(rows, capsule_rows(lines, segments, tol), DIFFERENCE)
+            deep[core[0][col.lengths(core) > 0]] = True
+    return col.select(cut, deep[cut[0]])
+
+
+def _lines(cols: np.ndarray, grid: Grid) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The lines a gouge is measured on: SUBLINES across each column (each
+    weighing a SUBLINES-th of its width) and the column's two sides (weighing
+    nothing: where a wall bounds a sliver its deepest point lies): (z, the
+    column of each, weight), sorted by z."""
+    offsets = (np.arange(SUBLINES) + 0.5) / SUBLINES
+    sub = grid.edges[cols][:, None] + offsets[None, :] * grid.widths[cols][:, None]
+    z = np.concatenate([sub.ravel(), grid.edges[cols], grid.edges[cols + 1]])
+    owner = np.concatenate([np.repeat(cols, SUBLINES), cols, cols])
+    weight = np.concatenate([np.repeat(grid.widths[cols] / SUBLINES, SUBLINES), np.zeros(2 * len(cols))])
+    order = np.argsort(z, kind="stable")
+    return z[order], owner[order], weight[order]
+
+
+def measure_gouge(cut: Flat, before: Flat, feeds: Sequence[FeedPath], part: Shape, edges: Edges, grid: Grid,
+                  tol: float) -> Optional[Gouge]:
+    """The gouge ``cut`` (the model's removed part, rows on ``grid``) hints
+    at, measured exactly on lines across its columns: what the feeds sweep
+    there (in closed form), inside the part (its rings) and the material
+    standing before; its part farther than ``tol`` from the part's edges
+    (capsules about them), its deepest point. None when no part of it is
+    deeper than tol (the model's columns only hinted)."""
+    cols = np.unique(cut[0])
+    z, owner, weight = _lines(cols, grid)
+    swept = [swept_rows(z, f.tool, f.plunge, f.starts, f.ends)[0] for f in feeds if len(f.starts)]
+    if not swept:
+        return None
+    removed = col.combine((np.concatenate([r[0] for r in swept]), np.concatenate([r[1] for r in swept]),
+                           np.concatenate([r[2] for r in swept])), col.empty_flat(), UNION)
+    lo, hi = col.pack(len(grid), before)
+    standing = col.flat(lo[owner], hi[owner])
+    local = part.clipped(float(z[0]) - 1.0, float(z[-1]) + 1.0)
+    inside = col.combine(col.combine(removed, local.rows(z), INTERSECTION), standing, INTERSECTION)
+    if not len(inside[0]):
+        return None
+    segments = edges.near(float(z[0]) - tol, float(z[-1]) + tol)
+    core = col.combine(inside, capsule_rows(z, segments, tol), DIFFERENCE)
+    amount = float(np.sum(col.lengths(core) * weight[core[0]]))
+    if amount <= NOISE_AREA:
+        return None
+    line, a, b = inside
+    points = np.concatenate([np.column_stack([z[line], x]) for x in (a, 0.5 * (a + b), b)])
+    reach = float(z[-1] - z[0]) + float(np.max(b) - np.min(a)) + 1.0
+    depth = distances(points, edges.near(float(z[0]) - reach, float(z[-1]) + reach))
     best = int(np.argmax(depth))
-    return float(depth[best]), (float(points[best, 1]), float(points[best, 0]))
-
-
-def deeper_than(rows: Flat, grid: Grid, edges: Edges, tol: float) -> tuple[Flat, float]:
-    """The part of ``rows`` farther than ``tol`` from the part's edges: (its
-    rows, each column's union of SUBLINES lines; its area, the lines' mean)."""
-    cols, lo, hi = rows
-    line_col = np.repeat(cols, SUBLINES)
-    offsets = (np.tile(np.arange(SUBLINES), len(cols)) + 0.5) / SUBLINES
-    lines = grid.edges[line_col] + offsets * grid.widths[line_col]
-    segments = _near(rows, grid, edges, tol)
-    index = np.arange(len(lines))
-    core = col.combine((index, np.repeat(lo, SUBLINES), np.repeat(hi, SUBLINES)),
-                       capsule_rows(lines, segments, tol), DIFFERENCE)
-    amount = float(np.sum(col.lengths(core) * grid.widths[line_col[core[0]]])) / SUBLINES
-    merged = col.combine((line_col[core[0]], core[1], core[2]), col.empty_flat(), UNION)
-    return merged, amount
+    rows = col.combine((owner[core[0]], core[1], core[2]), col.empty_flat(), UNION)
+    return Gouge(amount, float(depth[best]), (float(points[best, 1]), float(points[best, 0])), rows)
 
 
 def thicker_than(left: Flat, standing: Flat, widths: np.ndarray, tol: float) -> bool:

@@ -34,6 +34,16 @@ Point = tuple[float, float]  # (x, z), x the radius
 
 
 @dataclass
+class FeedPath:
+    """The straight feeds of a blade (arcs as chords): starts and ends, (z, x) rows."""
+
+    tool: GroovingTool
+    plunge: str
+    starts: np.ndarray
+    ends: np.ndarray
+
+
+@dataclass
 class Hit:
     """A rapid (move ``index`` of its list, from ``start``) over ``area`` mm^2 of standing material, ``at`` (x, z)."""
 
@@ -155,11 +165,11 @@ def blade_box(tool: GroovingTool, plunge: str) -> tuple[np.ndarray, float]:
     return np.array([lo[0], lo[1], hi[0], hi[1]]), r
 
 
-def swept_rows(grid: Grid, tool: GroovingTool, plunge: str, starts: np.ndarray, ends: np.ndarray,
+def swept_rows(centres: np.ndarray, tool: GroovingTool, plunge: str, starts: np.ndarray, ends: np.ndarray,
                skin: float = 0.0, limit: int | None = None) -> tuple[Flat, np.ndarray]:
     """What the blade sweeps along each move starts[i] -> ends[i] ((z, x)
-    rows) on ``grid`` (shrunk by ``skin``; only columns before ``limit``):
-    rows (global columns) and the move of each. The blade is blade_box's box
+    rows) on the lines z = ``centres`` (increasing; shrunk by ``skin``; only
+    lines before ``limit``): rows (line numbers) and the move of each. The blade is blade_box's box
     B grown by a disk; swept along d it is B + capsule(0 -> d, r), and a
     column's line z = c meets it from the lowest to the highest level of the
     capsule over c - B's Z extent, B's X extent added: exact, arcs and all."""
@@ -169,26 +179,41 @@ def swept_rows(grid: Grid, tool: GroovingTool, plunge: str, starts: np.ndarray, 
     else:
         r -= skin
     dz, dx = ends[:, 0] - starts[:, 0], ends[:, 1] - starts[:, 1]
-    zlo = starts[:, 0] + box[0] + np.minimum(dz, 0.0) - r
-    zhi = starts[:, 0] + box[2] + np.maximum(dz, 0.0) + r
-    i0 = np.searchsorted(grid.centres, zlo, "left")
-    i1 = np.searchsorted(grid.centres, zhi, "right")
+    kz0, kz1 = np.minimum(dz, 0.0) - r, np.maximum(dz, 0.0) + r  # the capsule's Z extent
+    i0 = np.searchsorted(centres, starts[:, 0] + box[0] + kz0, "left")
+    i1 = np.searchsorted(centres, starts[:, 0] + box[2] + kz1, "right")
+    # the middle: lines whose strip holds the whole capsule, its lowest and highest level
+    m0 = np.searchsorted(centres, starts[:, 0] + box[0] + kz1, "left")
+    m1 = np.searchsorted(centres, starts[:, 0] + box[2] + kz0, "right")
     if limit is not None:
-        i1 = np.minimum(i1, limit)
-    counts = np.maximum(i1 - i0, 0)
-    total = int(counts.sum())
-    if not total or box[2] < box[0] or box[3] < box[1]:
+        i1, m1 = np.minimum(i1, limit), np.minimum(m1, limit)
+    m0, m1 = np.clip(m0, i0, np.maximum(i0, i1)), np.clip(m1, i0, np.maximum(i0, i1))
+    m1 = np.maximum(m1, m0)
+    if box[2] < box[0] or box[3] < box[1]:
         return col.empty_flat(), np.empty(0, dtype=np.int64)
-    which = np.repeat(np.arange(len(starts)), counts)
-    cols = i0[which] + (np.arange(total) - (np.cumsum(counts) - counts)[which])
-    c = grid.centres[cols] - starts[which, 0]
-    mz, mx = dz[which], dx[which]
-    w0 = np.maximum(c - box[2], np.minimum(mz, 0.0) - r)
-    w1 = np.minimum(c - box[0], np.maximum(mz, 0.0) + r)
-    lo = starts[which, 1] + box[1] + _extreme(w0, w1, mz, mx, r, -1.0)
-    hi = starts[which, 1] + box[3] + _extreme(w0, w1, mz, mx, r, 1.0)
-    keep = (w0 <= w1) & (lo < hi)
+    middle_which, middle_cols = _ranges(m0, m1)
+    lo = starts[middle_which, 1] + box[1] + np.minimum(dx[middle_which], 0.0) - r
+    hi = starts[middle_which, 1] + box[3] + np.maximum(dx[middle_which], 0.0) + r
+    side_which, side_cols = _ranges(np.concatenate([i0, m1]), np.concatenate([m0, np.maximum(i1, m1)]))
+    side_which = side_which % len(starts)
+    c = centres[side_cols] - starts[side_which, 0]
+    mz, mx = dz[side_which], dx[side_which]
+    w0 = np.maximum(c - box[2], kz0[side_which])
+    w1 = np.minimum(c - box[0], kz1[side_which])
+    side_lo = starts[side_which, 1] + box[1] + _extreme(w0, w1, mz, mx, r, -1.0)
+    side_hi = starts[side_which, 1] + box[3] + _extreme(w0, w1, mz, mx, r, 1.0)
+    cols = np.concatenate([middle_cols, side_cols])
+    lo, hi = np.concatenate([lo, side_lo]), np.concatenate([hi, side_hi])
+    which = np.concatenate([middle_which, side_which])
+    keep = np.concatenate([np.ones(len(middle_cols), dtype=bool), w0 <= w1]) & (lo < hi)
     return (cols[keep], lo[keep], hi[keep]), which[keep]
+
+
+def _ranges(start: np.ndarray, stop: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(which range, index) of every index in the ranges start[k]:stop[k]."""
+    counts = np.maximum(stop - start, 0)
+    which = np.repeat(np.arange(len(start)), counts)
+    return which, start[which] + (np.arange(len(which)) - (np.cumsum(counts) - counts)[which])
 
 
 def _zx(points: Sequence[Point]) -> np.ndarray:
@@ -199,7 +224,7 @@ def _rapid_hit(material: Material, tool: GroovingTool, plunge: str, start: Point
                window: tuple[int, int]) -> tuple[float, Point] | None:
     """(area, (x, z) inside) of the held material the rapid's sweep (less RAPID_SKIN) overlaps, or None."""
     limit = material.held_end
-    rows, _which = swept_rows(material.grid, tool, plunge, _zx([start]), _zx([end]), RAPID_SKIN, limit)
+    rows, _which = swept_rows(material.grid.centres, tool, plunge, _zx([start]), _zx([end]), RAPID_SKIN, limit)
     if not len(rows[0]):
         return None
     i0, i1 = int(rows[0].min()), int(rows[0].max()) + 1
@@ -219,16 +244,17 @@ def _rapid_hit(material: Material, tool: GroovingTool, plunge: str, start: Point
 
 
 def sweep(material: Material, moves: Sequence[Move], tool: GroovingTool, plunge: str, start: Point,
-          window: tuple[int, int]) -> tuple[list[Hit], Point]:
+          window: tuple[int, int]) -> tuple[list[Hit], Point, FeedPath]:
     """Run ``moves`` from ``start`` through ``material`` (updated): the
-    rapids that meet standing material, and where the tool ends."""
+    rapids that meet standing material, where the tool ends, the feeds."""
     segments, final = straight_segments(moves, start)
-    hits, pending = [], []
+    hits, pending, feeds = [], [], []
 
     def flush() -> None:
         if pending:
             starts, ends = _zx([s for s, _e in pending]), _zx([e for _s, e in pending])
-            material.subtract(swept_rows(material.grid, tool, plunge, starts, ends)[0])
+            material.subtract(col.union_per_column(swept_rows(material.grid.centres, tool, plunge, starts, ends)[0]))
+            feeds.extend(pending)
             pending.clear()
 
     for index, a, b, rapid in segments:
@@ -240,4 +266,4 @@ def sweep(material: Material, moves: Sequence[Move], tool: GroovingTool, plunge:
         if hit is not None:
             hits.append(Hit(index, a, b, hit[0], hit[1]))
     flush()
-    return hits, final
+    return hits, final, FeedPath(tool, plunge, _zx([a for a, _b in feeds]), _zx([b for _a, b in feeds]))

@@ -164,6 +164,29 @@ def combine(a: Flat, b: Flat, op: str) -> Flat:
     return cols[starts], xs[starts], xs[stops]
 
 
+def union_per_column(rows: Flat) -> Flat:
+    """The union of many rows per column (sorted), fast where a column's
+    intervals share a point (its union is then one interval: the smallest lo
+    to the largest hi); the other columns through ``combine``."""
+    cols, lo, hi = rows
+    if not len(cols):
+        return rows
+    base = int(cols.min())
+    c = cols - base
+    n = int(c.max()) + 1
+    lo_min, lo_max = np.full(n, np.inf), np.full(n, -np.inf)
+    hi_min, hi_max = np.full(n, np.inf), np.full(n, -np.inf)
+    np.minimum.at(lo_min, c, lo)
+    np.maximum.at(lo_max, c, lo)
+    np.minimum.at(hi_min, c, hi)
+    np.maximum.at(hi_max, c, hi)
+    simple = np.isfinite(lo_min) & (lo_max <= hi_min)
+    one = np.nonzero(simple)[0]
+    out = (one + base, lo_min[one], hi_max[one])
+    rest = select(rows, ~simple[c])
+    return combine(out, rest, UNION) if len(rest[0]) else out
+
+
 def lengths(rows: Flat) -> np.ndarray:
     return rows[2] - rows[1]
 

@@ -199,7 +199,7 @@ def _gouge_line(step: Step, check: OpCheck) -> int:
             position = end
     if not lines:
         return step.line
-    rows, which = swept_rows(region.grid, step.blade, step.plunge, np.array(starts), np.array(ends))
+    rows, which = swept_rows(region.grid.centres, step.blade, step.plunge, np.array(starts), np.array(ends))
     cols, a, b = rows
     overlap = np.clip(np.minimum(b[:, None], hi[cols]) - np.maximum(a[:, None], lo[cols]), 0.0, None).sum(axis=1)
     meets = which[overlap * region.grid.widths[cols] > NOISE_AREA]

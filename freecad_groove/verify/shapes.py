@@ -30,6 +30,10 @@ class Shape:
     def leaves(self) -> list[Rings]:
         raise NotImplementedError
 
+    def clipped(self, zlo: float, zhi: float) -> Shape:
+        """The same region on the lines z in [zlo, zhi], without the rings that lie wholly beside them."""
+        raise NotImplementedError
+
     def vertices(self) -> np.ndarray:
         """(z, x) of every ring vertex."""
         parts = [np.concatenate(leaf.rings) for leaf in self.leaves() if leaf.rings]
@@ -78,6 +82,9 @@ class Rings(Shape):
     def leaves(self) -> list[Rings]:
         return [self]
 
+    def clipped(self, zlo: float, zhi: float) -> Shape:
+        return Rings(tuple(r for r in self.rings if r[:, 0].max() >= zlo and r[:, 0].min() <= zhi))
+
 
 @dataclass(frozen=True, eq=False)
 class Combined(Shape):
@@ -90,6 +97,9 @@ class Combined(Shape):
 
     def leaves(self) -> list[Rings]:
         return self.a.leaves() + self.b.leaves()
+
+    def clipped(self, zlo: float, zhi: float) -> Shape:
+        return Combined(self.op, self.a.clipped(zlo, zhi), self.b.clipped(zlo, zhi))
 
 
 EMPTY_SHAPE = Rings(())
@@ -195,6 +205,21 @@ class Edges:
         i1 = int(np.searchsorted(self.zmin, zhi, "right"))
         seg = self.segments[i0:i1]
         return seg[np.maximum(seg[:, 0], seg[:, 2]) >= zlo]
+
+
+def corners(shape: Shape, turn: float = 0.05) -> np.ndarray:
+    """(z, x) of the vertices where a ring of ``shape`` turns by more than
+    ``turn`` radians (not the chords' ends along an arc)."""
+    out = []
+    for leaf in shape.leaves():
+        for ring in leaf.rings:
+            closed = ring[:-1] if len(ring) > 3 and np.all(ring[0] == ring[-1]) else ring
+            d_in = closed - np.roll(closed, 1, axis=0)
+            d_out = np.roll(closed, -1, axis=0) - closed
+            angle = np.abs(np.arctan2(d_in[:, 0] * d_out[:, 1] - d_in[:, 1] * d_out[:, 0],
+                                      np.sum(d_in * d_out, axis=1)))
+            out.append(closed[angle > turn])
+    return np.concatenate(out) if out else np.empty((0, 2))
 
 
 def _split(p0: np.ndarray, p1: np.ndarray) -> np.ndarray:

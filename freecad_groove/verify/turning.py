@@ -38,13 +38,13 @@ import numpy as np
 from freecad_groove.engine.moves import ARCS, DWELL, MINUS_X, PLUS_X, GroovingTool, Move
 
 from . import columns as col
-from .column_figures import NOISE_AREA, deeper_than, deepest, thicker_than
+from .column_figures import NOISE_AREA, hinted, measure_gouge, thicker_than
 from .column_reach import unreachable_across, unreachable_along
-from .column_sweep import Material, sweep
+from .column_sweep import FeedPath, Material, sweep
 from .columns import DIFFERENCE, INTERSECTION, UNION, Flat, Grid
 from .machining_time import Feeds, MachiningTime, machining_time
 from .outline import outline_at_origin
-from .shapes import EMPTY_SECTION, Edges, Section, Shape, box
+from .shapes import EMPTY_SECTION, Edges, Section, Shape, box, corners
 from .turned_section import groove_region, part_to_leave
 
 Point = tuple[float, float]
@@ -225,26 +225,29 @@ def layout(shapes: Sequence[Shape], ops: Sequence[OpInput]) -> tuple[Grid, float
     """The column grid of a check (see the module) and its step."""
     runs = [run for op in ops if not op.error for run in op.grooves]
     step = step_for([run.tool for run in runs])
-    breaks = [s.vertices()[:, 0] for s in shapes]
+    breaks = [corners(s)[:, 0] for s in shapes]
     for run in runs:
         base = outline_at_origin(run.tool, run.plunge)
         ends = np.array([float(m.z) for m in run.moves if m.kind != DWELL])
         breaks += [ends + base[:, 0].min(), ends + base[:, 0].max()]
-        corners = np.array([float(z) for _x, z in run.region])
-        breaks += [corners, col.graded(_walls(run.region), float(run.tool.corner_radius), GRADING)]
+        groove = corners(groove_region(run.region))[:, 0]
+        breaks += [groove, col.graded(_walls(run.region), float(run.tool.corner_radius), GRADING)]
     fine = [op_range(op) for op in ops if not op.error and op.grooves]
     return col.make_grid(np.concatenate(breaks), fine, step, COARSE), step
 
 
-def _gouge(check: OpCheck, removed: Flat, part: Flat, window: Grid, edges: Edges, tol: float) -> None:
-    cut = col.combine(removed, part, INTERSECTION)
+def _gouge(check: OpCheck, removed: Flat, before: Flat, feeds: list[FeedPath], part: PartModel, window: Grid,
+           span: tuple[int, int], tol: float) -> None:
+    cut = col.combine(removed, part.rows(*span), INTERSECTION)
     if col.area(cut, window.widths) <= NOISE_AREA:
         return
-    core, amount = deeper_than(cut, window, edges, tol)
-    if amount <= NOISE_AREA:
+    cut = hinted(cut, window, part.edges, tol)
+    if not len(cut[0]):
         return
-    check.gouge_depth, check.gouge_at = deepest(cut, window, edges)
-    check.gouge_area, check.gouge_region = amount, Section(window, core)
+    gouge = measure_gouge(cut, before, feeds, part.shape, part.edges, window, tol)
+    if gouge is not None:
+        check.gouge_area, check.gouge_depth, check.gouge_at = gouge.area, gouge.depth, gouge.at
+        check.gouge_region = Section(window, gouge.rows)
 
 
 def _missed(run: GrooveRun, groove: Shape, target: Flat, part: PartModel, window: Grid, span: tuple[int, int],
@@ -292,14 +295,15 @@ def check_op(op: OpInput, material: Material, part: PartModel, tol: float = DEFA
     span = grid.span(*op_range(op))
     window = grid.part(*span)
     before = material.rows(*span)
-    position = op.start
+    position, feeds = op.start, []
     for run in op.grooves:
-        hits, position = sweep(material, run.moves, run.tool, run.plunge, position, span)
+        hits, position, run_feeds = sweep(material, run.moves, run.tool, run.plunge, position, span)
         check.rapid_hits += [RapidHit(run.commands[h.index], h.start, h.end, h.area, h.at) for h in hits]
+        feeds.append(run_feeds)
     after = material.rows(*span)
     removed = col.combine(before, after, DIFFERENCE)
     check.removed_region, check.removed = Section(window, removed), col.area(removed, window.widths)
-    _gouge(check, removed, part.rows(*span), window, part.edges, tol)
+    _gouge(check, removed, before, feeds, part, window, span, tol)
     _groove_figures(check, op, part, window, span, before, after, tol, step)
     material.drop_after(*span)
     if op.feeds is not None:
