@@ -103,13 +103,40 @@ def measure_gouge(cut: Flat, before: Flat, feeds: Sequence[FeedPath], part: Shap
     return Gouge(amount, float(depth[best]), (float(points[best, 1]), float(points[best, 0])), rows)
 
 
-def thicker_than(left: Flat, standing: Flat, widths: np.ndarray, tol: float) -> bool:
+def _slopes(rows: Flat, centres: np.ndarray, end: int) -> np.ndarray:
+    """At each row's end ``end`` (1: lo, 2: hi), how steeply that end runs to
+    the same end of the nearest interval in the columns beside it (|dx/dz|,
+    the steeper side; 0 where a neighbour holds nothing)."""
+    lo, hi = col.pack(len(centres), rows)
+    ends = lo if end == 1 else hi
+    cols, value = rows[0], rows[end]
+    steepest = np.zeros(len(cols))
+    for offset in (-1, 1):
+        other = cols + offset
+        inside = (other >= 0) & (other < len(centres))
+        other = np.clip(other, 0, len(centres) - 1)
+        near = ends[other]
+        gap = np.where(np.isfinite(near), np.abs(near - value[:, None]), np.inf)
+        k = np.argmin(gap, axis=1)
+        found = inside & np.isfinite(gap[np.arange(len(cols)), k])
+        run = np.abs(centres[other] - centres[cols])
+        slope = np.where(found, gap[np.arange(len(cols)), k] / np.where(run > 0, run, 1.0), 0.0)
+        steepest = np.maximum(steepest, slope)
+    return steepest
+
+
+def thicker_than(left: Flat, standing: Flat, grid: Grid, tol: float) -> bool:
     """Does some of ``left`` lie farther than ``tol`` from everything not
-    ``standing`` (the column model's depth_inside)? Along X exactly; across,
-    a column's centre lies half its width from its sides, and a column
-    narrower than 2 tol counts only what its neighbours hold as well."""
+    ``standing`` (the column model's depth_inside)? Along X, each end of a
+    standing interval is taken in by tol measured square to the edge it lies
+    on (its slope from the columns beside it); across, a column's centre lies
+    half its width from its sides, and a column narrower than 2 tol counts
+    only what its neighbours hold as well."""
+    widths = grid.widths
     cols, lo, hi = standing
-    eroded = col.select((cols, lo + tol, hi - tol), lo + tol < hi - tol)
+    lo_in = lo + tol * np.sqrt(1.0 + _slopes(standing, grid.centres, 1) ** 2)
+    hi_in = hi - tol * np.sqrt(1.0 + _slopes(standing, grid.centres, 2) ** 2)
+    eroded = col.select((cols, lo_in, hi_in), lo_in < hi_in)
     narrow = widths < 2 * tol
     if narrow.any():
         n = len(widths)

@@ -22,13 +22,17 @@ from freecad_groove.engine.moves import ARCS, DWELL, FEED, RAPID, GroovingTool, 
 
 from . import columns as col
 from .arcs import straightened
-from .columns import DIFFERENCE, INTERSECTION, Flat, Grid
+from .columns import DIFFERENCE, Flat, Grid
 from .outline import outline_at_origin
 from .shapes import Shape
 
 # As sweep.RAPID_SKIN and sweep.RAPID_AREA_TOL (that module needs shapely).
 RAPID_SKIN = 2e-5 + 1e-5
 RAPID_AREA_TOL = 1e-9
+# The chords an arc is swept along stay this close to it (mm): a tenth of the
+# 0.001 mm the check reports from, so that a chord can neither hide a gouge
+# nor make one (arcs.SWEEP_TOL, 1e-5, ten times finer, is the shapely oracle's).
+CHORD_TOL = 1e-4
 
 Point = tuple[float, float]  # (x, z), x the radius
 
@@ -113,7 +117,7 @@ def straight_segments(moves: Sequence[Move], start: Point) -> tuple[list[tuple[i
     for i, m in enumerate(moves):
         if m.kind not in (RAPID, FEED, DWELL) and m.kind not in ARCS:
             raise ValueError("move #%d has unknown kind %r" % (i, m.kind))
-    for i, m in straightened(moves, pos):
+    for i, m in straightened(moves, pos, CHORD_TOL):
         if m.kind in (RAPID, FEED):
             end = (pos[0] if m.x is None else float(m.x), float(m.z))
             segments.append((i, pos, end, m.kind == RAPID))
@@ -224,23 +228,30 @@ def _rapid_hit(material: Material, tool: GroovingTool, plunge: str, start: Point
                window: tuple[int, int]) -> tuple[float, Point] | None:
     """(area, (x, z) inside) of the held material the rapid's sweep (less RAPID_SKIN) overlaps, or None."""
     limit = material.held_end
+    box, r = blade_box(tool, plunge)
+    reach = r - RAPID_SKIN  # the swept area's bounding box, shrunk by the skin: nothing standing in it, no hit
+    zlo, zhi = min(start[1], end[1]) + box[0] - reach, max(start[1], end[1]) + box[2] + reach
+    xlo, xhi = min(start[0], end[0]) + box[1] - reach, max(start[0], end[0]) + box[3] + reach
+    i0, i1 = material.grid.span(zlo, zhi)
+    lo, hi = material.lo[i0:min(i1, limit)], material.hi[i0:min(i1, limit)]
+    if not np.any((lo < hi) & (lo < xhi) & (hi > xlo)):
+        return None
     rows, _which = swept_rows(material.grid.centres, tool, plunge, _zx([start]), _zx([end]), RAPID_SKIN, limit)
     if not len(rows[0]):
         return None
-    i0, i1 = int(rows[0].min()), int(rows[0].max()) + 1
-    overlap = col.combine(material.rows(i0, i1), col.shifted(rows, -i0), INTERSECTION)
-    widths = material.grid.widths[i0:i1]
-    if col.area(overlap, widths) <= RAPID_AREA_TOL:
+    cols, a, b = rows
+    each = np.clip(np.minimum(b[:, None], material.hi[cols]) - np.maximum(a[:, None], material.lo[cols]), 0.0, None)
+    area = each.sum(axis=1) * material.grid.widths[cols]
+    if float(area.sum()) <= RAPID_AREA_TOL:
         return None
     if material.falls:  # what a cut in this step set free has fallen: only what is still held counts
-        held = material.first_empty(window[0], material.held_end) - i0
-        overlap = col.select(overlap, overlap[0] < held)
-    amount = col.area(overlap, widths)
-    if amount <= RAPID_AREA_TOL:
+        area = np.where(cols < material.first_empty(window[0], material.held_end), area, 0.0)
+    if float(area.sum()) <= RAPID_AREA_TOL:
         return None
-    best = int(np.argmax(col.lengths(overlap) * widths[overlap[0]]))
-    c = overlap[0][best] + i0
-    return amount, (0.5 * (overlap[1][best] + overlap[2][best]), float(material.grid.centres[c]))
+    best = int(np.argmax(area))
+    k = int(np.argmax(each[best]))
+    x = 0.5 * (max(a[best], material.lo[cols[best], k]) + min(b[best], material.hi[cols[best], k]))
+    return float(area.sum()), (float(x), float(material.grid.centres[cols[best]]))
 
 
 def sweep(material: Material, moves: Sequence[Move], tool: GroovingTool, plunge: str, start: Point,

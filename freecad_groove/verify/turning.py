@@ -52,6 +52,7 @@ Region = Any  # a Section (the column model) or a shapely geometry (turning_shap
 DEFAULT_TOL = 0.001  # mm: gouges and leftovers thinner than this are not reported
 WINDOW_MARGIN = 1.0  # mm around what an op's blade sweeps: the columns its check works on
 COARSE = 1.0  # mm: the columns where no blade works
+STEP = 0.05  # mm: the widest column where a blade works (straight edges are exact whatever the width)
 GRADING = 12  # columns ever narrower toward a groove's wall, over a corner radius, on each side
 
 
@@ -60,9 +61,9 @@ def _area(region: Region) -> float:
 
 
 def step_for(tools: Sequence[GroovingTool]) -> float:
-    """The column width where a blade works: 0.02 mm, narrower for a small corner radius."""
+    """The column width where a blade works: STEP, narrower for a small corner radius (an eighth of it)."""
     radii = [float(t.corner_radius) for t in tools if float(t.corner_radius) > 0]
-    return max(0.002, min([0.02] + [r / 5 for r in radii]))
+    return max(0.002, min([STEP] + [r / 8 for r in radii]))
 
 
 @dataclass(frozen=True)
@@ -215,6 +216,23 @@ def op_range(op: OpInput) -> tuple[float, float]:
     return lo - WINDOW_MARGIN, hi + WINDOW_MARGIN
 
 
+def _wall_ends(moves: Sequence[Move], start: Point) -> np.ndarray:
+    """The Z of the move ends where the blade's sides may stand as walls: the
+    ends of moves along an axis and where the path turns back along Z (not
+    the ends of an arc's chords: the blade's corner arcs bound what they cut)."""
+    points = [(float(start[0]), float(start[1]))] + [
+        (float(start[0]) if m.x is None else float(m.x), float(m.z)) for m in moves if m.kind != DWELL]
+    xz = np.array(points)
+    if len(xz) < 2:
+        return xz[:, 1]
+    d = np.diff(xz, axis=0)
+    straight = (np.abs(d[:, 0]) < 1e-9) | (np.abs(d[:, 1]) < 1e-9)
+    turn = np.zeros(len(d), dtype=bool)
+    turn[:-1] = d[:-1, 1] * d[1:, 1] <= 0
+    keep = straight | turn
+    return np.concatenate([xz[:1, 1], xz[1:, 1][keep], xz[:-1, 1][straight]])
+
+
 def _walls(region: Sequence[Point]) -> np.ndarray:
     """The Z of a groove's walls across Z (edges of constant Z): where its fillets meet them."""
     zs = [float(z) for _x, z in region]
@@ -226,10 +244,16 @@ def layout(shapes: Sequence[Shape], ops: Sequence[OpInput]) -> tuple[Grid, float
     runs = [run for op in ops if not op.error for run in op.grooves]
     step = step_for([run.tool for run in runs])
     breaks = [corners(s)[:, 0] for s in shapes]
-    for run in runs:
-        base = outline_at_origin(run.tool, run.plunge)
-        ends = np.array([float(m.z) for m in run.moves if m.kind != DWELL])
-        breaks += [ends + base[:, 0].min(), ends + base[:, 0].max()]
+    for op in ops:
+        if op.error:
+            continue
+        position = op.start
+        for run in op.grooves:
+            base = outline_at_origin(run.tool, run.plunge)
+            ends = _wall_ends(run.moves, position)
+            breaks += [ends + base[:, 0].min(), ends + base[:, 0].max()]
+            moves = [m for m in run.moves if m.kind != DWELL]
+            position = (moves[-1].x, moves[-1].z) if moves else position
         groove = corners(groove_region(run.region))[:, 0]
         breaks += [groove, col.graded(_walls(run.region), float(run.tool.corner_radius), GRADING)]
     fine = [op_range(op) for op in ops if not op.error and op.grooves]
@@ -277,7 +301,7 @@ def _groove_figures(check: OpCheck, op: OpInput, part: PartModel, window: Grid, 
         left = col.combine(target, after, INTERSECTION)
         if len(missed[0]):
             left = col.combine(left, col.grown(missed, tol), DIFFERENCE)
-        if col.area(left, widths) > NOISE_AREA and thicker_than(left, after, widths, tol):
+        if col.area(left, widths) > NOISE_AREA and thicker_than(left, after, window, tol):
             leftover = col.combine(leftover, left, UNION)
         unreachable = col.combine(unreachable, missed, UNION)
         check.reach_warning += run.reach_warning
