@@ -88,7 +88,7 @@ def unreachable_along(grid: Grid, target: Shape, part: Shape, tool: GroovingTool
                       step: float) -> Flat:
     """A Z plunge's unreachable target, found on a grid of columns along X
     over the target (``step`` apart, an edge at every vertex) and returned
-    on the main ``grid`` (columns along Z): each of its rows a rectangle."""
+    on the main ``grid`` (columns along Z): each of its rows a rectangle (grown by its width along X)."""
     _transposed, sign = FRAMES[plunge]
     outline = np.asarray(outline_at_origin(tool, plunge))[:, ::-1] * (1.0, sign)
     verts = target.vertices()
@@ -98,7 +98,7 @@ def unreachable_along(grid: Grid, target: Shape, part: Shape, tool: GroovingTool
     r = float(tool.corner_radius)
     xlo, xhi = verts[:, 1].min() - width - step, verts[:, 1].max() + width + step
     across = col.make_grid(np.concatenate([verts[:, 1], verts[:, 1] - width, verts[:, 1] + width,
-                                           col.graded(verts[:, 1], r, 6), [xlo, xhi]]), [(xlo, xhi)], step, 0.0)
+                                           col.graded(verts[:, 1], r, 12), [xlo, xhi]]), [(xlo, xhi)], step / 2, 0.0)
     t = target.rows(across.centres, transposed=True)
     s = col.combine(part.rows(across.centres, transposed=True), t, DIFFERENCE)
     rows = _signed(frame_unreachable(across, _signed(t, sign), _signed(s, sign), outline), sign)
@@ -110,4 +110,8 @@ def unreachable_along(grid: Grid, target: Shape, part: Shape, tool: GroovingTool
     which = np.repeat(np.arange(len(i0)), counts)
     cols = i0[which] + (np.arange(int(counts.sum())) - (np.cumsum(counts) - counts)[which])
     row_cols = rows[0][which]
-    return col.combine((cols, across.edges[row_cols], across.edges[row_cols + 1]), col.empty_flat(), UNION)
+    # each row a rectangle a row wider on both sides: the rows step along X, and the unreachable
+    # part excuses what the blade leaves; a staircase inside the true edge would not excuse all of it
+    grow = across.widths[row_cols]
+    return col.combine((cols, across.edges[row_cols] - grow, across.edges[row_cols + 1] + grow), col.empty_flat(),
+                       UNION)
