@@ -102,6 +102,26 @@ class Combined(Shape):
         return Combined(self.op, self.a.clipped(zlo, zhi), self.b.clipped(zlo, zhi))
 
 
+@dataclass(frozen=True, eq=False)
+class Union(Shape):
+    """The union of many shapes at once (one sweep over all their intervals: no deep tree)."""
+
+    parts: tuple = ()
+
+    def rows(self, centres: np.ndarray, transposed: bool = False) -> Flat:
+        rows = [p.rows(centres, transposed) for p in self.parts]
+        if not rows:
+            return col.empty_flat()
+        return col.combine(tuple(np.concatenate([r[k] for r in rows]) for k in range(3)), col.empty_flat(), UNION)
+
+    def leaves(self) -> list[Rings]:
+        return [leaf for p in self.parts for leaf in p.leaves()]
+
+    def clipped(self, zlo: float, zhi: float) -> Shape:
+        parts = [p.clipped(zlo, zhi) for p in self.parts]
+        return Union(tuple(p for p in parts if not (isinstance(p, Rings) and not p.rings)))
+
+
 EMPTY_SHAPE = Rings(())
 
 
@@ -118,14 +138,11 @@ def box(zmin: float, xmin: float, zmax: float, xmax: float) -> Shape:
 
 
 def union_all(shapes: Sequence[Shape]) -> Shape:
-    """The union of ``shapes`` (rings that do not overlap one another may share one leaf)."""
+    """The union of ``shapes``."""
     shapes = [s for s in shapes if not (isinstance(s, Rings) and not s.rings)]
     if not shapes:
         return EMPTY_SHAPE
-    out = shapes[0]
-    for s in shapes[1:]:
-        out = out | s
-    return out
+    return shapes[0] if len(shapes) == 1 else Union(tuple(shapes))
 
 
 # ---------------------------------------------------------------- regions on columns
