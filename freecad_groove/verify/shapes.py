@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Optional
 
 import numpy as np
@@ -117,8 +118,13 @@ class Union(Shape):
     def leaves(self) -> list[Rings]:
         return [leaf for p in self.parts for leaf in p.leaves()]
 
+    @cached_property
+    def _z_ranges(self) -> np.ndarray:
+        return np.array([[p.bounds[0], p.bounds[2]] for p in self.parts]).reshape(-1, 2)
+
     def clipped(self, zlo: float, zhi: float) -> Shape:
-        parts = [p.clipped(zlo, zhi) for p in self.parts]
+        near = np.nonzero((self._z_ranges[:, 1] >= zlo) & (self._z_ranges[:, 0] <= zhi))[0]
+        parts = [self.parts[k].clipped(zlo, zhi) for k in near]
         return Union(tuple(p for p in parts if not (isinstance(p, Rings) and not p.rings)))
 
 
