@@ -236,10 +236,10 @@ def ring_rows(rings: Sequence[np.ndarray], centres: np.ndarray) -> Flat:
     xs = p0[edge, 1] + t * (p1[edge, 1] - p0[edge, 1])
     order = np.lexsort((xs, cols))
     cols, xs = cols[order], xs[order]
-    counts = np.bincount(cols, minlength=len(centres))
-    odd = counts % 2 == 1  # a crossing lost to rounding at a vertex: the column is dropped
+    base = int(cols[0])  # (counted over the columns the rings cross only: a ring's cost is its own)
+    odd = np.bincount(cols - base) % 2 == 1  # a crossing lost to rounding at a vertex: the column is dropped
     if odd.any():
-        keep = ~odd[cols]
+        keep = ~odd[cols - base]
         cols, xs = cols[keep], xs[keep]
     return combine((cols[0::2], xs[0::2], xs[1::2]), empty_flat(), UNION)
 
