@@ -25,8 +25,8 @@ def make_plunge_grind(*args, **kwargs):
 
 
 def verify_job(*args, **kwargs):
-    """The turning check of a CAM Job's Groove ops (needs FreeCAD and
-    shapely); see freecad_groove.ops.turning_check.check.verify_job."""
+    """The turning check of a CAM Job's Groove ops (needs FreeCAD, whose
+    numpy it runs on); see freecad_groove.ops.turning_check.check.verify_job."""
     from .ops.turning_check.check import verify_job as _verify_job
 
     return _verify_job(*args, **kwargs)

@@ -7,7 +7,7 @@ Exit status: 0 when the program cuts only its declared grooves and no rapid
 enters standing stock; 1 when it gouges or collides (each finding one line
 ``PROGRAM:LINE: gouge: ...`` / ``collision: ...`` on stderr; plot still
 writes its picture); 2 for bad input, as expand (one line ``PROGRAM:LINE:
-message``, nothing written), a missing shapely or matplotlib included.
+message``, nothing written), a missing numpy or matplotlib included.
 """
 
 from __future__ import annotations
@@ -20,8 +20,8 @@ from .cli_options import add_settings_options, add_start_options, add_tool_table
 from .engine.dialects import DIALECTS
 from .engine.warnings import CycleWarning
 
-SHAPELY_MISSING = ("verify and plot need the Python package shapely (2.0 or newer): Debian/Ubuntu: "
-                   "apt install python3-shapely; elsewhere: python3 -m pip install shapely")
+NUMPY_MISSING = ("verify and plot need the Python package numpy: Debian/Ubuntu: apt install python3-numpy; "
+                 "elsewhere: python3 -m pip install numpy")
 MATPLOTLIB_MISSING = ("plot needs the Python package matplotlib: Debian/Ubuntu: apt install python3-matplotlib; "
                       "elsewhere: python3 -m pip install matplotlib")
 DESCRIPTION = """\
@@ -35,7 +35,7 @@ machining time. plot: draw that XZ section (-o FILE.svg or FILE.png).
 
 Exit status: 0 no gouge and no collision; 1 a gouge or collision (one line
 PROGRAM:LINE: gouge|collision: ... on stderr each; plot still draws); 2 bad
-input (one line PROGRAM:LINE: message), shapely or matplotlib missing too.
+input (one line PROGRAM:LINE: message), numpy or matplotlib missing too.
 The stock by default: a bar through the program's first approach point (see
 the README, "verify and plot"); --stock D[xL] gives it.
 """
@@ -92,8 +92,8 @@ def _check(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]):
         from .verify.program_check import StockSpec, check_program
         from .verify.program_record import record_program
     except ImportError as exc:
-        _missing(exc, ("shapely", "numpy"))
-        raise Failure(name, 0, SHAPELY_MISSING) from None
+        _missing(exc, ("numpy",))
+        raise Failure(name, 0, NUMPY_MISSING) from None
     tools = tool_table(args)
     name, text = read_text(args.program, "the program", MAX_PROGRAM_BYTES)
     check_line_lengths(text, name)

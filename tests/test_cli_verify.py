@@ -243,7 +243,16 @@ def test_stock_option(tmp_path):
     assert bad.returncode == 2 and b"DIAMETERxLENGTH" in bad.stderr
 
 
-@pytest.mark.parametrize("package, command", [("shapely", "verify"), ("matplotlib", "plot")])
+def test_verify_needs_no_shapely(tmp_path):
+    """The column model runs on numpy alone: with shapely not importable, verify gives the hand-derived figures."""
+    code = BLOCK_PACKAGE % "shapely"
+    args = ["verify", write(tmp_path, GROOVE.format(extra="")), *SHARP_3MM]
+    result = subprocess.run([sys.executable, "-c", code, *args], cwd=ROOT, capture_output=True, timeout=300)
+    assert result.returncode == 0, result.stderr.decode()
+    assert "removed 15.0000 mm^2" in result.stdout.decode() and result.stdout.decode().rstrip().endswith(": ok")
+
+
+@pytest.mark.parametrize("package, command", [("numpy", "verify"), ("matplotlib", "plot")])
 def test_missing_package_one_line(tmp_path, package, command):
     out = str(tmp_path / "x.svg")
     code = BLOCK_PACKAGE % package
@@ -291,9 +300,9 @@ def test_plain_arc_into_the_part_is_a_gouge(tmp_path):
 
 
 def test_matplotlib_and_shapely_are_imported_lazily():
-    """expand and emit never load shapely or matplotlib; verify loads shapely, not matplotlib."""
+    """expand and emit never load shapely or matplotlib; verify loads neither (the column model is numpy)."""
     code = ("import sys; from freecad_groove import cli; import freecad_groove.verify.program_check; "
-            "print('matplotlib' in sys.modules)")
-    assert subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True).stdout == b"False\n"
+            "print('matplotlib' in sys.modules, 'shapely' in sys.modules)")
+    assert subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True).stdout == b"False False\n"
     code = "import sys; from freecad_groove import cli; print('shapely' in sys.modules or 'matplotlib' in sys.modules)"
     assert subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True).stdout == b"False\n"

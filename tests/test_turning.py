@@ -2,16 +2,19 @@
 machining_time) on hand-made ops whose figures are known: a rectangular
 groove plunged twice into a bar, the same with one plunge 1 mm too deep, a
 rapid into the bar, and machining times worked out by hand or by numeric
-integration. Geometry (z, x), x the radius; positions (x, z)."""
+integration. Each check runs on both models: the column model (turning,
+turned_section: numpy only, what verify_job and verify run) and the shapely
+oracle (turning_shapely, section). Geometry (z, x), x the radius; positions
+(x, z)."""
 
 import math
 
 import pytest
 
 from freecad_groove.engine.moves import MINUS_X, GroovingTool, arc, dwell, feed, rapid
+from freecad_groove.verify import section, turned_section, turning, turning_shapely
 from freecad_groove.verify.machining_time import Feeds, clock_text, machining_time
-from freecad_groove.verify.section import bar_section, groove_region, part_to_leave, rings_section
-from freecad_groove.verify.turning import GrooveRun, OpInput, check_ops
+from freecad_groove.verify.turning import GrooveRun, OpInput
 
 TOOL = GroovingTool(3.0, 0.2)
 FILLET = 0.2**2 * (1 - math.pi / 4)  # material a 0.2 mm corner radius leaves in a sharp corner
@@ -29,13 +32,22 @@ def op(moves, label="Groove"):
     return OpInput(label, (21.0, 21.0), [run], FEEDS)
 
 
-def shaft():
+@pytest.fixture(params=["columns", "shapely"])
+def engine(request):
+    """(check_ops, the section module it takes its regions from) of one model."""
+    if request.param == "columns":
+        return turning.check_ops, turned_section
+    return turning_shapely.check_ops, section
+
+
+def shaft(sections):
     """The model: a shaft R20 from Z0 to Z50, as the full cut through the axis (both halves)."""
-    return rings_section([[(0, -20), (50, -20), (50, 20), (0, 20)]])
+    return sections.rings_section([[(0, -20), (50, -20), (50, 20), (0, 20)]])
 
 
-def test_rectangular_groove_removes_its_area_without_gouge():
-    result = check_ops([op(plunges())], bar_section(20.0, 0.0, 50.0), shaft())
+def test_rectangular_groove_removes_its_area_without_gouge(engine):
+    check_ops, sections = engine
+    result = check_ops([op(plunges())], sections.bar_section(20.0, 0.0, 50.0), shaft(sections))
     check = result.ops[0]
     assert check.ok, result.summary()
     assert check.removed == pytest.approx(8.0 - 2 * FILLET, abs=1e-4)
@@ -47,8 +59,9 @@ def test_rectangular_groove_removes_its_area_without_gouge():
     assert "no gouge" in result.summary()
 
 
-def test_plunge_too_deep_is_a_gouge_with_where():
-    check = check_ops([op(plunges(bottom2=17.0))], bar_section(20.0, 0.0, 50.0), shaft()).ops[0]
+def test_plunge_too_deep_is_a_gouge_with_where(engine):
+    check_ops, sections = engine
+    check = check_ops([op(plunges(bottom2=17.0))], sections.bar_section(20.0, 0.0, 50.0), shaft(sections)).ops[0]
     assert not check.ok
     assert check.gouge_depth == pytest.approx(1.0, abs=1e-3)
     x, z = check.gouge_at
@@ -56,37 +69,42 @@ def test_plunge_too_deep_is_a_gouge_with_where():
     assert "GOUGE" in check.summary() and "1.0000 mm deep" in check.summary()
 
 
-def test_a_shallow_plunge_leaves_reachable_material():
-    check = check_ops([op(plunges(bottom2=18.5))], bar_section(20.0, 0.0, 50.0), shaft()).ops[0]
+def test_a_shallow_plunge_leaves_reachable_material(engine):
+    check_ops, sections = engine
+    check = check_ops([op(plunges(bottom2=18.5))], sections.bar_section(20.0, 0.0, 50.0), shaft(sections)).ops[0]
     assert check.leftover == pytest.approx(0.5 * 1.0, abs=0.05)  # Z24..25 (plunge 1 reaches Z24), 0.5 deep
     assert "LEFTOVER" in check.summary()
 
 
-def test_rapid_into_the_bar_is_reported_with_its_path_command():
+def test_rapid_into_the_bar_is_reported_with_its_path_command(engine):
+    check_ops, sections = engine
     moves = [rapid(21, 21), rapid(19, 30)] + plunges()
-    check = check_ops([op(moves)], bar_section(20.0, 0.0, 50.0), shaft()).ops[0]
+    check = check_ops([op(moves)], sections.bar_section(20.0, 0.0, 50.0), shaft(sections)).ops[0]
     assert [hit.command for hit in check.rapid_hits] == [2, 3]  # into the bar at X19 Z30, and out again
     assert "RAPID THROUGH STOCK" in check.summary()
 
 
-def test_a_groove_the_model_shows_is_judged_against_the_model():
+def test_a_groove_the_model_shows_is_judged_against_the_model(engine):
     """The modelled groove (the shaft with the notch Z21..25 R18) is no part to leave; the same groove
     programmed 1 mm deeper cuts into the modelled part: a gouge."""
+    check_ops, sections = engine
     notch = [(0, -20), (50, -20), (50, 20), (25, 20), (25, 18), (21, 18), (21, 20), (0, 20)]
-    model = rings_section([notch])
+    model = sections.rings_section([notch])
     deeper = [(20.0, 25.0), (17.0, 25.0), (17.0, 21.0), (20.0, 21.0)]
-    part = part_to_leave(model, [groove_region(deeper)])
+    part = sections.part_to_leave(model, [sections.groove_region(deeper)])
     assert part.area == pytest.approx(model.area)
     moves = [rapid(21, 21), feed(17, 21), rapid(21, 21), rapid(21, 22), feed(17, 22), rapid(21, 22)]
     run = GrooveRun(moves, list(range(1, 7)), TOOL, MINUS_X, deeper)
-    check = check_ops([OpInput("Deeper", (21.0, 21.0), [run], FEEDS)], bar_section(20.0, 0.0, 50.0), model).ops[0]
+    check = check_ops([OpInput("Deeper", (21.0, 21.0), [run], FEEDS)], sections.bar_section(20.0, 0.0, 50.0),
+                      model).ops[0]
     assert check.gouge_depth == pytest.approx(1.0, abs=1e-3) and check.gouge_at[0] < 18.0
-    plain = part_to_leave(shaft(), [groove_region(GROOVE)])
+    plain = sections.part_to_leave(shaft(sections), [sections.groove_region(GROOVE)])
     assert plain.area == pytest.approx(50 * 20 - 8.0)
 
 
-def test_rings_section_takes_holes_and_the_positive_half():
-    tube = rings_section([[(0, -20), (50, -20), (50, 20), (0, 20)], [(10, -5), (45, -5), (45, 5), (10, 5)]])
+@pytest.mark.parametrize("sections", [turned_section, section])
+def test_rings_section_takes_holes_and_the_positive_half(sections):
+    tube = sections.rings_section([[(0, -20), (50, -20), (50, 20), (0, 20)], [(10, -5), (45, -5), (45, 5), (10, 5)]])
     assert tube.area == pytest.approx(50 * 20 - 35 * 5)
 
 

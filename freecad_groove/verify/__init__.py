@@ -1,10 +1,15 @@
 """The verification layer: material-removal simulation of expanded grooving
 moves and the verdict on the groove they cut. Today it is the tests' oracle.
 
-It imports the engine (``freecad_groove.engine.moves``) and shapely (>= 2.0)
-with numpy, never FreeCAD or Qt; the engine never imports it. FreeCAD does not
-bundle shapely: the tests, verify_job and the command line's verify and plot
-import this package (plot.py also matplotlib, imported by ``plot`` only).
+Two models of the material. The column model (``columns``, ``shapes``,
+``column_sweep``, ``column_reach``, ``column_figures``; ``turning``,
+``turned_section``, ``program_check``) needs numpy only: verify_job (FreeCAD
+ships numpy, not shapely) and the command line's verify and plot run it. The
+shapely model (everything else; ``turning_shapely``, ``section``,
+``program_check_shapely``) is the tests' oracle and second opinion. Both
+import the engine (``freecad_groove.engine.moves``), never FreeCAD or Qt; the
+engine never imports this package. plot.py imports matplotlib (``plot``
+only).
 
 Geometry lives in the lathe's half plane. A shapely point is ``(z, x)`` with
 ``x`` the *radius*, so a plot reads like a lathe drawing: Z horizontal, X up.
@@ -34,13 +39,24 @@ line's ``program_record`` (a program's moves by line), ``program_check``
 (``verify``) and ``plot``.
 """
 
-from .blade import ARC_EXCESS, swept_area, tool_outline
-from .depth import DEPTH_PRECISION
-from .overlay import NOISE_AREA, QUAD_SEGS
-from .reach import FIT_SLACK, reachable_region, unreachable_region
-from .stock import bar, region
-from .sweep import RAPID_AREA_TOL, RAPID_SKIN, DwellMismatch, RapidCollision, SimulationResult, simulate
-from .verdict import Verdict, assert_clean, check_groove
+# The shapely oracle's names, imported when first asked for: the column model
+# (turning, program_check, plot) needs numpy only, and FreeCAD has no shapely.
+_LAZY = {
+    "ARC_EXCESS": "outline", "swept_area": "blade", "tool_outline": "blade", "DEPTH_PRECISION": "depth",
+    "NOISE_AREA": "overlay", "QUAD_SEGS": "overlay", "FIT_SLACK": "reach", "reachable_region": "reach",
+    "unreachable_region": "reach", "bar": "stock", "region": "stock", "RAPID_AREA_TOL": "sweep",
+    "RAPID_SKIN": "sweep", "DwellMismatch": "sweep", "RapidCollision": "sweep", "SimulationResult": "sweep",
+    "simulate": "sweep", "Verdict": "verdict", "assert_clean": "verdict", "check_groove": "verdict",
+}
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        import importlib
+
+        return getattr(importlib.import_module("." + _LAZY[name], __name__), name)
+    raise AttributeError("module %r has no attribute %r" % (__name__, name))
+
 
 __all__ = [
     "tool_outline",

@@ -16,7 +16,6 @@ import io
 from matplotlib.figure import Figure
 from matplotlib.patches import PathPatch
 from matplotlib.path import Path
-from shapely import Geometry
 
 from freecad_groove.engine.moves import DWELL, FEED, RAPID
 
@@ -27,7 +26,7 @@ FIGURE_INCHES = (10.0, 5.0)
 PNG_DPI = 150
 
 
-def _polygons(geometry: Geometry) -> list:
+def _polygons(geometry) -> list:
     if geometry.is_empty:
         return []
     if hasattr(geometry, "geoms"):
@@ -35,16 +34,22 @@ def _polygons(geometry: Geometry) -> list:
     return [geometry] if geometry.geom_type == "Polygon" else []
 
 
-def _patch(geometry: Geometry, **style) -> PathPatch | None:
-    """One patch of the polygons of ``geometry`` (z, x), holes kept."""
-    paths = [Path(list(ring.coords), closed=True) for polygon in _polygons(geometry)
-             for ring in [polygon.exterior, *polygon.interiors]]
+def _rings(geometry) -> list:
+    """The closed (z, x) outlines of a region: a Section (the column model) or a shapely geometry."""
+    if hasattr(geometry, "outlines"):
+        return [outline.tolist() for outline in geometry.outlines()]
+    return [list(ring.coords) for polygon in _polygons(geometry) for ring in [polygon.exterior, *polygon.interiors]]
+
+
+def _patch(geometry, **style) -> PathPatch | None:
+    """One patch of the outlines of ``geometry`` (z, x), holes kept."""
+    paths = [Path(ring, closed=True) for ring in _rings(geometry)]
     if not paths:
         return None
     return PathPatch(Path.make_compound_path(*paths), **style)
 
 
-def _add(ax, geometry: Geometry, label: str, **style) -> None:
+def _add(ax, geometry, label: str, **style) -> None:
     patch = _patch(geometry, label=label, **style)
     if patch is not None:
         ax.add_patch(patch)
@@ -66,11 +71,13 @@ def _moves(ax, result: ProgramCheck) -> None:
             position = end
 
 
-def _union(checks, attribute: str) -> Geometry:
-    from .overlay import EMPTY, union_all
-
-    parts = [getattr(check, attribute) for check in checks if not getattr(check, attribute).is_empty]
-    return union_all(parts) if parts else EMPTY
+def _add_each(ax, checks, attribute: str, label: str, **style) -> None:
+    """Each op's region ``attribute``, labelled once."""
+    for check in checks:
+        region = getattr(check, attribute)
+        if not region.is_empty:
+            _add(ax, region, label, **style)
+            label = None
 
 
 def draw(result: ProgramCheck, fmt: str) -> bytes:
@@ -81,9 +88,9 @@ def draw(result: ProgramCheck, fmt: str) -> bytes:
     _add(ax, job.stock, "stock", facecolor=STOCK, edgecolor="none")
     _add(ax, job.part, "part (stock less the declared grooves)", facecolor=PART, edgecolor="none")
     _add(ax, job.remaining, "left standing", facecolor="none", edgecolor="#404040", linewidth=0.6)
-    _add(ax, _union(job.ops, "gouge_region"), "gouge", facecolor=GOUGE, edgecolor=GOUGE)
-    _add(ax, _union(job.ops, "leftover_region"), "leftover (reachable)", facecolor=LEFTOVER, edgecolor=LEFTOVER)
-    _add(ax, _union(job.ops, "unreachable_region"), "unreachable", facecolor=UNREACHABLE, edgecolor=UNREACHABLE)
+    _add_each(ax, job.ops, "gouge_region", "gouge", facecolor=GOUGE, edgecolor=GOUGE)
+    _add_each(ax, job.ops, "leftover_region", "leftover (reachable)", facecolor=LEFTOVER, edgecolor=LEFTOVER)
+    _add_each(ax, job.ops, "unreachable_region", "unreachable", facecolor=UNREACHABLE, edgecolor=UNREACHABLE)
     _moves(ax, result)
     ax.set_aspect("equal")
     ax.autoscale_view()

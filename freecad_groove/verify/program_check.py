@@ -1,6 +1,8 @@
 """The command line's ``verify``: a whole program's moves (cycle expansions
 and plain G0/G1/G2/G3 blocks) swept over the stock and judged against the
-part the program declares, with turning.check_ops doing the bookkeeping.
+part the program declares, with turning.check_op doing the bookkeeping on
+the column model (numpy only; program_check_shapely.py does the same on
+shapely polygons, the tests' second oracle).
 
 * The part the program declares: the stock less the grooves its cycle calls
   declare (program_record.declared_grooves). A feed cutting anything else is a
@@ -31,23 +33,23 @@ import math
 from dataclasses import dataclass, field
 from typing import Optional
 
-from shapely import Geometry
-from shapely.geometry import MultiPolygon, Polygon, box
+import numpy as np
 
 from freecad_groove.engine.errors import ProgramError
-from freecad_groove.engine.moves import FEED, MINUS_X, MINUS_Z, PLUS_X, RAPID
+from freecad_groove.engine.moves import DWELL, FEED, MINUS_X, MINUS_Z, PLUS_X, RAPID
 from freecad_groove.engine.tool_table import blade_for
 
-from .blade import outline_at_origin, swept_area
+from . import columns as col
+from .column_figures import NOISE_AREA
+from .column_sweep import Material, swept_rows
 from .machining_time import Feeds, MachiningTime, feed_seconds, rapid_seconds
-from .overlay import NOISE_AREA, area, difference, intersection, union, union_all
 from .program_record import RecordingTranslator, SpeedState, Step, mm_blade
-from .section import bar_section, groove_region
-from .turning import DEFAULT_TOL, GrooveRun, JobCheck, OpCheck, OpInput, check_op
+from .shapes import Section, Shape, union_all
+from .turned_section import bar_section, groove_region
+from .turning import DEFAULT_TOL, GrooveRun, JobCheck, OpCheck, OpInput, PartModel, check_op, layout
 
 Point = tuple[float, float]
 CHUCK_MARGIN = 10.0  # mm of bar below the lowest Z the program reaches (the chuck end)
-WINDOW_MARGIN = 1.0  # mm around what a step's blade sweeps: the window its check works in
 
 
 @dataclass(frozen=True)
@@ -77,12 +79,23 @@ class ProgramCheck:
 # ---------------------------------------------------------------- the stock
 
 
+@dataclass(frozen=True)
+class StockBar:
+    """The bar a program is checked on: radius, bore radius, Z from low to high, and the note saying so."""
+
+    radius: float
+    bore: float
+    low: float
+    high: float
+    note: str
+
+
 def _rings(steps: list[Step], plunge: str) -> list[list[Point]]:
     return [ring for step in steps if step.plunge == plunge for ring in step.grooves]
 
 
-def default_stock(steps: list[Step], approach: Optional[Point], spec: Optional[StockSpec]) -> tuple[Geometry, str]:
-    """The stock (shapely (z, x)) and how it was derived (see the module)."""
+def stock_bar(steps: list[Step], approach: Optional[Point], spec: Optional[StockSpec]) -> StockBar:
+    """The bar the program is checked on (see the module)."""
     if approach is None:
         raise ProgramError("no approach point (a G0 to a known X and Z) to derive the stock from: give --stock", 0)
     points = [(m.x, m.z) for step in steps for m in step.moves] + [p for s in steps for r in s.grooves for p in r]
@@ -104,24 +117,21 @@ def default_stock(steps: list[Step], approach: Optional[Point], spec: Optional[S
         radius, how = spec.diameter / 2.0, "as given (--stock)"
         if spec.length is not None:
             low = high - spec.length
-    stock = difference(bar_section(radius, low, high), bar_section(bore, low, high)) if bore > 0 else \
-        bar_section(radius, low, high)
-    air = [groove_region(ring) for step in steps for ring in step.air]
-    if air:
-        stock = difference(stock, union_all(air))
     note = "stock: bar D%.3f%s from Z%.3f to Z%.3f (diameter %s)" % (
         2 * radius, " bore D%.3f" % (2 * bore) if bore > 0 else "", low, high, how)
-    return stock, note
+    return StockBar(radius, bore, low, high, note)
 
 
-def held_by_chuck(chuck_z: float):
-    """The standing stock still connected to the chuck end ``chuck_z`` (pieces cut free fall away)."""
-    def attached(standing: Geometry) -> Geometry:
-        if not isinstance(standing, MultiPolygon):
-            return standing
-        held = [piece for piece in standing.geoms if piece.bounds[0] <= chuck_z + 1e-6]
-        return union_all(held) if held else Polygon()
-    return attached
+def default_stock(steps: list[Step], approach: Optional[Point], spec: Optional[StockSpec]) -> tuple[Shape, str]:
+    """The stock and how it was derived (see the module)."""
+    bar = stock_bar(steps, approach, spec)
+    stock = bar_section(bar.radius, bar.low, bar.high)
+    if bar.bore > 0:
+        stock = stock - bar_section(bar.bore, bar.low, bar.high)
+    air = [groove_region(ring) for step in steps for ring in step.air]
+    if air:
+        stock = stock - union_all(air)
+    return stock, bar.note
 
 
 # ---------------------------------------------------------------- steps to ops
@@ -176,15 +186,24 @@ def step_time(step: Step, rapid_rate: float) -> MachiningTime:
 
 def _gouge_line(step: Step, check: OpCheck) -> int:
     """The line of the first feed of the step that cuts into the gouge."""
-    position = step.start
+    region = check.gouge_region
+    lo, hi = col.pack(len(region.grid), region.rows)
+    position, starts, ends, lines = step.start, [], [], []
     for move, line in zip(step.moves, step.lines):
         end = (move.x, move.z)
-        if move.kind == FEED and area(intersection(swept_area(step.blade, step.plunge, position, end),
-                                                   check.gouge_region)) > NOISE_AREA:
-            return line
-        if move.kind != "G4":
+        if move.kind == FEED:
+            starts.append((position[1], position[0]))
+            ends.append((end[1], end[0]))
+            lines.append(line)
+        if move.kind != DWELL:
             position = end
-    return step.line
+    if not lines:
+        return step.line
+    rows, which = swept_rows(region.grid.centres, step.blade, step.plunge, np.array(starts), np.array(ends))
+    cols, a, b = rows
+    overlap = np.clip(np.minimum(b[:, None], hi[cols]) - np.maximum(a[:, None], lo[cols]), 0.0, None).sum(axis=1)
+    meets = which[overlap * region.grid.widths[cols] > NOISE_AREA]
+    return lines[int(meets.min())] if len(meets) else step.line
 
 
 def _what(step: Step) -> str:
@@ -195,11 +214,11 @@ def _what(step: Step) -> str:
     return "the moves of line %d" % first if first == last else "the moves of lines %d-%d" % (first, last)
 
 
-def _findings(steps: list[Step], checks: list[OpCheck]) -> list[tuple[int, str]]:
+def findings(steps: list[Step], checks: list[OpCheck], gouge_line=_gouge_line) -> list[tuple[int, str]]:
     found = []
     for step, check in zip(steps, checks):
         if check.gouge_depth:
-            found.append((_gouge_line(step, check),
+            found.append((gouge_line(step, check),
                           "gouge: %s cut %.4f mm^2 of the part outside the declared grooves, %.4f mm deep at "
                           "X%.3f Z%.3f (X a diameter)" % (_what(step), check.gouge_area, check.gouge_depth,
                                                           2 * check.gouge_at[0], check.gouge_at[1])))
@@ -211,44 +230,6 @@ def _findings(steps: list[Step], checks: list[OpCheck]) -> list[tuple[int, str]]
     return sorted(found)
 
 
-def _window(step: Step) -> Geometry:
-    """A box (z, x) holding everything the step's blade sweeps and its grooves (WINDOW_MARGIN more)."""
-    base = outline_at_origin(step.blade, step.plunge)
-    points = [step.start] + [(m.x, m.z) for m in step.moves] + [p for ring in step.grooves for p in ring]
-    xs, zs = [x for x, _z in points], [z for _x, z in points]
-    return box(min(zs) + base[:, 0].min() - WINDOW_MARGIN, min(xs) + base[:, 1].min() - WINDOW_MARGIN,
-               max(zs) + base[:, 0].max() + WINDOW_MARGIN, max(xs) + base[:, 1].max() + WINDOW_MARGIN)
-
-
-def _held_in_window(rest: Geometry, window: Geometry, held):
-    """``held`` for the stock inside ``window``, the stock outside it being ``rest``:
-    a connected piece inside is held (the pieces that fell are gone already)."""
-    def attached(local: Geometry) -> Geometry:
-        if not isinstance(local, MultiPolygon):
-            return local
-        return intersection(held(union(rest, local)), window)
-    return attached
-
-
-def _sweep_steps(steps: list[Step], stock: Geometry, part: Geometry, tol: float) -> tuple[list[OpCheck], Geometry]:
-    """turning.check_op on each step in turn, inside the step's window (so
-    that a step's work does not grow with the grooves already cut); pieces
-    cut free of the chuck end are dropped after each step."""
-    held = held_by_chuck(stock.bounds[0])
-    standing, checks = stock, []
-    for step in steps:
-        window = _window(step)
-        local, rest = intersection(standing, window), difference(standing, window)
-        # the part around the window by as much again: a gouge's depth is measured to its true surface
-        zmin, xmin, zmax, xmax = window.bounds
-        grow = (zmax - zmin) + (xmax - xmin)
-        near = intersection(part, box(zmin - grow, xmin - grow, zmax + grow, xmax + grow))
-        check, after = check_op(_op(step), local, near, tol, _held_in_window(rest, window, held))
-        standing = held(union(rest, after))
-        checks.append(check)
-    return checks, standing
-
-
 def check_program(name: str, record: RecordingTranslator, stock_spec: Optional[StockSpec] = None,
                   rapid_rate: float = 0.0, tol: float = DEFAULT_TOL) -> ProgramCheck:
     """Sweep the recorded program over its stock and judge it (see the module)."""
@@ -257,12 +238,17 @@ def check_program(name: str, record: RecordingTranslator, stock_spec: Optional[S
         raise ProgramError("the program makes no moves: nothing to verify", 0)
     _fill_blades(steps, record.tools, record.settings.tool)
     stock, note = default_stock(steps, record.first_approach, stock_spec)
-    grooves = union_all([groove_region(ring) for step in steps for ring in step.grooves] or [Polygon()])
-    part = difference(stock, grooves)
-    checks, remaining = _sweep_steps(steps, stock, part, tol)
-    result = ProgramCheck(name, JobCheck(stock, part, remaining, checks, [note]), steps, note,
-                          [step_time(step, rapid_rate) for step in steps])
-    result.findings = _findings(steps, checks)
+    part = stock - union_all([groove_region(ring) for step in steps for ring in step.grooves])
+    ops = [_op(step) for step in steps]
+    grid, step_width = layout([stock, part], ops)
+    material = Material(grid, stock, falls=True)
+    part_model = PartModel(grid, part)
+    checks = [check_op(op, material, part_model, tol, step_width) for op in ops]
+    whole = (0, len(grid))
+    job = JobCheck(Section(grid, stock.rows(grid.centres)), Section(grid, part_model.rows(*whole)),
+                   Section(grid, material.rows(*whole)), checks, [note])
+    result = ProgramCheck(name, job, steps, note, [step_time(step, rapid_rate) for step in steps])
+    result.findings = findings(steps, checks)
     return result
 
 
@@ -282,7 +268,7 @@ def report(result: ProgramCheck) -> str:
     job = result.job
     lines = ["%s: %s" % (result.name, result.stock_note),
              "%s: stock %.4f mm^2, part %.4f mm^2 (half section, X the radius)"
-             % (result.name, area(job.stock), area(job.part))]
+             % (result.name, job.stock.area, job.part.area)]
     lines += [_step_line(result.name, step, check, time)
               for step, check, time in zip(result.steps, job.ops, result.times)]
     total = MachiningTime(*(sum(getattr(t, key) for t in result.times) for key in ("feed", "dwell", "rapid")),

@@ -29,8 +29,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from typing import Optional
 
-from shapely.geometry import box
-
 from freecad_groove.engine.cycles.cycle93 import Cycle93
 from freecad_groove.engine.cycles.pecking import PeckingCycle
 from freecad_groove.engine.errors import ProgramError
@@ -41,8 +39,7 @@ from freecad_groove.engine.translator import Translator, program_lines
 
 from . import arcs
 from .arcs import SWEEP_TOL, radius_centre, straightened
-from .blade import swept_area
-from .overlay import intersection
+from .outline import clip_to_box, swept_hull
 
 Point = tuple[float, float]  # (x, z), x the radius
 
@@ -247,13 +244,15 @@ def _units(state) -> float:
 def _plunge_groove(axis: str, plunge: str, blade: GroovingTool, p0: float, bottom: float, s: float) -> list[Point]:
     """The blade's outline swept from p0 to bottom at s, cut off at p0 (the groove's opening)."""
     a, b = ((p0, s), (bottom, s)) if axis == "X" else ((s, p0), (s, bottom))
-    hull = swept_area(blade, plunge, a, b)
-    zmin, xmin, zmax, xmax = hull.bounds
+    hull = swept_hull(blade, plunge, a, b)
+    zmin, xmin = hull.min(axis=0)
+    zmax, xmax = hull.max(axis=0)
     if plunge in (MINUS_X, PLUS_X):
-        window = box(zmin, min(p0, bottom), zmax, max(p0, bottom))
+        window = (zmin, min(p0, bottom), zmax, max(p0, bottom))
     else:
-        window = box(min(p0, bottom), xmin, max(p0, bottom), xmax)
-    ring = intersection(hull, window).exterior.coords
+        window = (min(p0, bottom), xmin, max(p0, bottom), xmax)
+    ring = clip_to_box(hull, *window).tolist()
+    ring.append(ring[0])
     return [(x, z) for z, x in ring]
 
 

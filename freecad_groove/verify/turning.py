@@ -1,45 +1,69 @@
 """The turning check: a Job's grooving ops swept, in order, over the turned
 section of its stock, and the figures per op (no FreeCAD: the FreeCAD layer,
-freecad/turning_check.py, reads the Job into OpInput and JobInput).
+ops/turning_check/check.py, reads the Job into OpInput; no shapely: the
+column model, numpy only; turning_shapely.py computes the same on shapely
+polygons, the tests' second oracle).
 
 Per op:
 
 * removed      stock standing before the op less stock standing after (mm^2
                of the half section);
 * gouge        removed material inside the part the ops must leave
-               (section.part_to_leave) deeper than ``tol`` below its surface:
-               its area, its depth and the deepest point;
+               (turned_section.part_to_leave) deeper than ``tol`` below its
+               surface: its area, its depth and the deepest point;
 * leftover     material of the op's planned grooves still standing that the
                blade could reach (farther than ``tol`` from the unreachable
                part);
 * unreachable  material of the planned grooves no placement of the blade
                reaches (the corner fillets and whatever is narrower than the
                blade), beside the area the engine's reach warnings report;
-* rapids       rapids whose swept blade meets standing stock (sweep.simulate);
+* rapids       rapids whose swept blade meets standing stock;
 * time         machining_time from the op's feeds and speeds.
 
-Geometry is shapely (z, x), x the radius; positions are (x, z).
+The material lives on one column grid (columns.py) laid out before the
+sweep: an edge at every vertex of the sections and grooves and at the
+blade's sides at every move's end, columns STEP wide where a blade works.
+Each op works on the columns of its own window: the check is linear in the
+moves. Regions (``Section``) are (z, x), x the radius; positions are (x, z).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Optional
+from typing import Any, Optional
 
-from shapely import Geometry
+import numpy as np
 
-from freecad_groove.engine.moves import GroovingTool, Move
+from freecad_groove.engine.moves import ARCS, DWELL, MINUS_X, PLUS_X, GroovingTool, Move
 
-from .depth import depth_inside
+from . import columns as col
+from .column_figures import NOISE_AREA, hinted, measure_gouge, thicker_than
+from .column_reach import unreachable_across, unreachable_along
+from .column_sweep import FeedPath, Material, sweep
+from .columns import DIFFERENCE, INTERSECTION, UNION, Flat, Grid
 from .machining_time import Feeds, MachiningTime, machining_time
-from .overlay import EMPTY, NOISE_AREA, QUAD_SEGS, area, difference, intersection, union, union_all
-from .reach import reachable_region
-from .section import groove_region, part_to_leave
-from .sweep import simulate
+from .outline import outline_at_origin
+from .shapes import EMPTY_SECTION, Edges, Section, Shape, box, corners
+from .turned_section import groove_region, part_to_leave
 
 Point = tuple[float, float]
+Region = Any  # a Section (the column model) or a shapely geometry (turning_shapely)
 DEFAULT_TOL = 0.001  # mm: gouges and leftovers thinner than this are not reported
+WINDOW_MARGIN = 1.0  # mm around what an op's blade sweeps: the columns its check works on
+COARSE = 1.0  # mm: the columns where no blade works
+STEP = 0.05  # mm: the widest column where a blade works (straight edges are exact whatever the width)
+GRADING = 12  # columns ever narrower toward a groove's wall, over a corner radius, on each side
+
+
+def _area(region: Region) -> float:
+    return 0.0 if region.is_empty else region.area
+
+
+def step_for(tools: Sequence[GroovingTool]) -> float:
+    """The column width where a blade works: STEP, narrower for a small corner radius (an eighth of it)."""
+    radii = [float(t.corner_radius) for t in tools if float(t.corner_radius) > 0]
+    return max(0.002, min([STEP] + [r / 8 for r in radii]))
 
 
 @dataclass(frozen=True)
@@ -106,10 +130,10 @@ class OpCheck:
     reach_warning: float = 0.0
     rapid_hits: list[RapidHit] = field(default_factory=list)
     time: Optional[MachiningTime] = None
-    removed_region: Geometry = EMPTY
-    gouge_region: Geometry = EMPTY
-    leftover_region: Geometry = EMPTY
-    unreachable_region: Geometry = EMPTY
+    removed_region: Region = EMPTY_SECTION
+    gouge_region: Region = EMPTY_SECTION
+    leftover_region: Region = EMPTY_SECTION
+    unreachable_region: Region = EMPTY_SECTION
 
     @property
     def ok(self) -> bool:
@@ -139,9 +163,9 @@ class OpCheck:
 class JobCheck:
     """The whole check: the sections (stock before, part to leave, stock after) and each op's figures."""
 
-    stock: Geometry
-    part: Geometry
-    remaining: Geometry
+    stock: Region
+    part: Region
+    remaining: Region
     ops: list[OpCheck]
     notes: list[str] = field(default_factory=list)  # where the sections came from, ops not checked
 
@@ -151,97 +175,180 @@ class JobCheck:
 
     def summary(self) -> str:
         head = "Turning check: stock %.4f mm^2, part %.4f mm^2, %d op(s): %s" % (
-            area(self.stock), area(self.part), len(self.ops), "ok" if self.ok else "PROBLEMS")
+            _area(self.stock), _area(self.part), len(self.ops), "ok" if self.ok else "PROBLEMS")
         return "\n".join([head] + ["  " + note for note in self.notes] + [op.summary() for op in self.ops])
 
     __str__ = summary
 
 
-def _deepest(core: Geometry, part: Geometry, depth: float, tol: float) -> Point:
-    """(x, z) of a point of ``core`` about ``depth`` inside ``part``."""
-    deep = intersection(core, part.buffer(-max(depth - 2 * tol, tol), quad_segs=QUAD_SEGS))
-    point = (deep if area(deep) > NOISE_AREA else core).representative_point()
-    return (point.y, point.x)
+# ---------------------------------------------------------------- the column model's check
 
 
-def _gouge(check: OpCheck, removed: Geometry, part: Geometry, tol: float) -> None:
-    cut = intersection(removed, part)
-    if area(cut) <= NOISE_AREA:
-        return
-    depth, core = depth_inside(cut, part, tol)
-    if core.is_empty:
-        return
-    check.gouge_area, check.gouge_depth, check.gouge_region = area(core), depth, core
-    check.gouge_at = _deepest(core, part, depth, tol)
+class PartModel:
+    """The part the ops must leave on the material's grid, and its edges (for depths)."""
+
+    def __init__(self, grid: Grid, shape: Shape) -> None:
+        self.shape = shape
+        self.lo, self.hi = col.pack(len(grid), shape.rows(grid.centres))
+        self.edges = Edges(shape)
+
+    def rows(self, i0: int, i1: int) -> Flat:
+        return col.flat(self.lo[i0:i1], self.hi[i0:i1])
 
 
-def _groove_figures(check: OpCheck, op: OpInput, part: Geometry, before: Geometry, after: Geometry,
-                    tol: float) -> None:
-    """Unreachable and leftover material of the op's planned grooves."""
-    unreachable, leftover = [], []
+def _arc_reach(move: Move) -> float:
+    """How far (Z) an arc may bulge beyond its end."""
+    if move.centre is not None:
+        return abs(float(move.z) - float(move.centre[1])) + abs(float(move.x) - float(move.centre[0]))
+    return 2.0 * abs(float(move.radius or 0.0))
+
+
+def op_range(op: OpInput) -> tuple[float, float]:
+    """The Z range an op's blades and grooves reach (WINDOW_MARGIN more)."""
+    lo = hi = float(op.start[1])
     for run in op.grooves:
-        target = intersection(groove_region(run.region), before)
-        if area(target) <= NOISE_AREA:
+        base = outline_at_origin(run.tool, run.plunge)
+        zs = [float(m.z) for m in run.moves] + [float(z) for _x, z in run.region]
+        bulge = max([_arc_reach(m) for m in run.moves if m.kind in ARCS] or [0.0])
+        if zs:
+            lo = min(lo, min(zs) - bulge + float(base[:, 0].min()))
+            hi = max(hi, max(zs) + bulge + float(base[:, 0].max()))
+    return lo - WINDOW_MARGIN, hi + WINDOW_MARGIN
+
+
+def _wall_ends(moves: Sequence[Move], start: Point) -> np.ndarray:
+    """The Z of the move ends where the blade's sides may stand as walls: the
+    ends of moves along an axis and where the path turns back along Z (not
+    the ends of an arc's chords: the blade's corner arcs bound what they cut)."""
+    points = [(float(start[0]), float(start[1]))] + [
+        (float(start[0]) if m.x is None else float(m.x), float(m.z)) for m in moves if m.kind != DWELL]
+    xz = np.array(points)
+    if len(xz) < 2:
+        return xz[:, 1]
+    d = np.diff(xz, axis=0)
+    straight = (np.abs(d[:, 0]) < 1e-9) | (np.abs(d[:, 1]) < 1e-9)
+    turn = np.zeros(len(d), dtype=bool)
+    turn[:-1] = d[:-1, 1] * d[1:, 1] <= 0
+    keep = straight | turn
+    return np.concatenate([xz[:1, 1], xz[1:, 1][keep], xz[:-1, 1][straight]])
+
+
+def _walls(region: Sequence[Point]) -> np.ndarray:
+    """The Z of a groove's walls across Z (edges of constant Z): where its fillets meet them."""
+    zs = [float(z) for _x, z in region]
+    return np.unique([a for a, b in zip(zs, zs[1:] + zs[:1]) if abs(a - b) < 1e-9])
+
+
+def layout(shapes: Sequence[Shape], ops: Sequence[OpInput]) -> tuple[Grid, float]:
+    """The column grid of a check (see the module) and its step."""
+    runs = [run for op in ops if not op.error for run in op.grooves]
+    step = step_for([run.tool for run in runs])
+    breaks = [corners(s)[:, 0] for s in shapes]
+    for op in ops:
+        if op.error:
             continue
-        # The grooving cycle assumes the part turned to its contour: air above the groove.
-        reach = reachable_region(target, union(part, target), run.tool, run.plunge, tol)
-        missed = difference(target, reach)
-        left = intersection(target, after)
-        if not missed.is_empty:
-            left = difference(left, missed.buffer(tol, quad_segs=QUAD_SEGS))
-        if area(left) > NOISE_AREA and not depth_inside(left, after, tol)[1].is_empty:
-            leftover.append(left)
-        unreachable.append(missed)
-        check.reach_warning += run.reach_warning
-    check.unreachable_region = union_all(unreachable) if unreachable else EMPTY
-    check.leftover_region = union_all(leftover) if leftover else EMPTY
-    check.unreachable, check.leftover = area(check.unreachable_region), area(check.leftover_region)
+        position = op.start
+        for run in op.grooves:
+            base = outline_at_origin(run.tool, run.plunge)
+            ends = _wall_ends(run.moves, position)
+            breaks += [ends + base[:, 0].min(), ends + base[:, 0].max()]
+            moves = [m for m in run.moves if m.kind != DWELL]
+            position = (moves[-1].x, moves[-1].z) if moves else position
+        groove = corners(groove_region(run.region))[:, 0]
+        breaks += [groove, col.graded(_walls(run.region), float(run.tool.corner_radius), GRADING)]
+    fine = [op_range(op) for op in ops if not op.error and op.grooves]
+    return col.make_grid(np.concatenate(breaks), fine, step, COARSE), step
 
 
-Attached = Optional[Callable[[Geometry], Geometry]]  # the standing stock still held (sweep.simulate)
+def _gouge(check: OpCheck, removed: Flat, before: Flat, feeds: list[FeedPath], part: PartModel, window: Grid,
+           span: tuple[int, int], tol: float) -> None:
+    cut = col.combine(removed, part.rows(*span), INTERSECTION)
+    if col.area(cut, window.widths) <= NOISE_AREA:
+        return
+    cut = hinted(cut, window, part.edges, tol)
+    if not len(cut[0]):
+        return
+    gouge = measure_gouge(cut, before, feeds, part.shape, part.edges, window, tol)
+    if gouge is not None:
+        check.gouge_area, check.gouge_depth, check.gouge_at = gouge.area, gouge.depth, gouge.at
+        check.gouge_region = Section(window, gouge.rows)
 
 
-def _sweep(op: OpInput, stock: Geometry, attached: Attached = None) -> tuple[Geometry, list[RapidHit]]:
-    """The stock left after the op's moves, groove by groove, and its rapids through stock."""
-    position, hits = op.start, []
+def _missed(run: GrooveRun, groove: Shape, target: Flat, part: PartModel, window: Grid, span: tuple[int, int],
+            step: float) -> Flat:
+    """The target of ``run`` (rows on the window) that no placement of its blade reaches."""
+    if run.plunge in (MINUS_X, PLUS_X):
+        solid = col.combine(part.rows(*span), target, DIFFERENCE)
+        return unreachable_across(window, target, solid, run.tool, run.plunge)
+    zmin, xmin, zmax, xmax = groove.bounds
+    reach = float(run.tool.width) + float(run.tool.length) + 1.0
+    local = part.shape & box(zmin - reach, xmin - reach, zmax + reach, xmax + reach)
+    missed = unreachable_along(window, groove, local, run.tool, run.plunge, step)
+    return col.combine(missed, target, INTERSECTION)
+
+
+def _groove_figures(check: OpCheck, op: OpInput, part: PartModel, window: Grid, span: tuple[int, int],
+                    before: Flat, after: Flat, tol: float, step: float) -> None:
+    """Unreachable and leftover material of the op's planned grooves."""
+    unreachable, leftover = col.empty_flat(), col.empty_flat()
+    widths = window.widths
     for run in op.grooves:
-        result = simulate(run.moves, run.tool, run.plunge, position, stock, attached=attached)
-        for collision in result.rapid_collisions:
-            point = collision.region.representative_point()
-            hits.append(RapidHit(run.commands[collision.index], collision.start, (collision.move.x, collision.move.z),
-                                 collision.area, (point.y, point.x)))
-        stock, position = result.remaining, result.final
-    return stock, hits
+        groove = groove_region(run.region)
+        target = col.combine(groove.rows(window.centres), before, INTERSECTION)
+        if col.area(target, widths) <= NOISE_AREA:
+            continue
+        missed = _missed(run, groove, target, part, window, span, step)
+        left = col.combine(target, after, INTERSECTION)
+        if len(missed[0]):
+            left = col.combine(left, col.grown(missed, tol), DIFFERENCE)
+        if col.area(left, widths) > NOISE_AREA and thicker_than(left, after, window, tol):
+            leftover = col.combine(leftover, left, UNION)
+        unreachable = col.combine(unreachable, missed, UNION)
+        check.reach_warning += run.reach_warning
+    check.unreachable_region, check.leftover_region = Section(window, unreachable), Section(window, leftover)
+    check.unreachable, check.leftover = col.area(unreachable, widths), col.area(leftover, widths)
 
 
-def check_op(op: OpInput, stock: Geometry, part: Geometry, tol: float = DEFAULT_TOL,
-             attached: Attached = None) -> tuple[OpCheck, Geometry]:
-    """One op's figures over ``stock`` (the stock standing when it starts),
-    and the stock it leaves; ``attached``: see sweep.simulate."""
+def check_op(op: OpInput, material: Material, part: PartModel, tol: float = DEFAULT_TOL,
+             step: float = 0.02) -> OpCheck:
+    """One op's figures over ``material`` (the stock standing when it starts; updated)."""
     check = OpCheck(op.label, op.error)
     if op.error:
-        return check, stock
-    after, check.rapid_hits = _sweep(op, stock, attached)
-    check.removed_region = difference(stock, after)
-    check.removed = area(check.removed_region)
-    _gouge(check, check.removed_region, part, tol)
-    _groove_figures(check, op, part, stock, after, tol)
+        return check
+    grid = material.grid
+    span = grid.span(*op_range(op))
+    window = grid.part(*span)
+    before = material.rows(*span)
+    position, feeds = op.start, []
+    for run in op.grooves:
+        hits, position, run_feeds = sweep(material, run.moves, run.tool, run.plunge, position, span)
+        check.rapid_hits += [RapidHit(run.commands[h.index], h.start, h.end, h.area, h.at) for h in hits]
+        feeds.append(run_feeds)
+    after = material.rows(*span)
+    removed = col.combine(before, after, DIFFERENCE)
+    check.removed_region, check.removed = Section(window, removed), col.area(removed, window.widths)
+    _gouge(check, removed, before, feeds, part, window, span, tol)
+    _groove_figures(check, op, part, window, span, before, after, tol, step)
+    material.drop_after(*span)
     if op.feeds is not None:
         moves = [move for run in op.grooves for move in run.moves]
         check.time = machining_time(op.start, moves, op.feeds)
-    return check, after
+    return check
 
 
-def check_ops(ops: list[OpInput], stock: Geometry, model: Geometry, tol: float = DEFAULT_TOL,
-              notes: Optional[list[str]] = None, attached: Attached = None) -> JobCheck:
+def check_ops(ops: list[OpInput], stock: Shape, model: Shape, tol: float = DEFAULT_TOL,
+              notes: Optional[list[str]] = None, falls: bool = False) -> JobCheck:
     """Sweep ``ops`` in order over ``stock`` (each op starts from what the
     previous ones left) and judge them against ``model``, the part's section;
-    ``attached``: see sweep.simulate. Only grooves ``programmed`` on plain faces join the part's design
+    ``falls``: a piece cut free of the chuck end (the lowest Z) falls away.
+    Only grooves ``programmed`` on plain faces join the part's design
     (part_to_leave): no op's own planned groove excuses what it cuts into the model elsewhere."""
     grooves = [groove_region(run.region) for op in ops if not op.error for run in op.grooves if run.programmed]
     part = part_to_leave(model, grooves)
-    checks, standing = [], stock
-    for op in ops:
-        check, standing = check_op(op, standing, part, tol, attached)
-        checks.append(check)
-    return JobCheck(stock, part, standing, checks, list(notes or []))
+    grid, step = layout([stock, part], ops)
+    material = Material(grid, stock, falls)
+    part_model = PartModel(grid, part)
+    checks = [check_op(op, material, part_model, tol, step) for op in ops]
+    remaining = Section(grid, material.rows(0, len(grid)))
+    return JobCheck(Section(grid, stock.rows(grid.centres)), Section(grid, part_model.rows(0, len(grid))), remaining,
+                    checks, list(notes or []))

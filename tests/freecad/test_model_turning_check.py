@@ -15,7 +15,6 @@ import FreeCAD
 import pytest
 from model_parts import CASES, part_shape
 from parts import make_shop
-from pylib import require_shapely
 from test_model_grooves import groove_faces
 
 from freecad_groove import make_groove, verify_job
@@ -29,7 +28,6 @@ GROOVE_Z = (CALL.axsa - CALL.widg, CALL.axsa)  # 26..30
 
 @pytest.fixture
 def shop():
-    require_shapely()
     doc = FreeCAD.newDocument("ModelTurningCheck")
     FreeCAD.setActiveDocument(doc.Name)
     yield make_shop(doc, shape=part_shape(CALL))

@@ -4,8 +4,8 @@ The stepped shaft of parts.py (R20 at Z10..30) in a Job whose stock is a bar
 of its largest radius, R20 from Z0 to Z60, so that a groove in the R20
 cylinder removes exactly the groove: 4 wide and 2 deep (8 mm^2 of the half
 section) less what the blade's 0.2 mm corner radius cannot reach in its two
-sharp base corners, 0.2^2 (1 - pi/4) each. shapely comes from the host
-(tests/freecad_shapely.py, FREECAD_GROOVE_PYLIB) when FreeCAD lacks it.
+sharp base corners, 0.2^2 (1 - pi/4) each. The check runs on numpy alone (FreeCAD
+has no shapely): one test runs it with shapely blocked.
 """
 
 import math
@@ -16,18 +16,12 @@ import Path
 import Path.Main.Stock as PathStock
 import pytest
 from parts import face_name, make_shop
-from pylib import require_shapely
 
 from freecad_groove import make_groove, verify_job
-from freecad_groove.ops.turning_check.check import SHAPELY_MISSING, TurningCheckError
+from freecad_groove.ops.turning_check.check import TurningCheckError
 
 FILLET = 0.2**2 * (1 - math.pi / 4)
 GROOVE = dict(width=4, depth=2, infeed=1, tool_width=3, tool_corner_radius=0.2)
-
-
-@pytest.fixture
-def shapely():
-    return require_shapely()
 
 
 @pytest.fixture
@@ -50,7 +44,7 @@ def cylinder_groove(shop, **values):
     return make_groove(job, (shaft, face_name(shaft.Shape, "cylinder")), **values)
 
 
-def test_a_groove_removes_its_area_without_gouge(shop, shapely):
+def test_a_groove_removes_its_area_without_gouge(shop):
     op = cylinder_groove(shop)
     result = verify_job(shop[2])
     check = result.ops[0]
@@ -62,7 +56,7 @@ def test_a_groove_removes_its_area_without_gouge(shop, shapely):
     assert "bar R20.000 from Z0.000 to Z60.000" in result.summary()
 
 
-def test_a_path_plunging_too_deep_shows_the_gouge_and_where(shop, shapely):
+def test_a_path_plunging_too_deep_shows_the_gouge_and_where(shop):
     """The Path edited so that its plunges at Z21 reach X17, 1 mm below the groove's base R18."""
     op = cylinder_groove(shop)
     commands = []
@@ -87,7 +81,7 @@ def test_a_path_plunging_too_deep_shows_the_gouge_and_where(shop, shapely):
     # t = int_18^21 2 pi x / (0.01 * 10000) dx = pi (21^2 - 18^2) / 100 min = 220.54 s
     (dict(surface_speed="10 m/min", max_spindle_speed=100), "00:03:41"),
 ])
-def test_cycle_time_is_the_hand_computed_time(shop, shapely, speeds, expected):
+def test_cycle_time_is_the_hand_computed_time(shop, speeds, expected):
     """A groove as wide as the blade in one plunge: G0 X21 Z22, G1 X18 Z22 (from R20 + the 1 mm retract)."""
     op = cylinder_groove(shop, width=3, infeed=2, feed_per_rev=0.01, **speeds)
     feeds = [(c.Parameters["X"], c.Parameters["Z"]) for c in op.Path.Commands if c.Name == "G1"]
@@ -97,27 +91,32 @@ def test_cycle_time_is_the_hand_computed_time(shop, shapely, speeds, expected):
     assert shop[2].CycleTime == expected
 
 
-def test_an_op_with_an_error_is_named_not_checked(shop, shapely):
+def test_an_op_with_an_error_is_named_not_checked(shop):
     op = cylinder_groove(shop, position=50)  # past the face (Z10..30)
     check = verify_job(shop[2]).ops[0]
     assert check.error and "past the face" in check.error
     assert check.summary().startswith("%s: not checked:" % op.Label)
 
 
-def test_without_shapely_one_clear_message(shop, monkeypatch):
+def test_the_check_needs_no_shapely(shop, monkeypatch):
+    """With shapely not importable (and the check's modules imported afresh under that), verify_job gives the
+    groove's figures: FreeCAD ships numpy, not shapely."""
     cylinder_groove(shop)
-    monkeypatch.setitem(sys.modules, "shapely", None)  # import shapely raises ImportError
-    with pytest.raises(TurningCheckError) as error:
-        verify_job(shop[2])
-    assert str(error.value) == SHAPELY_MISSING and "python3-shapely" in SHAPELY_MISSING
+    for name in ["shapely"] + [n for n in sys.modules if n.startswith("shapely.")]:
+        monkeypatch.setitem(sys.modules, name, None)  # import shapely (or any of its modules) raises ImportError
+    for name in [n for n in sys.modules if n.startswith(("freecad_groove.verify", "freecad_groove.ops.turning_check"))]:
+        monkeypatch.delitem(sys.modules, name)
+    check = verify_job(shop[2]).ops[0]
+    assert check.ok and check.removed == pytest.approx(8.0 - 2 * FILLET, abs=1e-3)
+    assert check.unreachable == pytest.approx(2 * FILLET, abs=1e-4)
 
 
-def test_not_a_job_is_one_clear_message(shop, shapely):
+def test_not_a_job_is_one_clear_message(shop):
     with pytest.raises(TurningCheckError, match="is not a CAM Job"):
         verify_job(shop[1])
 
 
-def test_the_part_as_turned_is_the_stock_a_grooving_op_assumes(shop, shapely):
+def test_the_part_as_turned_is_the_stock_a_grooving_op_assumes(shop):
     # the shaft's R20 cylinder from Z10 to Z30 is its largest radius: a bar R25 around the part stands where
     # the op's rapids go down to the groove (the op assumes the part turned to its contour first)
     doc, shaft, job, _tc = shop
@@ -137,7 +136,7 @@ def test_the_part_as_turned_is_the_stock_a_grooving_op_assumes(shop, shapely):
     assert check.label == op.Label
 
 
-def test_a_stock_made_from_an_existing_solid_is_its_own_section(shop, shapely):
+def test_a_stock_made_from_an_existing_solid_is_its_own_section(shop):
     from freecad_groove.demo import turned_stock
 
     doc, shaft, job, _tc = shop
@@ -149,13 +148,13 @@ def test_a_stock_made_from_an_existing_solid_is_its_own_section(shop, shapely):
     assert result.notes[0].endswith("its own section")
 
 
-def test_an_unknown_stock_choice_is_one_clear_message(shop, shapely):
+def test_an_unknown_stock_choice_is_one_clear_message(shop):
     with pytest.raises(TurningCheckError, match=r"^verify_job\(\): stock='bar': must be 'job' \(the Job's stock\) "
                                                 r"or 'turned' \(the part as turned\)$"):
         verify_job(shop[2], stock="bar")
 
 
-def test_the_demo_job_runs_its_own_turning_check_clean(closing, shapely):
+def test_the_demo_job_runs_its_own_turning_check_clean(closing):
     # issue 21: on a bar stock, 4 of its 5 ops rapid through standing stock (no op turns it to the contour)
     from freecad_groove import demo
 

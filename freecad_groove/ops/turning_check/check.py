@@ -34,8 +34,9 @@ Each checked op's CycleTime becomes its machining time (HH:MM:SS, as
 FreeCAD's ops write it) and the Job's CycleTime their sum. A recompute of
 the op puts FreeCAD's own estimate (from the tool controller's feeds) back.
 
-shapely (2.0 or newer) is needed and FreeCAD does not bundle it: without it
-verify_job raises TurningCheckError with SHAPELY_MISSING.
+The check needs nothing FreeCAD does not ship: the column model of
+freecad_groove.verify.turning runs on numpy (shapely, which FreeCAD does not
+bundle, is only the tests' second oracle).
 """
 
 from __future__ import annotations
@@ -54,11 +55,6 @@ if TYPE_CHECKING:
     from ...verify.turning import JobCheck, OpInput
 
 SECTION_DEFLECTION = 1e-4  # mm: largest chord error of the model's discretized section
-SHAPELY_MISSING = (
-    "verify_job needs the Python package shapely (2.0 or newer), which FreeCAD does not bundle. "
-    "Debian/Ubuntu FreeCAD: sudo apt install python3-shapely; any other FreeCAD: install it into "
-    "FreeCAD's own Python (its python -m pip install shapely), then restart FreeCAD"
-)
 MOTION = {"G0": RAPID, "G00": RAPID, "G1": FEED, "G01": FEED, "G2": ARC_CW, "G02": ARC_CW, "G3": ARC_CCW,
           "G03": ARC_CCW}
 MODAL = {"G18", "G90", "G21", "G40", "G80"}  # words that move nothing
@@ -71,16 +67,6 @@ STOCKS = {STOCK_JOB: "the Job's stock", STOCK_TURNED: "the part as turned"}  # v
 
 class TurningCheckError(ValueError):
     """A Job that cannot be checked at all (an op that cannot is reported in its OpCheck)."""
-
-
-def require_shapely() -> None:
-    """TurningCheckError(SHAPELY_MISSING) unless shapely 2.x imports."""
-    try:
-        import shapely
-    except ImportError:
-        raise TurningCheckError(SHAPELY_MISSING) from None
-    if int(str(getattr(shapely, "__version__", "0")).split(".")[0]) < 2:
-        raise TurningCheckError("%s (found shapely %s)" % (SHAPELY_MISSING, shapely.__version__))
 
 
 def _check_job(job: object) -> list:
@@ -118,8 +104,8 @@ def existing_solid_stock(job: object) -> Optional[object]:
 
 def stock_section(job: object, shapes: list, inputs: list, stock: str) -> tuple[object, str]:
     """(the stock's section, the note saying which) of STOCKS ``stock``."""
-    from ...verify.overlay import union_all
-    from ...verify.section import bar_section, groove_region, rings_section
+    from ...verify.shapes import union_all
+    from ...verify.turned_section import bar_section, groove_region, rings_section
 
     if stock == STOCK_TURNED:
         model = rings_section(model_rings(shapes))
@@ -254,13 +240,12 @@ def verify_job(job: object, tol: Optional[float] = None, stock: str = STOCK_JOB)
     material, rapids through standing stock, machining time; ``summary()``
     prints them. Sets each checked op's CycleTime. An op that cannot be
     checked carries its reason in ``error``. Raises TurningCheckError (a
-    ValueError) when shapely is missing or ``job`` is no Job with a model.
+    ValueError) when ``job`` is no Job with a model.
     """
     if stock not in STOCKS:
         raise TurningCheckError("verify_job(): stock=%r: must be %s" % (stock, " or ".join(
             "%r (%s)" % item for item in STOCKS.items())))
-    require_shapely()
-    from ...verify.section import rings_section
+    from ...verify.turned_section import rings_section
     from ...verify.turning import DEFAULT_TOL, check_ops
 
     shapes = _check_job(job)

@@ -16,10 +16,14 @@ UNREACHABLE_COLOR = (0.9, 0.8, 0.0)
 
 
 def rings(geometry):
-    """Every ring (exterior and holes) of a shapely (z, x) geometry as (x, 0, z) points."""
+    """Every outline of a region as (x, 0, z) points: a verify.shapes.Section
+    (the turning check's column model) or a shapely (z, x) geometry (rings:
+    exteriors and holes)."""
     out = []
     if geometry is None or geometry.is_empty:
         return out
+    if hasattr(geometry, "outlines"):
+        return [[(float(x), 0.0, float(z)) for z, x in outline] for outline in geometry.outlines()]
     parts = getattr(geometry, "geoms", [geometry])
     for part in parts:
         if part.geom_type == "Polygon":
