@@ -80,7 +80,7 @@ def write(tmp_path, text, name="part.nc"):
 
 def test_every_example_is_listed():
     programs = {os.path.basename(p) for p in glob.glob(os.path.join(EXAMPLES, "*")) if not p.endswith(".tbl")}
-    assert programs == set(EXAMPLE_OPTIONS) | set(MILL_EXAMPLES)
+    assert programs == set(EXAMPLE_OPTIONS) | set(MILL_EXAMPLES) | {"gsk_g7_1.nc"}
 
 
 @pytest.mark.parametrize("command", ["verify", "plot"])
@@ -94,6 +94,25 @@ def test_mill_style_programs_are_refused_in_one_line(tmp_path, command, name):
         "%s:0: verify and plot check turning programs (the lathe's XZ section); %s programs are mill-style "
         "(X/Y/Z)" % (path, MILL_EXAMPLES[name][1])]
     assert not os.listdir(tmp_path)
+
+
+MILLED = ("verify and plot check turning programs (the lathe's XZ section); a program that turns the C axis (G7.1, "
+          "a live tool) mills, which they do not simulate")
+
+
+@pytest.mark.parametrize("command", ["verify", "plot"])
+@pytest.mark.parametrize("program, where", [
+    ("gsk_g7_1.nc", "6: C0."),  # C positioned before the region
+    ("G21 G98\nG0 X46. Z5.\nG7.1 C20. J-4. R2. K0.4 L2\nG1 Z-30. F100.\nG1 C90.\nG7.1 C0\nM30\n", "3: G7.1"),
+])
+def test_a_c_axis_program_is_refused_in_one_line_naming_its_first_c(tmp_path, command, program, where):
+    # a live tool milling on the developed surface is not a turning blade: no XZ section to simulate it on
+    path = os.path.join(EXAMPLES, program) if program.endswith(".nc") else write(tmp_path, program, "slot.nc")
+    out = ["-o", str(tmp_path / "out.svg")] if command == "plot" else []
+    result = run(command, path, "--dialect", "gsk", *out)
+    assert result.returncode == 2
+    assert result.stderr.decode().strip().splitlines() == ["%s:%s: %s" % (path, where, MILLED)]
+    assert not (tmp_path / "out.svg").exists()
 
 
 @pytest.mark.parametrize("name", sorted(EXAMPLE_OPTIONS))

@@ -54,6 +54,7 @@ class Cycle:
 
     NEEDS_BLADE: ClassVar[bool] = False  # its moves depend on the blade: expanded only with a known one (CYCLE93)
     MILL: ClassVar[bool] = False  # mill-style moves (X plain, Y set): a mill-style dialect's, on the mill twins
+    C_AXIS: ClassVar[bool] = False  # milled with a live tool turning C (GSK G7.1): no turned section to check
     Z_ONLY: ClassVar[bool] = False  # one rapid of Z alone: needs no start point, only the units (Milltronics G31)
     FROM_UNKNOWN_Z: ClassVar[bool] = False  # runs with the Z before the call not known (Milltronics G33/G34)
     BLOCKS: ClassVar[Type[BlockForm]] = SingleBlock  # how its call is written over blocks (block_forms.py)

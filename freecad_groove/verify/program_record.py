@@ -80,8 +80,20 @@ class Step:
     air: list[list[Point]] = field(default_factory=list)  # what the call takes to be air already
 
 
+MILLED = ("%s: verify and plot check turning programs (the lathe's XZ section); a program that turns the C axis "
+          "(G7.1, a live tool) mills, which they do not simulate")
+
+
 class RecordingTranslator(Translator):
     """A Translator that records the Steps of the program it reads."""
+
+    def _c_value(self, word, kind):  # a C position: the program mills with the C axis
+        self._fail(MILLED % ("C" + word.text))
+
+    def run_cycle(self, block, entry, call, label):
+        if entry.cycle_class.C_AXIS:
+            self._fail(MILLED % entry.cycle_class.NAME)
+        super().run_cycle(block, entry, call, label)
 
     def __init__(self, *args, **kwargs) -> None:
         super().__init__(*args, **kwargs)

@@ -301,6 +301,7 @@ class GskG7_1(Cycle):
     TITLE: ClassVar[str] = "GSK G7.1 cylindrical interpolation and its roughing cycle (a region up to G7.1 C0)"
     FORM: ClassVar[str] = G_WORD
     BLOCKS: ClassVar[type] = RegionBlocks  # the blocks up to the cancel block belong to the call
+    C_AXIS: ClassVar[bool] = True  # an end mill on the developed surface
     WORDS: ClassVar[tuple] = ("C", "J", "R", "K", "L")
     TYPE_II: ClassVar[tuple] = ("J", "R", "K", "L")
     WORD_HELP: ClassVar[tuple] = (
