@@ -6,7 +6,7 @@ A Type II region on an R20 cylinder whose path is a barrel-cam track of N
 arcs (R10, a quarter circle each on the developed surface, 56 segments
 each within the 0.001 mm chord tolerance), with L rough passes: the time to
 expand it into moves and to write them for linuxcnc-c, and the moves per
-second (issue 22's goal: 1,000,000). The figures go in the README's
+second (issue 22's goal: 1,000,000). The figures go in docs/benchmarks.md's
 Benchmarks section; --json: as JSON lines (benchmarks/figures.py).
 """
 

@@ -37,7 +37,7 @@ Exit status: 0 no gouge and no collision; 1 a gouge or collision (one line
 PROGRAM:LINE: gouge|collision: ... on stderr each; plot still draws); 2 bad
 input (one line PROGRAM:LINE: message), numpy or matplotlib missing too.
 The stock by default: a bar through the program's first approach point (see
-the README, "verify and plot"); --stock D[xL] gives it.
+docs/command-line.md, "verify and plot"); --stock D[xL] gives it.
 """
 _STOCK = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*(?:[xX]\s*(\d+(?:\.\d*)?|\.\d+))?\s*$")
 
@@ -61,7 +61,7 @@ def add_verify_parsers(sub: argparse._SubParsersAction) -> None:
                             + "; ".join("%s = %s" % (d.name, d.help) for d in DIALECTS.values()))
         parser.add_argument("--stock", type=stock_option, metavar="D[xL]",
                             help="the bar: diameter D mm and optionally length L mm back from its face end "
-                            "(default: a bar through the program's first approach point, see the README)")
+                            "(default: a bar through the program's first approach point, see docs/command-line.md)")
         parser.add_argument("--rapid-rate", type=not_negative, default=0.0, metavar="MM_PER_MIN",
                             help="rapid rate of both axes for the machining time (default: rapids not timed)")
         if command == "plot":

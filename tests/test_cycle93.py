@@ -436,17 +436,17 @@ def test_no_free_off_where_the_previous_plunge_stopped_higher():
             assert freed == pytest.approx(u - math.copysign(min(1.0, abs(u - u_prev)), u - u_prev), abs=1e-9)
 
 
-def test_free_off_is_the_one_in_the_readme():
+def test_free_off_is_the_one_in_the_guides_choices():
     assert (FREE_OFF_MM, FREE_OFF_INCH) == (1.0, 0.04)
-    readme = (Path(__file__).parent.parent / "README.md").read_text(encoding="utf-8")
+    readme = (Path(__file__).parent.parent / "docs" / "choices.md").read_text(encoding="utf-8")
     row = next(line for line in readme.splitlines() if line.startswith("| free-off"))
     assert "1 mm" in row and "0.04 in" in row and "FREE_OFF_MM" in row and "FEED" in row
 
 
-def test_reentry_clearance_is_the_one_in_the_readme_and_below_the_default_vrt():
+def test_reentry_clearance_is_the_one_in_the_guides_choices_and_below_the_default_vrt():
     assert (REENTRY_CLEARANCE_MM, REENTRY_CLEARANCE_INCH) == (0.1, 0.004)
     assert REENTRY_CLEARANCE_MM < DEFAULT_VRT_MM and REENTRY_CLEARANCE_INCH < DEFAULT_VRT_INCH
-    readme = (Path(__file__).parent.parent / "README.md").read_text(encoding="utf-8")
+    readme = (Path(__file__).parent.parent / "docs" / "choices.md").read_text(encoding="utf-8")
     row = next(line for line in readme.splitlines() if line.startswith("| chip-break retract |"))
     assert "0.1 mm" in row and "0.004 in" in row and "REENTRY_CLEARANCE_MM" in row
 

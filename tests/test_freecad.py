@@ -69,7 +69,7 @@ def describe_failures(result):
 
 def publish_screenshots(src, label):
     """The GUI run's screenshots to out/gui-screenshots/<label>/ (scripts/screenshots
-    copies FreeCAD 1.1's into docs/ for the README)."""
+    copies FreeCAD 1.1's into docs/ for the guide)."""
     dest = os.path.join(ROOT, "out", "gui-screenshots", label)
     shutil.rmtree(dest, ignore_errors=True)
     if src.is_dir():
@@ -124,7 +124,7 @@ def test_freecad_gui_suite(label, tmp_path):
     """tests/freecad_gui/ in FreeCAD's GUI under Xvfb; screenshots to out/gui-screenshots/<label>/."""
     env = {"FREECAD_GROOVE_RESULT": "gui-result.json", "FREECAD_GROOVE_SCREENSHOTS": "screenshots"}
     env.update(freecad_shapely.provide(tmp_path))  # for the Check turning command (test_turning_view.py)
-    # Once, no retry: a crash of FreeCAD fails like any test (the 1.0 crash of README "Known issues" is mended).
+    # Once, no retry: a crash of FreeCAD fails like any test (the 1.0 crash of docs/testing.md is mended).
     result, summary, output, returncode = run_in_freecad(label, tmp_path, env, GUI_COMMAND, timeout=GUI_TIMEOUT)
     publish_screenshots(tmp_path / "screenshots", label)
     check_result(result, summary, returncode, output)

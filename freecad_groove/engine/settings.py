@@ -1,6 +1,6 @@
 """Every choice the manuals leave open, as one named setting.
 
-The README lists each of these with its default and the manual text that
+docs/choices.md lists each of these with its default and the manual text that
 leaves it open; change them here, on the command line or in a post's options.
 """
 

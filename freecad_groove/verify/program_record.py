@@ -13,7 +13,7 @@ expanded moves).
 Everything recorded is in mm (an inch program is scaled), X a radius;
 geometry as lists of (x, z) points like ``moves.Move``.
 
-Choices (README, "Choices of verify and plot"):
+Choices (docs/command-line.md, "Choices of verify and plot"):
 
 * An arc G2/G3 becomes chords no farther than ARC_CHORD_TOL from the arc;
   a cycle's arcs (CYCLE93's contour and finishing passes) become chords no

@@ -22,7 +22,7 @@ class 3 = optional):
   cross pick feed; E (3, the previous cycle's E, else F) reciprocation feed.
 
 The expansion (choices the manual leaves open are marked [choice]; each is a
-README row with a test):
+docs/choices.md row with a test):
 
 1. G83.1: the dress program P first, at the start point.
 2. The plunge pick J at F from the start (clipped to Y).

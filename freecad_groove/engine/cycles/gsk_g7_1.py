@@ -15,7 +15,7 @@ the roughing cycle of the manual's steps 1-5: X rapids from the start F to the
 cycle start G, feeds in to pass n, follows the path, rapids back out in X,
 returns Z and C to G, and repeats down to the finish pass.
 
-Choices the manual leaves open (README "GSK G7.1" table, each with a test):
+Choices the manual leaves open (docs/choices.md, "GSK G7.1" table, each with a test):
 
 * Depths are measured from the cylinder (diameter 2c): the finish pass runs at
   diameter 2c + J; the cycle start G is at diameter 2c - sign(J)*R, i.e. R is

@@ -13,7 +13,7 @@ centred on the XY position before the call; P155 is the cut width.
 A model holds the block's words and the P parameters it runs with; ``emit()``
 writes the assignment blocks and then the call, ``parse()`` reads them back.
 
-Expansion (choices the manual leaves open are marked [choice]; each is a README
+Expansion (choices the manual leaves open are marked [choice]; each is a docs/choices.md
 row with a test), the tool an end mill of diameter ``Settings.mill_tool_diameter``:
 
 - Depths [documented + choice]: V, V - Q, ... down to Z (the last step clipped

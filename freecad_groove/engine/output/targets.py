@@ -8,7 +8,7 @@ grinder's or a mill's X/Y/Z) is written when it names ``linuxcnc`` or
 ``fanuc``; the grinder ``ab9grind`` (Allen-Bradley 9/Series).
 
 Each table says where its control's documentation or habit comes from in a
-comment; the choices the manuals leave open are in the README's tables.
+comment; the choices the manuals leave open are in docs/choices.md.
 """
 
 from dataclasses import replace

@@ -42,7 +42,7 @@ in order:
 Feeds and speeds: a Groove op's own (``freecad/cutting.py``: FeedPerRev,
 SurfaceSpeed with MaxSpindleSpeed, SpindleSpeed; else the tool controller's;
 else 0.05 mm/rev and 500 rpm), written the control's way (the post's
-target, ``LathePost.target``; README, "Feeds and speeds");
+target, ``LathePost.target``; docs/posts.md, "Feeds and speeds");
 other objects' Path F words are mm/s, written per minute (G94, Fanuc/Haas
 G98), the mode switched back where a groove fed per revolution. Lengths are
 mm (G21, Siemens G71), or inches with ``--inches`` (G20, Siemens G700: the

@@ -7,7 +7,7 @@ saved since the ops moved here; documents saved before store
 ``freecad_groove.freecad.plunge_grind_op.ObjectPlungeGrind``, which that
 module keeps as a shim. Neither may move.
 
-Axes (README "Plunge grind"): the face is planar and looks up (+Z); the
+Axes (docs/plunge-grind.md): the face is planar and looks up (+Z); the
 wheel reciprocates along FreeCAD X (ReciprocationAxis, or Y), crosses over
 along the other of X and Y and plunges down along -Z. In the G83's words:
 X/I = FreeCAD X, Y = FreeCAD Z, Z = FreeCAD Y (GrindPlan.axes "XZY"; with

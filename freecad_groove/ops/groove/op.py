@@ -10,7 +10,7 @@ as a shim. Neither may move.
 Coordinates: the part turns about the Job's Z axis (the global Z axis through
 the origin). The op's Path is in the G18 plane: X = radius in model
 coordinates, Z; never Y. Its moves drive the blade's reference corner
-(README, "Conventions").
+(docs/choices.md, "Conventions").
 
 What the op does with each face in ``Base`` (see faces.py for the reading of
 the face) and each of ``GrooveCount`` grooves:

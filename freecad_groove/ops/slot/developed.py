@@ -11,7 +11,7 @@ straight pieces within ``numbers.ARC_CHORD_TOLERANCE`` of it on the
 developed surface (the arc length s = radius * C in radians): a helix and a
 line along Z are each one straight piece.
 
-Choices (README "Cylinder slot" table): the path starts where the first
+Choices (docs/cylinder-slot.md, its table): the path starts where the first
 edge starts (its direction as modelled, or reversed when only its start
 meets the second edge); C of the start in (-180, 180]; a sketch of the
 developed surface (its own x = Z, y = the developed length R*C, C = 0 at

@@ -1,7 +1,7 @@
 """Whether the Cylinder slot op's end mill can cut the slot it is given.
 
 FreeCAD layer (reads a tool bit's properties; no Part). The live end mill
-points along X at the cylinder; the rules (README "Cylinder slot" table):
+points along X at the cylinder; the rules (docs/cylinder-slot.md, its table):
 
 - its Diameter is the slot's width: none (0) is an error;
 - its flutes must reach the slot's bottom: Depth greater than the bit's
