@@ -33,10 +33,16 @@ def comment_body(text: str) -> str:
 
 def op_error(obj: object) -> Optional[str]:
     """Why the op ``obj`` made nothing at its last recompute (None: it is fine): the message it reported,
-    or FreeCAD's status of an invalid object."""
-    error = getattr(getattr(obj, "Proxy", None), "error", None)
+    the tool it has no more when that changed since (the posts refuse it too), or FreeCAD's status of an
+    invalid object."""
+    proxy = getattr(obj, "Proxy", None)
+    error = getattr(proxy, "error", None)
     if error:
         return error
+    if isinstance(proxy, AddonOp) and proxy.tool_changed(obj):  # FreeCAD did not recompute the op since
+        problem = cannot_run(obj)  # (a tool controller that lost its tool is Invalid: its ops wait for it)
+        if problem is not None:
+            return str(problem)
     return None if obj.isValid() else obj.getStatusString()
 
 

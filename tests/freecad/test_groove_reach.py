@@ -60,7 +60,7 @@ def test_the_panels_plan_refuses_it_marking_depth(shop):
 def test_a_groove_as_deep_as_the_reach_is_cut_and_a_longer_blade_takes_the_deeper_one(shop):
     doc, shaft, job, tc = shop
     op = groove(shop, 8)
-    assert op_error(op) is None and "G1" in post("fanuc_lathe", [op])
+    assert op_error(op) is None and "G75 X24. Z21." in post("fanuc_lathe", [op])  # down to R12: 8 deep
     op.Depth = 12
     doc.recompute()
     assert op_error(op) == REFUSED

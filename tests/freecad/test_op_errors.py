@@ -150,7 +150,10 @@ def test_a_cylinder_slot_recomputes_when_its_tool_changes_and_is_not_posted_with
         doc.recompute()
         error = op_error(op)
         assert error is not None and error.startswith("ToolController: "), error
-        assert [c for c in op.Path.Commands if c.Parameters] == []  # no stale toolpath
+        if "Invalid" not in tc.State:  # recomputed: no stale toolpath
+            assert [c for c in op.Path.Commands if c.Parameters] == []
+        else:  # FreeCAD 1.1: a tool controller without a tool is itself Invalid, and its ops wait for it
+            assert change == "no tool"
         with pytest.raises(PostError, match=r"^%s: ToolController: " % op.Label):
             _slot_post(op)
     finally:
