@@ -28,7 +28,9 @@ contour, so its own turning check (``verify_job``) runs clean on it.
 
 The Job holds one tool controller, "TC: Grooving blade 3 mm" (tool 3,
 800 rpm forward, 40 mm/min; its tool bit carries the blade's Width 3 mm and
-CornerRadius 0.2 mm, which the Groove ops read), and five Groove ops, all
+CornerRadius 0.2 mm, which the Groove ops read, and its free reach
+CuttingEdgeHeight 16 mm: a parting blade deep enough for the cut-off, which
+the ops check every groove's Depth against), and five Groove ops, all
 with flood coolant, in machining order (``OPS``):
 
 * ``External grooves``: three plain grooves 3 wide, 2.5 deep on the R25
@@ -80,6 +82,7 @@ DOCUMENT = "demo_part"
 TOOL_NUMBER = 3
 TOOL_WIDTH = 3.0
 TOOL_CORNER_RADIUS = 0.2
+TOOL_REACH = 16.0  # the blade's free reach (CuttingEdgeHeight): deeper than the 15 mm cut-off
 SPINDLE_RPM = 800
 FEED_MM_MIN = 40.0
 
@@ -220,6 +223,9 @@ def make_job(doc, part):
     bit.addProperty("App::PropertyLength", "CornerRadius", "Grooving blade", "Radius of the blade's front corners")
     bit.Width = TOOL_WIDTH
     bit.CornerRadius = TOOL_CORNER_RADIUS
+    if "CuttingEdgeHeight" not in bit.PropertiesList:
+        bit.addProperty("App::PropertyLength", "CuttingEdgeHeight", "Grooving blade", "Cutting depth (free reach)")
+    bit.CuttingEdgeHeight = TOOL_REACH
     tc.SpindleSpeed = SPINDLE_RPM
     tc.SpindleDir = "Forward"
     tc.HorizFeed = "%g mm/min" % FEED_MM_MIN
@@ -327,6 +333,7 @@ def run(out_dir):
             "python": sys.version.split()[0],
             "document": os.path.basename(document),
             "tool": {"number": TOOL_NUMBER, "width": TOOL_WIDTH, "corner_radius": TOOL_CORNER_RADIUS,
+                     "reach": TOOL_REACH,
                      "reference": "minus"},
             # every op keeps Retract 0 (= 1 mm): the peck retract e of the pecking cycles
             "peck_retract": 1.0,

@@ -70,8 +70,13 @@ def test_read_a_table():
 @pytest.mark.parametrize(
     "line, message",
     [
-        ("5 3.0 0.2", "3 fields: a tool line has 4: T, width, corner radius, reference"),
-        ("5 3.0 0.2 minus 1", "5 fields: a tool line has 4: T, width, corner radius, reference"),
+        ("5 3.0 0.2 minus 1 2", "6 fields: a tool line has 4: T, width, corner radius, reference (and "
+         "optionally reach)"),
+        ("5 3.0 0.2", "3 fields: a tool line has 4: T, width, corner radius, reference (and optionally reach)"),
+        ("5 3.0 0.2 minus 0", "reach=0: must be greater than 0 (leave the field out when it is not known)"),
+        ("5 3.0 0.2 minus -12", "reach=-12: must be greater than 0 (leave the field out when it is not known)"),
+        ("5 3.0 0.2 minus nan", "reach=nan: must be a number"),
+        ("5 3.0 0.2 minus 1e999", "reach=1e999: must be a number"),
         ("5.0 3.0 0.2 minus", "T=5.0: must be a whole number, 0 or more"),
         ("-1 3.0 0.2 minus", "T=-1: must be a whole number, 0 or more"),
         ("T5 3.0 0.2 minus", "T=T5: must be a whole number, 0 or more"),
@@ -312,3 +317,38 @@ def test_emit_cycle93_needs_the_blade():
     assert proc.returncode == 0 and b"G1 " in proc.stdout
     proc = run("emit", "g77", "-X", "40", "-I", "2", "-D", "0")  # the pecking cycles need none
     assert proc.returncode == 0 and proc.stdout == b"G77 X40. I2. D0.\n"
+
+
+# ---------------------------------------------------------------- the blade's reach (issue 20, item 5)
+
+
+def test_a_table_may_give_each_blades_free_reach():
+    table = read_tool_table(TABLE_TEXT + "9 3.0 0.2 minus 12   # reach 12\n", "tools.tbl")
+    assert table[9] == BLADE_3 and table.reach == {9: 12.0}  # tools 5 and 7 give none: not checked
+
+
+def test_a_cycle93_deeper_than_the_tables_reach_is_refused_naming_depg_and_the_reach():
+    """The seed's groove is 25 deep (DEPG, a radius): a blade reaching 24 cannot cut it, one reaching 25 can
+    and cuts it exactly as a table without a reach does."""
+    short = read_tool_table("5 3.0 0.2 minus 24\n", "tools.tbl")
+    with pytest.raises(ProgramError) as info:
+        translate_program(open(SEED).read(), "sinumerik", tools=short)
+    assert info.value.line == 4
+    assert str(info.value) == ("CYCLE93 DEPG=25: deeper than the free reach 24 of T5's blade (tools.tbl): its "
+                               "holder would hit the part; use a blade that reaches 25 or groove less deep")
+    enough = read_tool_table("5 3.0 0.2 minus 25\n", "tools.tbl")
+    plain = read_tool_table("5 3.0 0.2 minus\n", "tools.tbl")
+    assert translate_program(open(SEED).read(), "sinumerik", tools=enough) == \
+        translate_program(open(SEED).read(), "sinumerik", tools=plain)
+
+
+def test_expand_refuses_a_groove_deeper_than_the_reach_in_the_tool_table(tmp_path):
+    table = tmp_path / "t.tbl"
+    table.write_text("# T width radius reference reach\n5 3.0 0.2 minus 12\n")
+    proc = run("expand", "examples/seed_cycle93.mpf", "--dialect", "sinumerik", "--tool-table", str(table))
+    assert one_error_line(proc) == ("examples/seed_cycle93.mpf:4: CYCLE93 DEPG=25: deeper than the free reach 12 of "
+                                    "T5's blade (%s): its holder would hit the part; use a blade that reaches 25 "
+                                    "or groove less deep" % table)
+    table.write_text("5 3.0 0.2 minus 30\n")
+    proc = run("expand", "examples/seed_cycle93.mpf", "--dialect", "sinumerik", "--tool-table", str(table))
+    assert proc.returncode == 0, proc.stderr

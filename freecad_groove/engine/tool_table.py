@@ -2,11 +2,12 @@
 
     table = read_tool_table(text, "tools.tbl")       # ToolTable: {5: GroovingTool(3.0, 0.2, "minus"), ...}
     blade = blade_for(5, table, default=None)        # the blade tool 5 cuts with
+    table.reach[5]                                   # its free reach, when the table gives one
 
 The text format, one tool a line::
 
-    # T  width  corner-radius  reference
-    5    3.0    0.2            minus
+    # T  width  corner-radius  reference  [reach]
+    5    3.0    0.2            minus      12
     7    2.5    0.1            plus
 
 * four fields separated by spaces or tabs: the tool number T (a whole number,
@@ -14,11 +15,15 @@ The text format, one tool a line::
   radius of both front corners (0 or more, less than half the width) and the
   reference corner the tool's offset was measured on (``minus`` or ``plus``,
   see moves.GroovingTool);
-* after them, optionally, ``side=SIDE``: where the blade cuts, ``external``
-  (plunging toward -X), ``internal`` (toward +X, in a bore), ``face``
-  (toward -Z) or ``back-face`` (toward +Z). The cycles do not need it (a
-  cycle's own words say where it cuts); a lathe tool table written for a
-  control does (``tools --to linuxcnc``: the tool's orientation);
+* an optional fifth field, the blade's free reach (greater than 0): how deep
+  it cuts before its holder meets the part (FreeCAD's grooving blade tool
+  bit: CuttingEdgeHeight). When given, a CYCLE93 deeper than it (DEPG, as a
+  radius) is refused (reach_problem); without it the reach is not checked;
+* anywhere after the first four, optionally, ``side=SIDE``: where the blade
+  cuts, ``external`` (plunging toward -X), ``internal`` (toward +X, in a
+  bore), ``face`` (toward -Z) or ``back-face`` (toward +Z). The cycles do not
+  need it (a cycle's own words say where it cuts); a lathe tool table written
+  for a control does (``tools --to linuxcnc``: the tool's orientation);
 * ``#`` starts a comment, to the end of the line; blank lines are skipped;
 * lengths are in the program's units at the time the cycle runs (a table for
   an inch program holds inches), like ``--tool-width``.
@@ -41,11 +46,13 @@ from .errors import ProgramError
 from .moves import REFERENCE_MINUS, REFERENCE_PLUS, GroovingTool
 from .numbers import MAX_WORD, format_value
 
-__all__ = ["BLADE_UNKNOWN", "SIDES", "ToolTable", "blade_for", "read_tool_table"]
+__all__ = ["BLADE_UNKNOWN", "SIDES", "ToolTable", "blade_for", "reach_problem", "read_tool_table"]
 
 BLADE_UNKNOWN = "the blade width is unknown"
 FIELDS = ("T", "width", "corner radius", "reference")
+OPTIONAL_FIELDS = ("reach",)
 SIDES = ("external", "internal", "face", "back-face")  # where a blade cuts: plunging -X, +X, -Z, +Z
+TOLERANCE = 1e-9
 _WHOLE = re.compile(r"[0-9]+\Z")
 
 
@@ -56,6 +63,7 @@ class ToolTable(Dict[int, GroovingTool]):
     def __init__(self, tools: Iterable[Tuple[int, GroovingTool]] = (), source: str = "the tool table") -> None:
         super().__init__(tools)
         self.source = source
+        self.reach: Dict[int, float] = {}  # tool number -> the blade's free reach, where the table gives one
         self.sides: Dict[int, str] = {}  # tool number -> its side= (SIDES), where the line gives one
         self.lines: Dict[int, int] = {}  # tool number -> the line that gives it (messages)
 
@@ -86,11 +94,18 @@ def _options(fields: list, line: int) -> Dict[str, str]:
     return options
 
 
-def _tool_line(fields: list, line: int) -> Tuple[int, GroovingTool]:
-    """One table line's tool number and blade (the rules in the module notes)."""
-    if len(fields) != len(FIELDS):
-        raise ProgramError("%d fields: a tool line has %d: %s" % (len(fields), len(FIELDS), ", ".join(FIELDS)), line)
-    number_text, width_text, radius_text, reference = fields
+def _tool_line(fields: list, line: int) -> Tuple[int, GroovingTool, Optional[float]]:
+    """One table line's tool number, blade and reach (None: not given; the rules in the module notes)."""
+    if not len(FIELDS) <= len(fields) <= len(FIELDS) + len(OPTIONAL_FIELDS):
+        raise ProgramError("%d fields: a tool line has %d: %s (and optionally %s)"
+                           % (len(fields), len(FIELDS), ", ".join(FIELDS), ", ".join(OPTIONAL_FIELDS)), line)
+    number_text, width_text, radius_text, reference = fields[:len(FIELDS)]
+    reach = None
+    if len(fields) > len(FIELDS):
+        reach = _number("reach", fields[len(FIELDS)], line)
+        if not reach > 0:
+            raise ProgramError("reach=%s: must be greater than 0 (leave the field out when it is not known)"
+                               % fields[len(FIELDS)], line)
     if not _WHOLE.match(number_text):
         raise ProgramError("T=%s: must be a whole number, 0 or more" % number_text, line)
     width = _number("width", width_text, line)
@@ -102,7 +117,7 @@ def _tool_line(fields: list, line: int) -> Tuple[int, GroovingTool]:
                            % (radius_text, format_value(width)), line)
     if reference not in (REFERENCE_MINUS, REFERENCE_PLUS):
         raise ProgramError("reference=%s: must be %s or %s" % (reference, REFERENCE_MINUS, REFERENCE_PLUS), line)
-    return int(number_text), GroovingTool(width, radius, reference)
+    return int(number_text), GroovingTool(width, radius, reference), reach
 
 
 def read_tool_table(text: str, source_name: str = "the tool table") -> ToolTable:
@@ -116,10 +131,12 @@ def read_tool_table(text: str, source_name: str = "the tool table") -> ToolTable
         if not fields:
             continue
         options = _options(fields, line)
-        number, tool = _tool_line(fields, line)
+        number, tool, reach = _tool_line(fields, line)
         if number in table:
             raise ProgramError("T=%d: must be unique; line %d gives it already" % (number, lines[number]), line)
         table[number] = tool
+        if reach is not None:
+            table.reach[number] = reach
         if "side" in options:
             table.sides[number] = options["side"]
         lines[number] = line
@@ -141,3 +158,15 @@ def blade_for(tool: Optional[int], table: Optional[ToolTable], default: Optional
                            "program T first or give --tool-width for it" % (BLADE_UNKNOWN, table.source))
     raise ProgramError("%s: T%d is not in the tool table %s; add it there, or give --tool-width for the tools "
                        "the table does not list" % (BLADE_UNKNOWN, tool, table.source))
+
+
+def reach_problem(depth: float, tool: Optional[int], table: Optional[ToolTable], what: str) -> Optional[str]:
+    """Why a groove ``depth`` deep (``what``: the word that gives it, "CYCLE93 DEPG=15") cannot be cut by the
+    blade of tool ``tool`` in ``table``: deeper than the reach the table gives it; None when it can, or when
+    the table gives no reach for it (not checked)."""
+    reach = table.reach.get(tool) if table is not None and tool is not None else None
+    if reach is None or not depth > reach + TOLERANCE:
+        return None
+    return ("%s: deeper than the free reach %s of T%d's blade (%s): its holder would hit the part; use a blade "
+            "that reaches %s or groove less deep" % (what, format_value(reach), tool, table.source,
+                                                     format_value(depth)))

@@ -17,12 +17,13 @@ from .dialects import CYCLE, CYCLE_OPTIONS, MODE_GROUPS
 from .errors import CycleError, ProgramError
 from .mill_tool_table import MillToolTable, diameter_for
 from .moves import MachineState, Move
+from .numbers import format_value
 from .parameter_blocks import read_parameter_block
 from .program_memory import with_memory
 from .reader import Block
 from .registry import CycleEntry
 from .settings import Settings
-from .tool_table import ToolTable, blade_for
+from .tool_table import ToolTable, blade_for, reach_problem
 from .translate_base import Groups, TranslatorBase
 from .warnings import cycle_warnings
 
@@ -56,6 +57,7 @@ class CycleTranslation(TranslatorBase):
             model.validate(settings)
         except CycleError as exc:
             self._fail(exc.message)
+        self._check_reach(entry, model, settings)
         self._check_cycle_start(call.name, cycle.Z_ONLY, cycle.FROM_UNKNOWN_Z)
         start = self.state.machine_state()
         if cycle.FROM_UNKNOWN_Z and "z" in self.state.ambiguous - self._defined:
@@ -147,6 +149,20 @@ class CycleTranslation(TranslatorBase):
         except ProgramError as exc:
             self._fail("%s: %s" % (entry.name, exc))
         return replace(self.settings, tool=blade)
+
+    def _check_reach(self, entry: CycleEntry, model: Cycle, settings: Settings) -> None:
+        """A CYCLE93 deeper than the free reach the tool table gives the blade of the tool in force is refused
+        (tool_table.reach_problem); DEPG as a radius (halved for a longitudinal groove in diameter input)."""
+        depg = getattr(model, "depg", None)
+        if not entry.needs_blade or depg is None or not isinstance(self.tools, ToolTable) \
+                or self.state.tool not in self.tools:
+            return
+        depth = float(depg)
+        if settings.cycle93_diameter_input and model.kind()[0]:
+            depth /= 2
+        problem = reach_problem(depth, self.state.tool, self.tools, "%s DEPG=%s" % (entry.name, format_value(depg)))
+        if problem is not None:
+            self._fail(problem)
 
     def _collect_warnings(self, entry: CycleEntry, model: Cycle, start: MachineState, settings: Settings) -> None:
         """The cycle's warnings, on this line. A cycle that needs no blade still

@@ -15,6 +15,7 @@ Not stored in documents (each op's own class is): free to move.
 FreeCAD layer: FreeCAD's CAM only.
 """
 
+import math
 import traceback
 from typing import Optional
 
@@ -32,11 +33,97 @@ def comment_body(text: str) -> str:
 
 def op_error(obj: object) -> Optional[str]:
     """Why the op ``obj`` made nothing at its last recompute (None: it is fine): the message it reported,
-    or FreeCAD's status of an invalid object."""
-    error = getattr(getattr(obj, "Proxy", None), "error", None)
+    the tool it has no more when that changed since (the posts refuse it too), or FreeCAD's status of an
+    invalid object."""
+    proxy = getattr(obj, "Proxy", None)
+    error = getattr(proxy, "error", None)
     if error:
         return error
+    if isinstance(proxy, AddonOp) and proxy.tool_changed(obj):  # FreeCAD did not recompute the op since
+        problem = cannot_run(obj)  # (a tool controller that lost its tool is Invalid: its ops wait for it)
+        if problem is not None:
+            return str(problem)
     return None if obj.isValid() else obj.getStatusString()
+
+
+def modelled_part(job: object, model: object) -> object:
+    """The object the user modelled that ``model`` (an object of the Job's model, usually its clone) was made
+    from, for names; ValueError naming Base when that part is gone (deleted: the clone has nothing to read
+    it from, and CAM's own lookup fails with an IndexError)."""
+    if job is None:
+        return model
+    try:
+        return job.Proxy.baseObject(job, model)
+    except (IndexError, AttributeError, ReferenceError):
+        raise ModelGoneError("Base: %s: the part the Job's model was made from is gone (deleted?): add the part "
+                             "to the Job again and pick its faces" % getattr(model, "Label", model)) from None
+
+
+class ModelGoneError(ValueError):
+    """The Job's model lost the part it was made from; ``properties`` names Base (the task panels mark it)."""
+
+    properties = ("Base",)
+
+
+# Tool controller properties a change of which changes what an op makes (with every length of its tool bit).
+TOOL_CONTROLLER_VALUES = ("ToolNumber", "HorizFeed", "VertFeed", "SpindleSpeed", "SpindleDir")
+
+
+def tool_signature(obj: object) -> tuple:
+    """What the op ``obj`` reads of its tool controller and tool bit, to compare (FreeCAD does not recompute an
+    op when only its tool bit changed): their names, the tool controller's feeds and speeds, the bit's lengths."""
+    tc = getattr(obj, "ToolController", None)
+    if tc is None:
+        return (None,)
+    tool = getattr(tc, "Tool", None)
+    values = [str(getattr(tc, name, None)) for name in TOOL_CONTROLLER_VALUES]
+    if tool is None:
+        return (tc.Name, None, tuple(values))
+    lengths = []
+    for name in sorted(getattr(tool, "PropertiesList", ())):
+        try:
+            value = getattr(tool, name)
+        except Exception:  # a property FreeCAD cannot read back: not a size of the tool
+            continue
+        if hasattr(value, "Value") and hasattr(value, "Unit"):
+            lengths.append((name, repr(float(value.Value))))
+    return (tc.Name, tool.Name, tuple(values), tuple(lengths))
+
+
+class ToolError(ValueError):
+    """The op's tool controller or tool cannot cut; ``properties`` names ToolController (the panels mark it)."""
+
+    properties = ("ToolController",)
+
+
+def cannot_run(obj: object) -> Optional[ValueError]:
+    """Why CAM's own execute would return before the op's opExecute, keeping the old Path (None: it runs it):
+    a Job whose model is empty (its clones deleted), or a tool problem (tool_problem)."""
+    import PathScripts.PathUtils as PathUtils
+
+    job = PathUtils.findParentJob(obj)
+    if job is not None and not job.Model.Group:
+        return ModelGoneError("Base: the Job %s has no model left (deleted?): nothing to cut" % job.Label)
+    return tool_problem(obj)
+
+
+def tool_problem(obj: object) -> Optional[ToolError]:
+    """Why the op ``obj`` has no tool to cut with (None: it has one): no tool controller, a tool controller
+    without a tool bit or with tool number 0, a bit whose Diameter is 0 or not a finite length."""
+    tc = getattr(obj, "ToolController", None)
+    if tc is None:
+        return ToolError("ToolController: none: pick the tool controller the op cuts with")
+    tool = getattr(tc, "Tool", None)
+    if tool is None:
+        return ToolError("ToolController: %s has no tool bit: give it one" % tc.Label)
+    if int(getattr(tc, "ToolNumber", 1)) == 0:
+        return ToolError("ToolController: %s has tool number 0: give it the tool's number" % tc.Label)
+    diameter = getattr(tool, "Diameter", None)
+    value = float(diameter.Value) if hasattr(diameter, "Value") else float(diameter or 0.0)
+    if not (math.isfinite(value) and 0.0 < value < 1.0e6):
+        return ToolError("ToolController: %s's tool bit %s has Diameter=%s: must be a length greater than 0 and "
+                         "less than 1e6 mm" % (tc.Label, tool.Label, "%g" % value if math.isfinite(value) else value))
+    return None
 
 
 class WithValues:
@@ -121,6 +208,41 @@ class AddonOp(PathOp.ObjectOp):
     def isToolSupported(self, obj: object, tool: object) -> bool:
         hint = getattr(self, "_tc_hint", None)
         return tool == hint.Tool if hint is not None else True
+
+    def execute(self, obj: object) -> None:
+        """CAM's execute, remembering the tool it ran with (mustExecute). CAM's own returns early, the old Path
+        kept, when the Job's model is empty or the tool controller has no tool or its Diameter is 0 (cannot_run):
+        then the op's opExecute runs here instead, and its plan refuses the tool (check_tool) or the missing
+        faces as any other error."""
+        self._tool_seen = tool_signature(obj)
+        try:
+            problem = cannot_run(obj) if getattr(obj, "Active", True) else None
+        except Exception as e:  # a tool FreeCAD cannot read: the same refusal
+            problem = ToolError("ToolController: its tool cannot be read (%s: %s)" % (type(e).__name__, e))
+        if problem is None:
+            super().execute(obj)
+            return
+        self.commandlist = [Path.Command("(%s)" % obj.Label)]
+        self.opExecute(obj)
+        if getattr(self, "error", None) is None:  # an opExecute that does not plan: refuse here
+            self.report_error(obj, problem)
+        obj.Path = Path.Path(self.commandlist)
+
+    def check_tool(self, obj: object) -> None:
+        """ToolError (naming ToolController) when the op has no tool to cut with (see tool_problem)."""
+        problem = tool_problem(obj)
+        if problem is not None:
+            raise problem
+
+    def mustExecute(self, obj: object) -> bool:
+        """FreeCAD asks on every recompute: the op recomputes when its tool controller or tool bit changed since
+        it last ran (a tool bit's Diameter set to 0, a tool controller losing its tool)."""
+        seen = getattr(self, "_tool_seen", None)
+        return seen is not None and seen != tool_signature(obj)
+
+    def tool_changed(self, obj: object) -> bool:
+        """Whether the op's tool controller or tool bit changed since it last ran (the posts then plan again)."""
+        return self.mustExecute(obj)
 
     def report_error(self, obj: object, error: Exception) -> None:
         """An op that cannot cut: one error line "<Label>: <message>" in the

@@ -10,7 +10,9 @@ FreeCAD layer: duck-typed FreeCAD objects, no import of FreeCAD.
 """
 
 import contextlib
+import math
 import re
+import sys
 from typing import Iterator
 
 
@@ -89,3 +91,14 @@ def set_keyword_values(call: str, obj: object, keywords: dict, values: dict) -> 
         except Exception as e:
             raise ValueError("%s(): %s=%r: not a value for %s (%s: %s)"
                              % (call, key, value, keywords[key], type(e).__name__, e)) from None
+        if not finite(value) or not finite(getattr(obj, keywords[key])):
+            raise ValueError("%s(): %s=%r: %s must be a finite number" % (call, key, value, keywords[key]))
+
+
+def finite(value: object) -> bool:
+    """False for a number (a Quantity's Value) that is NaN or infinite, or the largest double FreeCAD keeps in
+    place of an infinite length; True for anything else (text, a link, a list)."""
+    number = getattr(value, "Value", value)
+    if isinstance(number, bool) or not isinstance(number, (int, float)):
+        return True
+    return math.isfinite(number) and abs(number) < sys.float_info.max

@@ -147,8 +147,9 @@ def test_a_face_narrower_than_the_wheel_gets_no_crossover():
     (TOP, dict(dress_count=2), "DressProgram: G83 P: must be programmed (D=2 dresses"),
     (TOP, dict(dress_program=10000), "DressProgram: G83 P=10000: must be a program number from 1 to 9999"),
     (TOP, dict(plunge_feed=0), "PlungeFeed=0: no feed (the tool controller's VertFeed is 0.0): set PlungeFeed"),
-    (TOP, dict(reciprocation_feed=-1), "ReciprocationFeed=-1.0 mm/s: must be a finite feed, 0 or more"),
-    (TOP, dict(overtravel=float("nan")), "Overtravel=nan: must be a finite length, 0 or more"),
+    (TOP, dict(reciprocation_feed=-1), "ReciprocationFeed=-60 mm/min: must be 0 <= ReciprocationFeed < 100000 "
+     "mm/min"),
+    (TOP, dict(overtravel=1e308), "Overtravel=1e+308 mm: must be 0 <= Overtravel < 100000 mm"),
 ])
 def test_bad_inputs_give_one_line_naming_the_property(shop, face, values, message):
     doc, block, job = shop

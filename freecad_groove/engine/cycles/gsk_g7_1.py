@@ -43,8 +43,7 @@ Choices the manual leaves open (docs/choices.md, "GSK G7.1" table, each with a t
   one before the call, else the path's first F).
 * In the region: G1/G2/G3 blocks of Z, C, R, F only, absolute (W and H, X/U,
   I/K, G0, M/S/T are refused, each with its reason); a block without a G code
-  keeps the last motion. Numbers need a decimal point (L: a whole number).
-* The C position at the call must be known (a C word before G7.1).
+  keeps the last motion. Numbers need a decimal point (L: a whole number). C must be known at the call.
 """
 
 import math

@@ -131,6 +131,8 @@ def _items(objects: Iterable[Any], axes: str) -> list:
                 plan = obj.Proxy.current_plan(obj)
             except ValueError as e:
                 raise PostError(str(e), label_of(obj)) from None
+            except Exception as e:  # a bug or a broken document: one line naming the op, never a traceback
+                raise PostError("%s: %s" % (type(e).__name__, e), label_of(obj)) from None
             if plan.axes != axes:
                 raise PostError("ReciprocationAxis=%s grinds with the grinder's X, Y, Z along FreeCAD %s, the post's "
                                 "--axes is %s: give --axes %s or change ReciprocationAxis"

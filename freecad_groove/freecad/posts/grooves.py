@@ -75,9 +75,8 @@ class GrooveOutput:
 
     def write(self) -> None:
         plans = self._plans()
-        if not plans:
-            self.program.note("%s: no groove (no face in Base)" % self.label)
-            return
+        if not plans:  # nothing to cut: never an op's frame without its grooves
+            raise PostError("Base: no face picked: the op has no groove to cut", op=self.label)
         cutting = groove_cutting(self.op)
         self.feed, self.per_rev = cutting.feed, cutting.per_rev
         self.program.set_feed_mode(cutting.per_rev)

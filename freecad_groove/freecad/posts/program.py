@@ -160,3 +160,5 @@ class Program(ProgramBuilder):
             raise cycle_post_error(label_of(groove) if groove is not None else label, exc) from None
         except (ProgramError, ValueError, ArithmeticError) as exc:
             raise PostError(str(exc), op=label) from None
+        except Exception as exc:  # a bug or a broken document: still one line naming the op, never a traceback
+            raise PostError("%s: %s" % (type(exc).__name__, exc), op=label) from None

@@ -42,7 +42,7 @@ def make_plunge_grind(job, face, name="PlungeGrind", tool_controller=None, recom
     dress_first (G83.1), wheel_width, retract, coolant_mode, comment.
 
     Raises TypeError (an unknown keyword) or ValueError (a face that is not
-    in the Job's model, a value a property refuses) with nothing left behind.
+    in the Job's model, a value a property refuses, a NaN or infinite number) with nothing left behind.
 
     Example::
 

@@ -27,6 +27,7 @@ from typing import List, Optional
 import FreeCAD
 import Part
 
+from ...freecad.addon_op import modelled_part
 from .properties import GrindInputError
 
 CLEAR_ABOVE_MM = 1e-3  # model material this far into the wheel's sweep and more is in its way
@@ -82,4 +83,4 @@ def check_wheel_body(job: object, face_name: str, sweep: List[Part.Shape], diame
             raise GrindInputError(
                 "Base: the wheel's body (diameter %g) meets %s beside %s: a wall within the wheel's radius of a "
                 "reversal point (reduce Overtravel, grind with a smaller wheel, or grind another face)"
-                % (diameter, job.Proxy.baseObject(job, model).Label, face_name), ("Base", "Overtravel"))
+                % (diameter, modelled_part(job, model).Label, face_name), ("Base", "Overtravel"))

@@ -50,12 +50,13 @@ import PathScripts.PathUtils as PathUtils
 from ...engine.cycles.ab_g83 import G83, G83_1
 from ...engine.errors import CycleError
 from ...engine.moves import MachineState
-from ...freecad.addon_op import AddonOp, create_op, op_error  # noqa: F401 - its API
+from ...freecad.addon_op import AddonOp, create_op, modelled_part, op_error  # noqa: F401 - its API
+from ...freecad.bounds import check_bounds
 from ...freecad.units import SECONDS_PER_MINUTE, length_mm
 from .clearance import CLEAR_ABOVE_MM, check_wheel_body, wheel_sweep
 from .path import path_commands
 from .plan import TOLERANCE, FlatFace, GrindPlan, read_face, rounded
-from .properties import DERIVED, PROPERTIES, WORD_PROPERTIES, GrindInputError
+from .properties import BOUNDS, DERIVED, MAX_WORD, PROPERTIES, WORD_PROPERTIES, GrindInputError
 
 
 def _named(error: CycleError) -> GrindInputError:
@@ -106,7 +107,8 @@ class ObjectPlungeGrind(AddonOp):
     def current_plan(self, obj: object) -> GrindPlan:
         """The plan of the last recompute while nothing touched the op, else a fresh one (the posts' entry)."""
         plan = getattr(self, "_plan", None)
-        if plan is not None and getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)):
+        if plan is not None and getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)) \
+                and not self.tool_changed(obj):
             return plan
         return self.plan(obj)
 
@@ -118,7 +120,10 @@ class ObjectPlungeGrind(AddonOp):
             raise GrindInputError("Base: pick exactly one flat face (%d picked)" % len(picked), ("Base",))
         base, sub = picked[0]
         job = PathUtils.findParentJob(obj)
-        named = job.Proxy.baseObject(job, base) if job is not None else base  # the user's object, not the clone
+        try:
+            named = modelled_part(job, base)  # the user's object, not the clone
+        except ValueError as e:
+            raise GrindInputError(str(e), ("Base",)) from None
         name = "%s.%s" % (named.Label, sub)
         try:
             shape = base.Shape.getElement(sub)
@@ -131,6 +136,9 @@ class ObjectPlungeGrind(AddonOp):
         """The tool bit's Width, else WheelWidth; GrindInputError when neither is above 0."""
         bit = getattr(getattr(obj, "ToolController", None), "Tool", None)
         width = length_mm(bit.Width) if getattr(bit, "Width", None) is not None else obj.WheelWidth.Value
+        if not (math.isfinite(width) and width < MAX_WORD):
+            raise GrindInputError("WheelWidth: the tool bit's Width=%s: must be a length below %g mm"
+                                  % (width, MAX_WORD), ("WheelWidth",))
         if not width > 0:
             raise GrindInputError("WheelWidth: the wheel's width is unknown: the tool bit has no Width (use a "
                                   "grinding wheel tool bit) and WheelWidth is 0", ("WheelWidth",))
@@ -194,7 +202,9 @@ class ObjectPlungeGrind(AddonOp):
 
     def plan(self, obj: object) -> GrindPlan:
         """The GrindPlan of ``obj``; GrindInputError naming the property to fix."""
+        check_bounds(obj, BOUNDS, GrindInputError)
         face = self.face(obj)
+        self.check_tool(obj)
         width = self.wheel_width(obj)
         call, start = self.call(obj, face, width)
         try:
@@ -248,7 +258,7 @@ class ObjectPlungeGrind(AddonOp):
                 raise GrindInputError(
                     "Base: the wheel's path over %s (X%g..%g, Y%g..%g) meets %s above the face: a wall within the "
                     "Overtravel or a pocket floor (reduce Overtravel, or grind another face)"
-                    % (face.name, x0, x1, y0, y1, job.Proxy.baseObject(job, model).Label),
+                    % (face.name, x0, x1, y0, y1, modelled_part(job, model).Label),
                     ("Base", "Overtravel"))
 
     def safe_z(self, obj: object) -> float:

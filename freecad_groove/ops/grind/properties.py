@@ -7,6 +7,8 @@ FreeCAD layer: imports FreeCAD (for the tooltips' translation marker), never Qt.
 
 import FreeCAD
 
+from .bounds import BOUNDS, MAX_WORD  # noqa: F401 - this module's API too
+
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
 GROUP = "Plunge grind"

@@ -6,6 +6,8 @@
     links.py       the safe envelope around the Job's model and the link rapids along it
     path.py        the op's Path from its plans
     cutting.py     its lathe feeds and speeds (its own, the tool controller's, the defaults)
+    bounds.py      the range of each numeric property (docs/op-bounds.md), checked before it plans
+    reach.py       the grooving blade's free reach (CuttingEdgeHeight) against the groove's Depth
     cache.py       its plans kept in the saved document, with the fingerprint of their inputs
     model.py       a groove read from the modelled part (the turned section's notch)
     api.py         make_groove(): a Groove in a Job from a script

@@ -66,7 +66,7 @@ def make_groove(job, faces, name="Groove", tool_controller=None, recompute=True,
 
     Raises TypeError (an unknown keyword) or ValueError (no faces, an object
     that is not in the Job's model, a name that is not one of its faces, a
-    value the property refuses) with nothing left behind in the Job.
+    value the property refuses, a NaN or infinite number) with nothing left behind in the Job.
 
     No dimension (position, width, depth, flank angles, corners): the groove
     is read from the model (model_groove=True); with it, dimensions override.

@@ -16,8 +16,9 @@ import math
 from dataclasses import dataclass
 from typing import Optional
 
-from ...engine.numbers import format_decimal
+from ...engine.numbers import MAX_WORD, format_decimal
 from ...freecad.units import SECONDS_PER_MINUTE, feed_mm_per_min, length_mm
+from .bounds import BOUNDS
 from .properties import GrooveInputError
 
 DEFAULT_FEED_PER_REV = 0.05  # mm/rev: when neither the op nor its tool controller gives a feed
@@ -71,11 +72,17 @@ class CuttingData:
         return per_min / SECONDS_PER_MINUTE
 
 
+_BOUNDS = {b.name: b for b in BOUNDS}
+
+
 def _value(op: object, name: str, to_number=float) -> float:
-    """Op property ``name`` as a number; GrooveInputError unless finite and not negative."""
+    """Op property ``name`` as a number (FreeCAD's internal unit); GrooveInputError unless in its range
+    (bounds.py: finite, 0 or more, at most the documented largest)."""
     value = to_number(getattr(op, name, 0.0) or 0.0)
-    if not (math.isfinite(value) and value >= 0):
-        raise GrooveInputError("%s=%r: must be a number, 0 or more (0 = unset)" % (name, value), (name,))
+    bound = _BOUNDS[name]
+    message = bound.problem(value * bound.scale)
+    if message is not None:
+        raise GrooveInputError(message + " (0 = unset)", (name,))
     return value
 
 
@@ -91,7 +98,10 @@ def _feed(op: object, tool_controller: object) -> tuple:
     if per_rev > 0:
         return per_rev, True, "the op's FeedPerRev"
     horizontal = feed_mm_per_min(length_mm(tool_controller.HorizFeed)) if tool_controller is not None else 0.0
-    if math.isfinite(horizontal) and horizontal > 0:
+    if not (math.isfinite(horizontal) and horizontal < MAX_WORD):
+        raise GrooveInputError("HorizFeed=%g mm/min: the tool controller %s's HorizFeed must be a feed below %g "
+                               "mm/min" % (horizontal, tool_controller.Label, MAX_WORD), ("ToolController",))
+    if horizontal > 0:
         return horizontal, False, "the tool controller's HorizFeed"
     return DEFAULT_FEED_PER_REV, True, "default: the op's FeedPerRev and the tool controller's HorizFeed are 0"
 

@@ -72,10 +72,19 @@ import PathScripts.PathUtils as PathUtils
 from ...engine import GroovingTool, Settings
 from ...engine.cycles.cycle93 import DEFAULT_VRT_MM, Cycle93
 from ...engine.numbers import format_value
-from ...freecad.addon_op import AddonOp, WithValues, create_op, document_object, op_error  # noqa: F401 - its API
+from ...freecad.addon_op import (  # noqa: F401 - its API
+    AddonOp,
+    WithValues,
+    create_op,
+    document_object,
+    modelled_part,
+    op_error,
+)
+from ...freecad.bounds import first_problem
 from ...freecad.faces import GrooveFace, analyse_face, element_name
 from ...freecad.units import feed_mm_per_min, length_mm
 from . import cache
+from .bounds import TOOL_BOUNDS
 from .cutting import CuttingData, cutting_data
 from .links import SafeEnvelope
 from .model import MODEL_VALUES, ModelGroove, not_overridden, read_picked_groove, with_model_hint
@@ -91,9 +100,11 @@ from .properties import (  # noqa: F401 - this module's API too
     GrooveInputError,
     check_finite,
     corner_value,
+    describe_cycle93_parameter,
     error_properties,
     finite_or_error,
 )
+from .reach import check_reach
 
 # TYP units digit for "right" grooves: (longitudinal, external) -> TYP
 TYP_RIGHT = {(True, True): 5, (True, False): 7, (False, True): 6, (False, False): 8}
@@ -139,6 +150,9 @@ class ObjectGroove(AddonOp):
         """report_error, the derived properties cleared first (``clear_derived``)."""
         if clear_derived:
             self._write_derived(obj, [])
+        named = describe_cycle93_parameter(getattr(error, "parameter", None) or "-")
+        if named and not str(error).startswith(named):  # the property to fix first, as the posts say it
+            error = GrooveInputError("%s: %s" % (named, error), error_properties(error))
         self.report_error(obj, error)
 
     def current_plan(self, obj: object) -> list[GroovePlan]:
@@ -150,7 +164,8 @@ class ObjectGroove(AddonOp):
         while the op stays untouched: a post after reopening a document whose
         saved plans no longer match, or that saved none, plans once, not at
         every post."""
-        untouched = getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State))
+        untouched = getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)) \
+            and not self.tool_changed(obj)
         if untouched:
             plans = getattr(self, "_plans", None)
             if plans is None:
@@ -304,7 +319,10 @@ class ObjectGroove(AddonOp):
         for base, subs in obj.Base or []:
             if isinstance(subs, str):
                 subs = (subs,)
-            named = job.Proxy.baseObject(job, base) if job is not None else base
+            try:
+                named = modelled_part(job, base)
+            except ValueError as e:
+                raise GrooveInputError(str(e), ("Base",)) from None
             for sub in subs:
                 name = element_name(named, sub or "(whole object)")
                 if not sub:
@@ -338,11 +356,17 @@ class ObjectGroove(AddonOp):
         width = obj.ToolWidth.Value
         radius = obj.ToolCornerRadius.Value
         if bit is not None:
-            if getattr(bit, "Width", None) is not None:
-                width = finite_or_error(length_mm(bit.Width), "the tool bit's Width", ("ToolWidth",))
-            if getattr(bit, "CornerRadius", None) is not None:
-                radius = finite_or_error(length_mm(bit.CornerRadius), "the tool bit's CornerRadius",
-                                         ("ToolCornerRadius",))
+            bit_values = {b.name: getattr(bit, b.name) for b in TOOL_BOUNDS if getattr(bit, b.name, None) is not None}
+            problem = first_problem(bit_values, TOOL_BOUNDS)
+            if problem is not None:
+                name, message = problem
+                owner = {"Width": "ToolWidth", "CornerRadius": "ToolCornerRadius"}.get(name, "ToolController")
+                raise GrooveInputError("the tool bit's %s (%s)" % (message, getattr(bit, "Label", "tool bit")),
+                                       (owner,))
+            if "Width" in bit_values:
+                width = length_mm(bit.Width)
+            if "CornerRadius" in bit_values:
+                radius = length_mm(bit.CornerRadius)
         if not width > 0:  # no default blade: a wrong width cuts a wrong groove
             raise GrooveInputError(
                 "ToolWidth: the blade's width is unknown: the tool controller %s has no grooving blade (its tool "
@@ -409,10 +433,12 @@ class ObjectGroove(AddonOp):
             check_finite(obj)
             faces = self.groove_faces(obj)
         if not faces:
-            return []
+            raise GrooveInputError("Base: no face picked: pick the face(s) to groove (nothing to cut)", ("Base",))
         count = self._check_count(obj)
         job = self._parent_job(obj)
+        self.check_tool(obj)
         settings = self.settings(obj)
+        check_reach(obj)
         envelope = self.envelope(obj, job)
         feed = self.feed_mm_per_min(obj)
         stock = getattr(getattr(job, "Stock", None), "Shape", None)

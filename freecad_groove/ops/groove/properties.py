@@ -13,7 +13,8 @@ from typing import Optional, Tuple
 import FreeCAD
 
 from ...engine.cycles.cycle93 import ALARM_WIDTH
-from ...freecad.units import length_mm
+from ...freecad.bounds import check_bounds
+from .bounds import BOUNDS
 
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
@@ -191,17 +192,11 @@ def error_properties(error: Exception) -> Tuple[str, ...]:
     return props
 
 
-NUMBER_TYPES = ("App::PropertyLength", "App::PropertyDistance", "App::PropertyAngle", "App::PropertyFloat")
-
-
 def check_finite(obj: object) -> None:
-    """GrooveInputError naming the first numeric op property that is NaN or
-    infinite (FreeCAD accepts both from a script or an expression)."""
-    for type_id, name, _group, _tip, _default in PROPERTIES:
-        if type_id in NUMBER_TYPES and name not in DERIVED:
-            value = length_mm(getattr(obj, name))
-            if not math.isfinite(value):
-                raise GrooveInputError("%s=%s: must be a finite number" % (name, value), (name,))
+    """GrooveInputError naming the first numeric op property out of its range
+    (bounds.py): NaN, an infinity (FreeCAD takes both from a script or an
+    expression), a number beyond what a program can hold."""
+    check_bounds(obj, BOUNDS, GrooveInputError)
 
 
 def finite_or_error(value: float, what: str, properties: tuple) -> float:

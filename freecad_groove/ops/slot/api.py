@@ -56,7 +56,7 @@ def make_cylinder_slot(job, face, path, name="CylinderSlot", tool_controller=Non
     ``recompute``: then a slot that cannot be cut reports its message
     (op.op_error) instead of raising.
 
-    Raises TypeError (unknown keyword) or ValueError (a bad element or value)
+    Raises TypeError (unknown keyword) or ValueError (a bad element or value, a NaN or infinite number)
     with nothing left behind in the Job.
 
     Example::

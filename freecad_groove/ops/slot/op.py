@@ -40,7 +40,8 @@ import PathScripts.PathUtils as PathUtils
 
 from ...engine.cycles.gsk_g7_1 import GskG7_1
 from ...engine.moves import MachineState
-from ...freecad.addon_op import AddonOp, WithValues, create_op, op_error  # noqa: F401 - its API
+from ...freecad.addon_op import AddonOp, WithValues, create_op, modelled_part, op_error  # noqa: F401 - its API
+from ...freecad.bounds import check_bounds
 from ...freecad.faces import element_name
 from ...freecad.units import length_mm
 from . import reach
@@ -48,7 +49,7 @@ from .cutting import slot_cutting
 from .developed import SlotCylinder, developed_path, read_cylinder
 from .path import path_commands
 from .plan import SlotPlan, region_blocks, rounded
-from .properties import DERIVED, GROUP, LENGTHS, PROPERTIES, SlotInputError, finite_length
+from .properties import BOUNDS, DERIVED, GROUP, LENGTHS, PROPERTIES, SlotInputError, finite_length
 
 
 class ObjectCylinderSlot(AddonOp):
@@ -98,7 +99,8 @@ class ObjectCylinderSlot(AddonOp):
     def current_plan(self, obj: object) -> SlotPlan:
         """The plan of the last recompute while nothing touched the op since, else a new one (the posts)."""
         plan = getattr(self, "_plan", None)
-        if plan is not None and getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)):
+        if plan is not None and getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)) \
+                and not self.tool_changed(obj):
             return plan
         return self.plan(obj)
 
@@ -107,7 +109,10 @@ class ObjectCylinderSlot(AddonOp):
         job = PathUtils.findParentJob(obj)
         faces, edges = [], []
         for base, subs in obj.Base or []:
-            named = job.Proxy.baseObject(job, base) if job is not None else base
+            try:
+                named = modelled_part(job, base)
+            except ValueError as e:
+                raise SlotInputError(str(e), ("Base",)) from None
             for sub in (subs,) if isinstance(subs, str) else subs:
                 name = element_name(named, sub or "(whole object)")
                 try:
@@ -121,8 +126,9 @@ class ObjectCylinderSlot(AddonOp):
         return faces[0], edges
 
     def tool_diameter(self, obj: object) -> float:
+        """The end mill's Diameter in mm (0 without one; SlotInputError when it is not a finite length)."""
         tool = getattr(getattr(obj, "ToolController", None), "Tool", None)
-        return length_mm(getattr(tool, "Diameter", 0.0)) if tool is not None else 0.0
+        return (reach.bit_length(tool, "Diameter") or 0.0) if tool is not None else 0.0
 
     def region(self, obj: object, cylinder: SlotCylinder, points: list, feed: float) -> GskG7_1:
         depth, allowance, retract = (finite_length(obj, n) for n in ("Depth", "Allowance", "Retract"))
@@ -141,6 +147,7 @@ class ObjectCylinderSlot(AddonOp):
 
     def plan(self, obj: object) -> SlotPlan:
         """The region and its moves (SlotInputError/CycleError naming what is wrong)."""
+        check_bounds(obj, BOUNDS, SlotInputError)
         (face, face_name), edges = self.picked(obj)
         cylinder = read_cylinder(face, face_name)
         sketch = getattr(obj, "DevelopedSketch", None)
@@ -156,6 +163,7 @@ class ObjectCylinderSlot(AddonOp):
         tool = getattr(obj.ToolController, "Tool", None)  # region() refused an op without a tool controller
         tool_name = getattr(tool, "Label", obj.ToolController.Label)
         reach.check_tool(tool, tool_name, -region.J / 2.0)
+        self.check_tool(obj)
         first = region.path[0]
         start = MachineState(x=region.clearance_radius(), z=rounded(points[0][0]), c=rounded(points[0][1]),
                              feed=first.f)

@@ -8,6 +8,7 @@ FreeCAD layer: plain data, no import of FreeCAD.
 import math
 from typing import Tuple
 
+from ...freecad.bounds import Bound
 from ...freecad.units import length_mm
 
 GROUP = "Cylinder slot"
@@ -29,6 +30,18 @@ PROPERTIES = (
      "(read only).", ""),
 )
 DERIVED = ("SlotWidth", "Region", "FeedsAndSpeeds")
+
+# The ranges of the numeric properties (freecad/bounds.py; docs/op-bounds.md): the program writes Depth,
+# Allowance and Retract doubled (diameters J, K, R), below G7.1's 100000.
+MAX_LENGTH_MM = 50000.0
+_WORD = "written doubled (J, K, R), below G7.1's 100000 (engine gsk_g7_1 MAX_WORD)"
+BOUNDS = (
+    Bound("Depth", 0.0, MAX_LENGTH_MM, "mm", "greater than 0; at most the end mill's CuttingEdgeHeight (the op)",
+          _WORD),
+    Bound("Passes", 1, 9999, "", "", "G7.1's L (engine gsk_g7_1 MAX_PASSES)", high_open=False),
+    Bound("Allowance", 0.0, MAX_LENGTH_MM, "mm", "less than Depth (the op)", _WORD),
+    Bound("Retract", 0.0, MAX_LENGTH_MM, "mm", "greater than 0 (the op)", _WORD),
+)
 LENGTHS = tuple(name for type_id, name, _tip, _default in PROPERTIES if type_id == "App::PropertyLength")
 
 

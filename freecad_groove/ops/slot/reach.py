@@ -19,10 +19,11 @@ points along X at the cylinder; the rules (docs/cylinder-slot.md, its table):
   warning naming by how much.
 """
 
+import math
 from typing import List, Optional, Tuple
 
 from ...freecad.units import length_mm
-from .properties import SlotInputError
+from .properties import MAX_LENGTH_MM, SlotInputError
 
 TOLERANCE = 1e-6  # mm
 
@@ -33,6 +34,9 @@ def bit_length(tool: object, name: str) -> Optional[float]:
     if value is None:
         return None
     value = length_mm(value)
+    if not (math.isfinite(value) and value < MAX_LENGTH_MM):
+        raise SlotInputError("ToolController: the tool bit's %s=%s: must be a length below %g mm"
+                             % (name, value, MAX_LENGTH_MM), ("ToolController",))
     return value if value > 0 else None
 
 
