@@ -29,8 +29,17 @@ tests/test_demo.py.
 """
 
 from .jobs import make_grind_job, make_mill_job, make_slot_job
-from .posting import (CYCLE_WORDS, OUTPUTS, PROGRAMS, SYSTEMS, CycleWordMissing, check_cycle_words, load_post,
-                      load_post_file, native_calls)
+from .posting import (
+    CYCLE_WORDS,
+    OUTPUTS,
+    PROGRAMS,
+    SYSTEMS,
+    CycleWordMissing,
+    check_cycle_words,
+    load_post,
+    load_post_file,
+    native_calls,
+)
 from .runner import TURNING_CHECK_FILE, TurningCheckNotClean, main, run
 from .shaft import DOCUMENT, FACES, OPS, PROFILE, face_names, make_job, make_ops, make_part, turned_stock
 

@@ -22,7 +22,7 @@ SLOT_RADIUS = 18.0
 SLOT = dict(depth=1.5, passes=2, allowance=0.2, retract=1)
 SLOT_FEED, LIVE_TOOL_RPM = "120 mm/min", 1000
 
-GRIND_AT = (40.0, -70.0, 0.0)
+GRIND_AT = (40.0, 100.0, 0.0)
 GRIND_SIZE = (100.0, 40.0, 20.0)
 WHEEL_RPM = 3000
 GRIND = dict(depth=0.1, start_clearance=0.05, plunge_pick=0.02, cross_pick=5, spark_out_passes=1,
@@ -61,7 +61,7 @@ def make_slot_job(doc, shaft, neck_face):
     job = PathJob.Create("SlotJob", [shaft, line])
     job.Label = "Slot Job"
     tc = job.Tools.Group[0]
-    tc.Label = "TC: End mill (live tool)"
+    tc.Label = "TC: Live tool end mill"
     tc.HorizFeed = SLOT_FEED
     tc.SpindleSpeed = LIVE_TOOL_RPM
     doc.recompute()
