@@ -118,7 +118,7 @@ def run(out_dir):
 
 def _describe(entry):
     calls = ", ".join("%d %s" % (n, c) for c, n in sorted(entry["native_calls"].items()))
-    return "%-6s %-15s %-8s %5d lines%s" % (entry["system"], entry["post"], entry["mode"], entry["lines"],
+    return "%-6s %-16s %-8s %5d lines%s" % (entry["system"], entry["post"], entry["mode"], entry["lines"],
                                              ", native: " + calls if calls else "")
 
 
