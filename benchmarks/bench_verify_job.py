@@ -1,4 +1,4 @@
-"""Benchmark of verify_job() on the demo Job (freecad_groove/demo.py: the
+"""Benchmark of verify_job() on the demo Job (freecad_groove/demo/shaft.py: the
 stepped shaft with five Groove ops): prints figures, asserts nothing. Runs
 inside FreeCAD (freecadcmd), headless, with shapely importable (the wrapper
 benchmarks/bench_verify_job.sh provides it from the host, as the tests do):

@@ -75,7 +75,7 @@ def files(*patterns):
         (("freecad_groove/cli_verify.py",), FREECAD | GUI | FREECAD_LAYER | GUI_LAYER),
         # The package's make_groove() loads the FreeCAD layer lazily, on its first call.
         (("freecad_groove/__init__.py",), FREECAD | GUI | GUI_LAYER),
-        (("freecad_groove/freecad/*.py", "freecad_groove/freecad/posts/*.py", "freecad_groove/demo.py",
+        (("freecad_groove/freecad/*.py", "freecad_groove/freecad/posts/*.py", "freecad_groove/demo/*.py",
           "postprocessors/*_post.py", "Init.py"),
          GUI | GUI_LAYER),
         # each op's folder but its gui/ package: the FreeCAD layer

@@ -1,15 +1,4 @@
-"""Headless FreeCAD demo: a turned part, a CAM Job with every kind of groove,
-and its program from every post.
-
-Runs inside FreeCAD (``freecadcmd``; FreeCAD, Part and Path only, no Qt and
-no FreeCADGui)::
-
-    import freecad_groove.demo as demo
-    summary = demo.run("/tmp/groove-demo")     # a dict, also summary.json
-
-``scripts/demo`` runs it in FreeCAD 1.1 after the command-line examples and
-copies the files to ``out/freecad/`` (see that script); :func:`main` is its
-entry point.
+"""The demo's lathe part: a turned shaft, its Groove Job (tool controller, five Groove ops).
 
 The part ("Shaft", a ``Part::Revolution`` of the half section ``PROFILE``
 about the Z axis, in mm)::
@@ -46,33 +35,7 @@ with flood coolant, in machining order (``OPS``):
   groove whose finished profile passes the axis (a real parting tool is fed
   a little past centre), and it has no parting-specific moves (no slower
   feed near the centre, no spindle speed clamp, no bar catcher M code).
-
-Files written into ``out_dir`` (``OUTPUTS``):
-
-* ``demo_part.FCStd``: the document (part, Job, tool controller, ops);
-* one program per post and mode: ``demo_part_sinumerik_native.mpf``
-  (CYCLE93), ``demo_part_sinumerik_expanded.mpf``, ``demo_part_ab9_native.nc``
-  (G77/G76), ``demo_part_ab9_expanded.nc``, ``demo_part_fanuc_native.nc`` and
-  ``demo_part_haas_native.nc`` (G75/G74), their ``_expanded`` twins, and
-  ``demo_part_linuxcnc.ngc`` (LinuxCNC has no grooving cycle: always
-  expanded). The pecking cycles of Allen-Bradley, Fanuc and Haas cut only
-  plain grooves: the cone groove is expanded in their native files too, with
-  a comment saying why;
-* ``summary.txt`` (one line per file) and ``summary.json`` (the same, plus
-  the tool, the peck retract and the ops, for tests/test_demo.py).
-
-Each post is the script post in ``postprocessors/`` loaded from its file, as
-FreeCAD loads it, and called as FreeCAD calls it:
-``export([tool controller, op, ...], filename, arguments)``.
 """
-
-import json
-import os
-import re
-import sys
-import time
-
-POST_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "postprocessors")
 
 # (radius, z) of the part's half section, revolved about Z.
 PROFILE = [(0, 0), (15, 0), (15, 12), (25, 12), (25, 40), (18, 40), (18, 65), (14, 75), (8, 75), (8, 50), (0, 50),
@@ -93,6 +56,7 @@ FACES = {
     "shoulder": lambda f: f.surface == "plane" and f.external and abs(f.z_min - 40) < 1e-6,
     "cone": lambda f: f.surface == "cone",
     "bore": lambda f: f.surface == "cylinder" and not f.external,
+    "neck": lambda f: f.surface == "cylinder" and f.external and abs(f.r_max - 18) < 1e-6,  # the Cylinder slot's
 }
 
 # (op label, face key, make_groove keywords), in machining order.
@@ -105,29 +69,6 @@ OPS = [
                                  edge_corner2_type="Radius", base_allowance=0.1, flank_allowance=0.1)),
     ("Cut-off", "bar", dict(position=4, width=3, depth=15, infeed=2)),
 ]
-
-# (post, mode, post arguments, file name), one program each.
-OUTPUTS = [
-    ("sinumerik", "native", "", DOCUMENT + "_sinumerik_native.mpf"),
-    ("sinumerik", "expanded", "--expand-cycles", DOCUMENT + "_sinumerik_expanded.mpf"),
-    ("ab9", "native", "", DOCUMENT + "_ab9_native.nc"),
-    ("ab9", "expanded", "--expand-cycles", DOCUMENT + "_ab9_expanded.nc"),
-    ("fanuc", "native", "", DOCUMENT + "_fanuc_native.nc"),
-    ("fanuc", "expanded", "--expand-cycles", DOCUMENT + "_fanuc_expanded.nc"),
-    ("haas", "native", "", DOCUMENT + "_haas_native.nc"),
-    ("haas", "expanded", "--expand-cycles", DOCUMENT + "_haas_expanded.nc"),
-    ("linuxcnc", "expanded", "", DOCUMENT + "_linuxcnc.ngc"),
-]
-
-# A native call's first block (not the "G75 R(e)" block of Fanuc's two-block G75/G74).
-NATIVE_CALL = re.compile(r"^(CYCLE93|G7[4-7])\b(?! R-?[\d.]+$)", re.M)
-
-
-def say(text):
-    import FreeCAD
-
-    FreeCAD.Console.PrintMessage("freecad-groove demo: %s\n" % text)
-
 
 # -- the part and the Job -----------------------------------------------------------------
 
@@ -153,7 +94,7 @@ def make_part(doc):
 
 def face_names(shape):
     """{face key: "FaceN"} for every key of FACES (exactly one face each)."""
-    from .freecad.faces import analyse_face
+    from ..freecad.faces import analyse_face
 
     found = {key: [] for key in FACES}
     for i, face in enumerate(shape.Faces):
@@ -205,7 +146,7 @@ def make_job(doc, part):
     import Path.Tool.Controller as PathToolController
 
     job = PathJob.Create("Job", [part])
-    job.Label = "Demo part"
+    job.Label = "Groove Job"
     turned_stock(doc, job, part)
     default = list(job.Tools.Group)
     tc = PathToolController.Create("TC: Grooving blade 3 mm", toolNumber=TOOL_NUMBER, assignViewProvider=False)
@@ -245,8 +186,8 @@ def make_job(doc, part):
 
 def make_ops(doc, job, part, tc):
     """The Groove ops of OPS in ``job``; each must recompute without error."""
-    from .freecad.addon_op import op_error
-    from .ops.groove.api import make_groove
+    from ..freecad.addon_op import op_error
+    from ..ops.groove.api import make_groove
 
     names = face_names(part.Shape)
     ops = []
@@ -260,137 +201,3 @@ def make_ops(doc, job, part, tc):
     if bad:
         raise RuntimeError("Groove op(s) failed to recompute: " + "; ".join(bad))
     return ops
-
-
-# -- posting ------------------------------------------------------------------------------
-
-_POSTS = {}
-
-
-def load_post(name):
-    """postprocessors/<name>_lathe_post.py as a module, loaded from its file like FreeCAD loads a script post."""
-    import importlib.util
-
-    if name not in _POSTS:
-        path = os.path.join(POST_DIR, name + "_lathe_post.py")
-        spec = importlib.util.spec_from_file_location(name + "_lathe_post", path)
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
-        _POSTS[name] = module
-    return _POSTS[name]
-
-
-def post_all(objects, out_dir):
-    """Every program of OUTPUTS into ``out_dir``: [entry dict]."""
-    entries = []
-    for name, mode, args, filename in OUTPUTS:
-        path = os.path.join(out_dir, filename)
-        t0 = time.perf_counter()
-        text = load_post(name).export(objects, path, args)
-        seconds = time.perf_counter() - t0
-        calls = {}
-        for call in NATIVE_CALL.findall(text):
-            calls[call] = calls.get(call, 0) + 1
-        entries.append({
-            "post": name + "_lathe", "dialect": name, "mode": mode, "args": args, "file": filename,
-            "bytes": os.path.getsize(path), "lines": text.count("\n"), "native_calls": calls,
-            "seconds": round(seconds, 4),
-        })
-    return entries
-
-
-# -- the demo -----------------------------------------------------------------------------
-
-
-def _describe(entry):
-    calls = ", ".join("%d %s" % (n, c) for c, n in sorted(entry["native_calls"].items()))
-    what = "%s %s" % (entry["post"], entry["mode"] + (" (%s)" % entry["args"] if entry["args"] else ""))
-    return "%-36s %-36s %5d lines%s" % (entry["file"], what, entry["lines"], ", native: " + calls if calls else "")
-
-
-def run(out_dir):
-    """Build the part, the Job and the ops, save ``out_dir``/demo_part.FCStd,
-    write every post's program into ``out_dir`` and the summary
-    (summary.txt, summary.json, FreeCAD's console). Returns the summary dict.
-    Raises on any failure (an op that does not recompute, a post error)."""
-    import FreeCAD
-
-    t0 = time.perf_counter()
-    out_dir = os.path.abspath(out_dir)
-    os.makedirs(out_dir, exist_ok=True)
-    doc = FreeCAD.newDocument(DOCUMENT)
-    name = doc.Name
-    try:
-        FreeCAD.setActiveDocument(name)
-        part = make_part(doc)
-        job, tc = make_job(doc, part)
-        ops = make_ops(doc, job, part, tc)
-        document = os.path.join(out_dir, DOCUMENT + ".FCStd")
-        doc.saveAs(document)
-        entries = post_all([tc] + ops, out_dir)
-        summary = {
-            "freecad": ".".join(FreeCAD.Version()[:3]),
-            "python": sys.version.split()[0],
-            "document": os.path.basename(document),
-            "tool": {"number": TOOL_NUMBER, "width": TOOL_WIDTH, "corner_radius": TOOL_CORNER_RADIUS,
-                     "reach": TOOL_REACH,
-                     "reference": "minus"},
-            # every op keeps Retract 0 (= 1 mm): the peck retract e of the pecking cycles
-            "peck_retract": 1.0,
-            "ops": [{
-                "label": op.Label, "kind": op.GrooveKind, "typ": op.TYP, "grooves": len(op.Proxy.plan(op)),
-                "faces": ["%s.%s" % (part.Label, s) for _b, subs in op.Base for s in subs],
-            } for op in ops],
-            "outputs": entries,
-            "seconds": None,
-        }
-    finally:
-        FreeCAD.closeDocument(name)
-    summary["seconds"] = round(time.perf_counter() - t0, 3)
-    lines = ["FreeCAD %s demo: part, Job and %d Groove ops in %s" % (summary["freecad"], len(ops),
-                                                                       summary["document"])]
-    for op in summary["ops"]:
-        lines.append("  op %-18s %-40s TYP %2d, %d groove(s) on %s" % (
-            op["label"], op["kind"], op["typ"], op["grooves"], ", ".join(op["faces"])))
-    lines.append("programs:")
-    lines += ["  " + _describe(e) for e in entries]
-    with open(os.path.join(out_dir, "summary.txt"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    with open(os.path.join(out_dir, "summary.json"), "w") as f:
-        json.dump(summary, f, indent=1)
-    for line in lines:
-        say(line)
-    say("files in %s (%.1f s)" % (out_dir, summary["seconds"]))
-    return summary
-
-
-def main():
-    """Entry point for ``freecadcmd -c``: run() into $FREECAD_GROOVE_DEMO_OUT
-    (relative to $FREECAD_GROOVE_SHARE when that is set; default: the share,
-    else ./groove-demo), then end FreeCAD through sys.exit: status 0, or 1
-    after writing the traceback to demo_error.txt there and to the console."""
-    import traceback
-
-    share = os.environ.get("FREECAD_GROOVE_SHARE", "")
-    out_dir = os.environ.get("FREECAD_GROOVE_DEMO_OUT", "") or (share or "groove-demo")
-    if not os.path.isabs(out_dir):
-        out_dir = os.path.join(share or os.getcwd(), out_dir)
-    status = 0
-    try:
-        sys.dont_write_bytecode = True  # the checkout may be mounted read-only
-        run(out_dir)
-    except BaseException:  # noqa: B902 - reported in the file and on the console
-        status = 1
-        text = traceback.format_exc()
-        try:
-            os.makedirs(out_dir, exist_ok=True)
-            with open(os.path.join(out_dir, "demo_error.txt"), "w") as f:
-                f.write(text)
-        except OSError:
-            pass
-        import FreeCAD
-
-        FreeCAD.Console.PrintError("freecad-groove demo failed:\n%s" % text)
-    sys.stdout.flush()
-    sys.stderr.flush()
-    sys.exit(status)  # freecadcmd ends with this status (os._exit would lose console output)
