@@ -5,7 +5,7 @@ the FreeCAD operation and GUI layers import FreeCAD only when they are used:
 ``freecad_groove.make_groove`` loads the FreeCAD layer on its first call.
 """
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 
 
 def make_groove(*args, **kwargs):

@@ -237,8 +237,12 @@ def _with_plunges(path):
 
 def _changed_on_purpose_since_3d18f68(key, program):
     """A program 3d18f68 posted, with what the one output layer changed on purpose since (issue 19): the
-    grinder posts' LinuxCNC header has its title first, as every target's (engine/output/writer.py header)."""
-    lines = program.splitlines()
+    grinder posts' LinuxCNC header has its title first, as every target's (engine/output/writer.py header); and the
+    release the header names (0.2.0, issue 23)."""
+    import freecad_groove
+
+    lines = program.replace("by freecad-groove 0.1.0;", "by freecad-groove %s;" % freecad_groove.__version__)
+    lines = lines.splitlines()
     if key.startswith("GrindJob/linuxcnc_grind_post") and lines[1].startswith("("):
         lines[0], lines[1] = lines[1], lines[0]
     return "\n".join(lines) + "\n"
