@@ -327,10 +327,13 @@ def test_demo_script(tmp_path):
                           timeout=300, env=dict(os.environ, PYTHON=sys.executable, FREECAD_GROOVE_DEMO_FREECAD="0"))
     assert proc.returncode == 0, proc.stderr
     names = sorted(os.listdir(tmp_path))
-    assert len(names) == 12 and "seed_cycle93.ngc" in names and "haas_g75.fanuc.nc" in names and "ab9_g83.ngc" in names
-    assert "milltronics_g33_g34.ngc" in names
+    # 7 examples x (LinuxCNC, Fanuc), the 4 turning ones plotted, and the summary
+    assert len(names) == 7 * 2 + 4 + 1 and "seed_cycle93.ngc" in names and "haas_g75.fanuc.nc" in names
+    assert {"ab9_g83.ngc", "milltronics_g33_g34.ngc", "gsk_g7_1.fanuc.nc", "fanuc_g75.png", "summary.txt"} <= set(names)
     for name in names:
-        assert str(tmp_path / name) in proc.stdout.decode()
+        if name != "summary.txt":
+            assert str(tmp_path / name) in proc.stdout.decode()
+            assert str(tmp_path / name) in (tmp_path / "summary.txt").read_text()
 
 
 def test_emit_reads_negative_words_written_g_code_style():
