@@ -109,7 +109,7 @@ def linuxcnc_lines(tools: Sequence[ToolLine], units: str, source: str) -> str:
         words = "T%d P%d D%s" % (tool.number, tool.number, format_value(tool.diameter))
         if tool.orientation is not None:
             words += " I%d J%d Q%d" % (orientation_angles(tool.orientation) + (tool.orientation,))
-        lines.append("%s ;T%d: %s" % (words, tool.number, tool.comment))
+        lines.append("%s ;T%d: %s" % (words, tool.number, " ".join(tool.comment.split())))  # a label on one line
     return "\n".join(lines) + "\n"
 
 
