@@ -92,6 +92,12 @@ class Cycle:
         used); None: nothing."""
         return None
 
+    def blade_depth(self, settings: Settings) -> Optional[Tuple[float, str]]:
+        """(how deep the blade cuts below the surface, as a radius; the word that says it) for the blade's
+        reach check (tool_table.reach_problem); None: the call does not say (the pecking cycles' programs
+        do not say where the surface is). Default: None."""
+        return None
+
     # program memory (MEMORY set): program_memory.py
 
     def with_earlier(self, memory: Memory, state: MachineState) -> "Cycle":

@@ -17,7 +17,6 @@ from .dialects import CYCLE, CYCLE_OPTIONS, MODE_GROUPS
 from .errors import CycleError, ProgramError
 from .mill_tool_table import MillToolTable, diameter_for
 from .moves import MachineState, Move
-from .numbers import format_value
 from .parameter_blocks import read_parameter_block
 from .program_memory import with_memory
 from .reader import Block
@@ -151,16 +150,12 @@ class CycleTranslation(TranslatorBase):
         return replace(self.settings, tool=blade)
 
     def _check_reach(self, entry: CycleEntry, model: Cycle, settings: Settings) -> None:
-        """A CYCLE93 deeper than the free reach the tool table gives the blade of the tool in force is refused
-        (tool_table.reach_problem); DEPG as a radius (halved for a longitudinal groove in diameter input)."""
-        depg = getattr(model, "depg", None)
-        if not entry.needs_blade or depg is None or not isinstance(self.tools, ToolTable) \
-                or self.state.tool not in self.tools:
+        """A call deeper than the free reach the tool table gives the blade of the tool in force is refused
+        (tool_table.reach_problem; the depth the call says: Cycle.blade_depth)."""
+        said = model.blade_depth(settings)
+        if said is None or not isinstance(self.tools, ToolTable) or self.state.tool not in self.tools:
             return
-        depth = float(depg)
-        if settings.cycle93_diameter_input and model.kind()[0]:
-            depth /= 2
-        problem = reach_problem(depth, self.state.tool, self.tools, "%s DEPG=%s" % (entry.name, format_value(depg)))
+        problem = reach_problem(said[0], self.state.tool, self.tools, said[1])
         if problem is not None:
             self._fail(problem)
 

@@ -67,7 +67,7 @@ from typing import ClassVar, List, Optional, Tuple
 
 from ..cycle import Cycle
 from ..moves import MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, MachineState, Move
-from ..numbers import DIGITS_RULE, format_exact, shortened, too_many_digits
+from ..numbers import DIGITS_RULE, format_exact, format_value, shortened, too_many_digits
 from ..registry import CALL, register
 from ..settings import DEFAULT_SETTINGS, Settings
 from ..warnings import CycleWarning
@@ -221,6 +221,11 @@ class Cycle93(Cycle):
         """The moves of the reference corner from ``state`` (x radius, z)."""
         geo = self.geometry(settings, state.metric)
         return geo.expand(state.x, state.z)
+
+    def blade_depth(self, settings: Settings) -> Optional[Tuple[float, str]]:
+        """DEPG as a radius (halved for a longitudinal groove in diameter input), for the blade's reach."""
+        depth = float(self.depg) / (2 if settings.cycle93_diameter_input and self.kind()[0] else 1)
+        return depth, "CYCLE93 DEPG=%s" % format_value(self.depg)
 
     def warnings(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[CycleWarning]:
         """What the expansion from ``state`` cannot do as programmed: allowances
