@@ -32,9 +32,9 @@ def test_package_xml_declares_what_the_add_on_contains():
     assert md.Name == "freecad-groove"
     assert md.supportsCurrentFreeCAD()
     assert os.path.isfile(os.path.join(ROOT, md.Icon))
-    assert [d["package"] for d in md.Depend] == ["cam", "shapely", "matplotlib"]
-    # shapely (the turning check, verify) and matplotlib (plot): optional, offered by the Addon Manager
-    assert [bool(d.get("optional")) for d in md.Depend] == [False, True, True]
+    assert [d["package"] for d in md.Depend] == ["cam", "matplotlib"]
+    # matplotlib (plot): optional, offered by the Addon Manager; the turning check needs numpy only (FreeCAD's)
+    assert [bool(d.get("optional")) for d in md.Depend] == [False, True]
     # FreeCAD runs Init.py and InitGui.py from the folder of a workbench entry;
     # the add-on has no workbench class (it adds to CAM's), so no classname.
     (entry,) = md.Content["workbench"]

@@ -15,19 +15,23 @@ doc, shop, groove = tg.doc, tg.shop, tg.groove
 RULE = "the dwell must be 0 to 99999 s, the longest every target writes"
 
 
-@pytest.mark.parametrize("dwell, written", [(99999.5, "99999.5"), (1e6, "1000000"), (1e308, "1e+308")])
-def test_a_dwell_beyond_the_bound_makes_the_op_invalid_naming_dwell(shop, dwell, written):
+@pytest.mark.parametrize("dwell, message", [
+    (99999.5, "Dwell: CYCLE93 DWT=99999.5: " + RULE),  # the engine's bound, the property named first
+    (1e6, "Dwell: CYCLE93 DWT=1000000: " + RULE),
+    (1e308, "Dwell=1e+308 s: must be 0 <= Dwell <= 99999 s"),  # the op's own bound (docs/op-bounds.md) first
+])
+def test_a_dwell_beyond_the_bound_makes_the_op_invalid_naming_dwell(shop, dwell, message):
     doc_, shaft, job, tc = shop
     op = groove(shop, "cylinder")
     assert tg.path_moves(op)
     op.Dwell = dwell
     doc_.recompute()
-    assert op_error(op) == "CYCLE93 DWT=%s: %s" % (written, RULE)
+    assert op_error(op) == message
     assert tg.path_moves(op) == []  # no stale toolpath
     for name in tp.NAMES:
         with pytest.raises(posts.PostError) as info:
             tp.export(name, [op])
-        assert str(info.value) == "%s: Dwell: CYCLE93 DWT=%s: %s" % (op.Label, written, RULE), name
+        assert str(info.value) == "%s: %s" % (op.Label, message), name
 
 
 def test_the_bound_itself_is_cut_and_written_as_the_sinumerik_call(shop):
