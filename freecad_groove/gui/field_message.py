@@ -19,7 +19,6 @@ from PySide import QtCore, QtGui
 from .widgets import ERROR_LABEL, ERROR_STYLE, child
 
 FIELD_MESSAGE = "fieldErrorLabel"  # object name of the label under the field
-FIELDS = (QtGui.QAbstractSpinBox, QtGui.QComboBox, QtGui.QLineEdit, QtGui.QAbstractButton)
 
 
 def _row_of(layout: object, widget: object) -> int:
@@ -27,11 +26,14 @@ def _row_of(layout: object, widget: object) -> int:
     row, _role = layout.getWidgetPosition(widget)
     if row >= 0:
         return row
-    for row in range(layout.rowCount()):
-        item = layout.itemAt(row, QtGui.QFormLayout.FieldRole)
-        inner = item.layout() if item is not None else None
-        if inner is not None and inner.indexOf(widget) >= 0:
-            return row
+    # A row's inner layout is found as the form layout's child QObject, not through itemAt(): a layout item's
+    # wrapper (QLayoutItem, another address than the QLayout's) outlived its row and FreeCAD 1.0 crashed on
+    # the next panel built at that address.
+    for inner in layout.findChildren(QtGui.QLayout):
+        if inner.indexOf(widget) >= 0:
+            row, _role = layout.getLayoutPosition(inner)
+            if row >= 0:
+                return row
     return -1
 
 
@@ -44,12 +46,14 @@ def _form_row(form: object, widget: object) -> tuple:
     return None, -1
 
 
-def _field_of(form: object, widget: object) -> Optional[object]:
-    """The field of ``form`` that ``widget`` (the focus) is, or is inside (a spin box's line edit)."""
-    while widget is not None and form.isAncestorOf(widget):
-        if isinstance(widget, FIELDS) and _form_row(form, widget)[0] is not None:
-            return widget
-        widget = widget.parentWidget()
+def _focused_field(form: object) -> Optional[object]:
+    """The field of ``form`` that has the keyboard focus, or None. Asked of the form's spin boxes and combo boxes
+    (hasFocus), not by walking up from QApplication.focusWidget(): wrappers taken of the widgets on that way (a
+    spin box's inner line edit) outlived them, and FreeCAD 1.0 crashed on the next panel."""
+    for kind in (QtGui.QAbstractSpinBox, QtGui.QComboBox):
+        for field in form.findChildren(kind):
+            if field.hasFocus() and _form_row(form, field)[0] is not None:
+                return field
     return None
 
 
@@ -58,13 +62,15 @@ class FieldMessage:
 
     def __init__(self, form: object):
         self.form = form
-        self.label = None  # the label while one shows (a row of ``layout``)
-        self.layout = None
+        # The label while one shows (Python made it: shiboken hears of its deletion). No wrapper of a layout
+        # Qt made is kept: FreeCAD deletes the form with the panel without shiboken hearing, and a wrapper
+        # still held would be handed out for the next panel's widget built at that address (qt_wrappers.py).
+        self.label = None
 
     def show(self, message: object, named: list) -> None:
         """Show ``message`` (None: hide) under the focused field, else under the first of the fields ``named``;
         the page's top message line hidden while it does."""
-        field = _field_of(self.form, QtGui.QApplication.focusWidget()) if message else None
+        field = _focused_field(self.form) if message else None
         if field is None and message:
             field = next((f for f in named if f is not None and _form_row(self.form, f)[0] is not None), None)
         self._remove()
@@ -73,23 +79,25 @@ class FieldMessage:
             if top is not None:
                 top.setVisible(bool(message))
             return
-        self.layout, row = _form_row(self.form, field)
+        layout, row = _form_row(self.form, field)
         self.label = QtGui.QLabel(str(message))
         self.label.setObjectName(FIELD_MESSAGE)
         self.label.setWordWrap(True)
         self.label.setStyleSheet(ERROR_STYLE)
-        self.layout.insertRow(row + 1, self.label)
+        layout.insertRow(row + 1, self.label)
         if top is not None:
             top.setVisible(False)
         QtCore.QTimer.singleShot(0, self._keep_in_view)
 
     def _remove(self) -> None:
         """The label's row removed (the label deleted with it: removeRow, in PySide2 too, unlike takeRow)."""
-        if self.layout is not None and self.label is not None:
-            row, _role = self.layout.getWidgetPosition(self.label)
-            if row >= 0:
-                self.layout.removeRow(row)
-        self.layout = self.label = None
+        if self.label is not None:
+            for layout in self.form.findChildren(QtGui.QFormLayout):
+                row, _role = layout.getWidgetPosition(self.label)
+                if row >= 0:
+                    layout.removeRow(row)
+                    break
+        self.label = None
 
     def _keep_in_view(self) -> None:
         """Scroll the page's scroll areas so the label shows (it may sit below the dock's bottom)."""
