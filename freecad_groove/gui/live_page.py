@@ -3,9 +3,8 @@ grind) share: every changed value re-plans the op from the panel's values
 (the document is not touched), a short while after the edit's last signal;
 the plan is drawn, or the op's error shows in one line on every page with the
 fields it names framed red (the dialog, task_dialog.AddonTaskPanel, refuses
-OK meanwhile), and right under the field being edited (field_message.py: the
-top of a long page scrolls out of view); the plan's warnings show in amber
-under it, their fields framed amber.
+OK meanwhile); the plan's warnings show in amber under it, their fields
+framed amber.
 
 A page defines ``replan()`` (the plan from the values shown; a ValueError
 for bad values), ``show_plan(plan)`` (None while invalid), ``field(prop)``
@@ -18,7 +17,6 @@ import traceback
 import FreeCAD
 import Path.Op.Gui.Base as PathOpGui
 
-from .field_message import FieldMessage
 from .widgets import (
     CONTEXT,
     ERROR_LABEL,
@@ -82,12 +80,8 @@ class LivePage(PathOpGui.TaskPanelPage):
         was_valid = self.error is None
         self.error = message
         self.invalid = self._mark(self.invalid, tuple(properties) if message else (), mark_invalid)
-        named = [self.marked_field(prop) for prop in self.invalid]
         for page in [self] + list(self.other_pages):
             show_error(child(page.form, ERROR_LABEL), message)
-            if not hasattr(page, "field_message"):
-                page.field_message = FieldMessage(page.form)
-            page.field_message.show(message, named)
         if was_valid != (message is None) and self.on_validity_changed is not None:
             self.on_validity_changed()
 

@@ -373,14 +373,11 @@ def toolbar_action(toolbar, text):
 
 
 def shown_message(form):
-    """The op's message as a page shows it (its line at the top, or under the field being edited:
-    gui/field_message.py), or None while it shows none. (Not isVisible alone: a page of the panel not shown
-    has no visible widgets; isHidden says what the page would show.)"""
-    from freecad_groove.gui.field_message import FIELD_MESSAGE
+    """The op's message as a page shows it (its line at the top), or None while it shows none. (Not isVisible
+    alone: a page of the panel not shown has no visible widgets; isHidden says what the page would show.)"""
     from freecad_groove.gui.widgets import ERROR_LABEL
 
-    for name in (FIELD_MESSAGE, ERROR_LABEL):
-        label = form.findChild(QtGui.QLabel, name)
-        if label is not None and not label.isHidden() and label.text():
-            return label.text()
+    label = form.findChild(QtGui.QLabel, ERROR_LABEL)
+    if label is not None and not label.isHidden() and label.text():
+        return label.text()
     return None
