@@ -80,6 +80,15 @@ def _freecad_groove_run_suite():
         return str(longrepr)
 
     class Collector:
+        def pytest_runtest_teardown(self, item, nextitem):
+            # pytest keeps the last failure for a post-mortem (sys.last_traceback and its frames' locals): in
+            # the GUI suite those locals hold PySide wrappers of widgets FreeCAD deletes with the panel, and a
+            # wrapper outliving its widget is handed out for the next panel's widget built at that address
+            # (gui/qt_wrappers.py): one failed test then crashed a later one. Nothing here needs them.
+            for name in ("last_type", "last_value", "last_traceback", "last_exc"):
+                if hasattr(sys, name):
+                    setattr(sys, name, None)
+
         def pytest_runtest_logreport(self, report):
             entry = {
                 "nodeid": report.nodeid,
