@@ -1,11 +1,11 @@
-"""shapely for the FreeCAD roots (the turning check needs it; the Debian roots
-of scripts/freecad-roots do not have it). Python 3 standard library only.
+"""shapely for the FreeCAD roots' test runs (the tests' second oracle of the
+turning check; the Debian roots of scripts/freecad-roots do not have it). Python 3 standard library only.
 
 ``provide(share)`` unpacks shapely (the version requirements-test.txt pins)
 for each Python the FreeCAD roots run (PYTHONS) into ``share``/pylib/cpXY
 and returns the environment that tells the run where: FREECAD_GROOVE_PYLIB
-(relative to FREECAD_GROOVE_SHARE); inside FreeCAD the demo (runner.add_pylib)
-and the tests (tests/freecad/pylib.py) put the folder of their own Python on
+(relative to FREECAD_GROOVE_SHARE); inside FreeCAD the tests
+(tests/freecad/pylib.py) put the folder of their own Python on
 sys.path. The wheels are downloaded once, with pip, into out/wheels/ (PyPI's
 manylinux wheels bundle GEOS and use the root's numpy). When no pip can get
 them the environment is empty.

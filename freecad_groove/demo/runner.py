@@ -154,16 +154,6 @@ def summary_lines(summary):
     return lines
 
 
-def add_pylib():
-    """shapely for the turning check where FreeCAD has none: the folder scripts/demo unpacked for this Python
-    (FREECAD_GROOVE_PYLIB, relative to FREECAD_GROOVE_SHARE) on sys.path, after FreeCAD's own."""
-    pylib = os.environ.get("FREECAD_GROOVE_PYLIB")
-    if pylib:
-        folder = os.path.join(os.environ.get("FREECAD_GROOVE_SHARE", ""), pylib, "cp%d%d" % sys.version_info[:2])
-        if os.path.isdir(folder) and folder not in sys.path:
-            sys.path.append(folder)
-
-
 def main():
     """Entry point for ``freecadcmd -c``: run() into $FREECAD_GROOVE_DEMO_OUT
     (relative to $FREECAD_GROOVE_SHARE when that is set; default: the share,
@@ -178,7 +168,6 @@ def main():
     status = 0
     try:
         sys.dont_write_bytecode = True  # the checkout may be mounted read-only
-        add_pylib()
         run(out_dir)
     except BaseException:  # noqa: B902 - reported in the file and on the console
         status = 1
