@@ -18,7 +18,7 @@ Runs ``scripts/demo DIR`` once into a temporary directory and checks:
 * LinuxCNC's rs274 accepts the LinuxCNC programs of the Groove ops (its
   blade reaches the axis: the cut-off), of the slot (C turns a full turn
   while Z moves 20) and of the grind (the wheel stays above the face);
-* every Sinumerik, Allen-Bradley, Fanuc, Haas and GSK program is read back
+* every Sinumerik, Allen-Bradley (lathe and grinder), Fanuc, Haas and GSK program is read back
   by the engine's program translator for its dialect (freecad_groove.engine.translator.translate_program), and rs274
   accepts the LinuxCNC program that makes.
 
@@ -245,7 +245,7 @@ def test_the_linuxcnc_grind_program_stays_above_the_face_in_rs274(run, summary):
 GSK_SWITCHES = {"M14", "M15", "M13 S1000", "M25"}
 
 
-@pytest.mark.parametrize("dialect", ["sinumerik", "ab9", "fanuc", "haas", "gsk"])
+@pytest.mark.parametrize("dialect", ["sinumerik", "ab9", "fanuc", "haas", "gsk", "ab9grind"])
 def test_programs_parse_back_with_the_engine(run, summary, dialect):
     settings = settings_of(summary)
     translated = {}

@@ -22,10 +22,10 @@ def item(call=CALL):
     return GrindItem("PlungeGrind: Block.Face6", call, START, SAFE, call.expand(START))
 
 
-def canonical(text):
+def canonical(text, tools=()):
     """rs274's moves (kind, x, y, z) rounded, a dress being rs274's G4 of the dress subprogram."""
     return [(c[0], round(c[1], 4), round(c[2], 4), round(c[3], 4)) for c in
-            run_rs274(text, files={"dress12.ngc": DRESS_SUB}, xyz=True)]
+            run_rs274(text, files={"dress12.ngc": DRESS_SUB}, xyz=True, tool_table=list(tools) or None)]
 
 
 def test_the_native_program_writes_the_approach_then_the_g83_block():
@@ -132,3 +132,27 @@ def test_a_tool_call_in_a_grinder_program_keeps_the_wheel_turning_on_linuxcnc():
     program = "G20 G90 G94\nS3000 M03\nG0 X0. Y1. Z1.\nT0303\nG1 X1. F10.\nM30\n"
     lines = translate_program(program, "ab9grind", target="linuxcnc").splitlines()
     assert lines[lines.index("G0 X0. Y1. Z1.") + 1:][:2] == ["T3 M6 G43 M3", "G1 X1. F10."]
+
+
+def test_the_9_series_program_with_its_wheel_changes_is_read_back_by_the_ab9grind_reader():
+    # what the ab9_grind post writes (T03 M06, S1500 M03) is a program its own reader takes: tool 3 with its own
+    # offset as T0303 reads, the wheel started by the program's M03 (no second M3: the block after starts it)
+    items = [WheelChange("TC: Wheel", 3, 1500.0), item(grind_call()), WheelChange("TC: Other", 4, 2000.0),
+             item(grind_call())]
+    native = grind_program(items, "ab9grind", True, "Job")
+    assert "T03 M06" in native.splitlines() and "T04 M06" in native.splitlines()
+    lines = translate_program(native, "ab9grind", target="linuxcnc").splitlines()
+    changes = [line for line in lines if " M6" in line]
+    assert changes == ["T3 M6 G43", "T4 M6 G43 M3"]  # the second change: the wheel was turning, M6 stops it
+    expanded = grind_program(items, "linuxcnc", False, "Job")
+    assert canonical(translate_program(native, "ab9grind", target="linuxcnc"), [3, 4]) == canonical(expanded, [3, 4])
+
+
+@pytest.mark.parametrize("block, message", [
+    ("M06", r"M6 without T: program the tool change as T<n> M6 in one block"),
+    ("T0 M06", r"T0 M6: the tool number must be a whole number of 1 or more"),
+    ("T1.5 M06", r"T1.5 M6: the tool number must be a whole number of 1 or more"),
+])
+def test_a_9_series_tool_change_without_a_tool_is_refused_naming_the_words(block, message):
+    with pytest.raises(ProgramError, match=message):
+        translate_program("G21 G90 G94\n%s\nM30\n" % block, "ab9grind", target="linuxcnc")

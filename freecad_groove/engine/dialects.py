@@ -160,6 +160,8 @@ DWELL_POINT_SECONDS = "seconds with a decimal point, milliseconds without"
 # how the tool is selected (Dialect.tool_words)
 TOOL_AND_EDGE = "T<tool> D<cutting edge>"
 TOOL_AND_OFFSET = "T<tool><2-digit offset>"
+# the 9/Series grinder: its lathe-style T<tool><offset>, or the mill form T<tool> M06 its posts write
+TOOL_AND_OFFSET_OR_M6 = "T<tool><2-digit offset>, or T<tool> M6"
 # Milltronics: T<n> M6 changes the tool, G43 H<n> / G49 the length offset, D selects the end mill's diameter
 # (mill_tool_table)
 DIAMETER_REGISTER = "T<tool> M6, D<diameter register>, G43 H<length offset>"
@@ -294,6 +296,7 @@ DIALECTS: Dict[str, Dialect] = {
             "with G17; G20/G21, G90/G91, G94/G95)",
             g_codes=_AB9_GRINDER_CODES,
             plain_letters=frozenset("XYZFSTMG"),
+            tool_words=TOOL_AND_OFFSET_OR_M6,
             dwell_unsupported="G04: the 9/Series dwell word is not documented here; not translated",
             mill=True,
         ),

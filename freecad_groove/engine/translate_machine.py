@@ -15,6 +15,7 @@ from .dialects import (
     SPEED_LIMIT,
     TOOL_AND_EDGE,
     TOOL_AND_OFFSET,
+    TOOL_AND_OFFSET_OR_M6,
 )
 from .numbers import MAX_DWELL_SECONDS, MAX_WORD, shortened
 from .reader import Block, Word
@@ -78,13 +79,17 @@ class MachineTranslation(TranslatorBase):
         edge_word = block.get("D")
         if tool_word is None and edge_word is None:
             return
-        if 6 in self._m_numbers(block):
+        if 6 in self._m_numbers(block) and self.dialect.tool_words == TOOL_AND_OFFSET_OR_M6:
+            selection = self._tool_m6(tool_word)
+        elif 6 in self._m_numbers(block):
             self._fail("M6 is added by the translation; program the tool with T alone")
-        readers: Dict[str, Callable[[Optional[Word], Optional[Word]], ToolSelection]] = {
-            TOOL_AND_EDGE: self._tool_and_edge,
-            TOOL_AND_OFFSET: self._tool_and_offset,
-        }
-        selection = readers[self.dialect.tool_words](tool_word, edge_word)
+        else:
+            readers: Dict[str, Callable[[Optional[Word], Optional[Word]], ToolSelection]] = {
+                TOOL_AND_EDGE: self._tool_and_edge,
+                TOOL_AND_OFFSET: self._tool_and_offset,
+                TOOL_AND_OFFSET_OR_M6: self._tool_and_offset,
+            }
+            selection = readers[self.dialect.tool_words](tool_word, edge_word)
         state = self.state
         in_place = state.tool
         state.x = state.y = state.z = None
@@ -152,6 +157,17 @@ class MachineTranslation(TranslatorBase):
             self._fail("T%s: write the tool and offset as T<tool><2-digit offset>, e.g. T0101" % tool_word.text)
         tool, offset = int(digits[:-2]), int(digits[-2:])
         return ToolSelection(tool, offset, offset == tool)
+
+    def _tool_m6(self, tool_word: Optional[Word]) -> ToolSelection:
+        """The 9/Series grinder's mill form ``T03 M06`` (what its posts write): tool 3 with its own offset, as
+        ``T0303``; the wheel keeps its direction, as after its T word (docs/choices.md)."""
+        if tool_word is None:
+            self._fail("M6 without T: program the tool change as T<n> M6 in one block")
+        digits = tool_word.text.lstrip("+")
+        if "." in tool_word.text or not digits.isdigit() or int(digits) < 1:
+            self._fail("T%s M6: the tool number must be a whole number of 1 or more" % tool_word.text)
+        tool = int(digits)
+        return ToolSelection(tool, tool, True)
 
     def _restart_spindle(self, block: Block, output: List[str]) -> None:
         """LinuxCNC's M6 stops the spindle; a lathe turret (and the 9/Series grinder's T) does not: start it
@@ -252,8 +268,10 @@ class MachineTranslation(TranslatorBase):
         in_group: Dict[str, int] = {}
         for word in block.all("M"):
             code = self._integer(word)
-            if code == 6 and self.dialect.tool_words == DIAMETER_REGISTER:
-                continue  # written by _mill_tool_change
+            if code == 6 and self.dialect.tool_words in (DIAMETER_REGISTER, TOOL_AND_OFFSET_OR_M6):
+                if self.dialect.tool_words == TOOL_AND_OFFSET_OR_M6 and block.get("T") is None:
+                    self._fail("M6 without T: program the tool change as T<n> M6 in one block")
+                continue  # written by the tool change
             group = M_GROUPS.get(code)
             if group is None:
                 text = word.text if len(word.text) <= 20 else shortened(word.text)
