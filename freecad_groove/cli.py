@@ -158,7 +158,9 @@ def _add_expand_options(parser: argparse.ArgumentParser) -> None:
     ex.add_argument("--start-x", type=finite, metavar="X",
                     help="start point X as a DIAMETER (the tool position before the call; required with "
                     "--expand)")
-    ex.add_argument("--start-z", type=finite, metavar="Z", help="start point Z (required with --expand)")
+    ex.add_argument("--start-z", type=finite, metavar="Z",
+                    help="start point Z (required with --expand, except for Milltronics G33/G34: they rapid in X Y "
+                    "at the height held, then to R)")
     ex.add_argument("--start-y", type=finite, metavar="Y",
                     help="start point Y of a grinder cycle (G83; required with --expand; its X is then a plain "
                     "coordinate and the output mill-style)")
@@ -235,7 +237,8 @@ def _emit(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]) ->
         model.validate(settings)
         if not args.expand:
             return model.emit() + "\n"
-        if args.start_x is None or args.start_z is None:
+        unknown_z = entry.cycle_class.FROM_UNKNOWN_Z  # G33/G34: X Y at the height held, then Z to R
+        if args.start_x is None or (args.start_z is None and not unknown_z):
             raise ProgramError("--expand needs the start point: --start-x (diameter) and --start-z")
         state = start_state(args, feed_default="rev")
         mill = entry.cycle_class.MILL  # a grinder cycle: X/Y/Z, a mill-style program

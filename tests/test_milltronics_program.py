@@ -170,6 +170,28 @@ def test_emit_takes_the_p_parameters_as_options_and_writes_their_blocks_before_t
     assert _emit("g31", "--p151", "1").returncode == 2  # G31 reads no P parameter: no option
 
 
+@pytest.mark.parametrize("cycle, words", [
+    ("g33", ["--p151", "1", "--p152", "3", "--p155", ".1"]),
+    ("g34", ["--p150", ".25", "--p151", "2", "--p152", "1.5", "--p155", ".15"]),
+])
+def test_emit_expand_runs_g33_and_g34_from_the_height_the_tool_is_at_without_start_z(cycle, words):
+    # as in a whole program (seed 004's N3 G0 X1 Y2, no Z): X Y at the height held, then Z down to R; no Z is
+    # written before the cycle's own R rapid
+    require_rs274()
+    proc = _emit(cycle, *words, "-R", ".1", "-Z", "-.4", "-Q", ".15", "-F", "5", "--tool-diameter", ".25",
+                 "--expand", "--start-x", "1", "--start-y", "2", "--feed", "20", "--units", "inch",
+                 "--feed-mode", "min")
+    assert proc.returncode == 0, proc.stderr
+    lines = proc.stdout.decode().splitlines()
+    assert lines[2] == "G0 X1. Y2."
+    first_z = next(i for i, line in enumerate(lines) if i > 0 and "Z" in line)
+    assert lines[first_z] == "Z0.1" and "G1" not in " ".join(lines[3:first_z])  # rapids in X Y, then to R
+    moves = run_rs274(proc.stdout.decode(), xyz=True)
+    assert min(move[3] for move in moves) == pytest.approx(-0.4)  # the final depth Z, reached
+    assert _emit("g77", "-X", "40.", "-Z", "-30.", "-I", "2.", "-K", "5.", "-D", "0", "-F", "0.08", "--expand",
+                 "--start-x", "50").returncode == 2  # a lathe cycle still needs its start Z
+
+
 # ---------------------------------------------------------------- the end mill's diameter by D number
 
 MILL_TABLE = "# D  diameter\n1  0.25\n2  0.125   # a 1/8\" end mill\n"
