@@ -142,6 +142,9 @@ def test_a_holder_entering_the_bar_beside_a_deep_groove_is_reported_with_its_mov
     assert [(h.command, h.rapid) for h in check.holder_hits] == [(2, False), (3, True)]
     assert check.holder_hits[0].area == pytest.approx(46.5, abs=1e-6)
     assert 27.0 <= check.holder_hits[0].at[0] <= 30.0
+    assert check.holder_region.area == pytest.approx(46.5, abs=1e-6)  # what the panel draws (magenta)
+    outline = check.holder_hits[0].outline  # (z, x) at the plunge's end: Z-18.5..1.5, R27..127
+    assert outline.min(axis=0) == pytest.approx([-18.5, 27.0]) and outline.max(axis=0) == pytest.approx([1.5, 127.0])
     assert "HOLDER IN STOCK: G1 (Path command 2) X32.000 Z-10.000 -> X15.000 Z-10.000: its holder (20 mm wide, " \
            "from 12 mm behind the cutting edge) enters 46.5 mm^2 of standing material" in check.summary()
 
@@ -150,7 +153,7 @@ def test_a_holder_entering_the_bar_beside_a_deep_groove_is_reported_with_its_mov
 def test_a_holder_that_stays_out_or_is_not_given_changes_nothing(holder):
     """Beginning at R31 (reach 16), or as wide as the blade (its own slot), or none: no hit, the same figures."""
     check = plunge_check(holder)
-    assert check.ok and check.holder_hits == []
+    assert check.ok and check.holder_hits == [] and check.holder_region.is_empty
     assert check.removed == pytest.approx(plunge_check(None).removed)
 
 

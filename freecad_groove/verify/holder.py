@@ -19,7 +19,7 @@ numpy only, on the column model's public functions (columns.combine, column_swee
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Optional
 
 import numpy as np
@@ -28,7 +28,8 @@ from freecad_groove.engine.moves import MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, Groovi
 
 from . import columns as col
 from .column_sweep import blade_box, straight_segments, swept_rows
-from .columns import DIFFERENCE, Flat, Grid
+from .columns import DIFFERENCE, INTERSECTION, UNION, Flat, Grid
+from .shapes import EMPTY_SECTION, Section
 
 Point = tuple[float, float]  # (x, z), x the radius
 HOLDER_LENGTH = 100.0  # mm of holder drawn behind the reach
@@ -58,6 +59,8 @@ class HolderHit:
     area: float
     at: Point
     holder: Holder
+    entered: Flat = field(default_factory=col.empty_flat, repr=False, compare=False)  # on the op's window
+    outline: np.ndarray = field(default_factory=lambda: np.empty((0, 2)), repr=False, compare=False)  # (z, x)
 
     def describe(self) -> str:
         return ("%s (Path command %d) X%.3f Z%.3f -> X%.3f Z%.3f: %s enters %.4g mm^2 of standing material near "
@@ -168,7 +171,26 @@ def _hit(seg: _Segment, rows: Flat, state: Flat, window: Grid) -> Optional[Holde
     cols, a, b = rows
     x = 0.5 * (max(a[best], lo[cols[best], k]) + min(b[best], hi[cols[best], k]))
     return HolderHit(seg.command, seg.start, seg.end, seg.rapid, float(area.sum()),
-                     (float(x), float(window.centres[cols[best]])), seg.run.holder)
+                     (float(x), float(window.centres[cols[best]])), seg.run.holder,
+                     col.combine(rows, state, INTERSECTION), holder_outline(seg.run, seg.end))
+
+
+def holder_outline(run: Any, at: Point) -> np.ndarray:
+    """The holder's rectangle, (z, x) corners, with the blade's reference corner at ``at`` (x, z)."""
+    box, offset = holder_box(run.tool, run.plunge, run.holder)
+    z0, x0, z1, x1 = blade_box(box, run.plunge)[0]
+    z, x = float(at[1]) + offset[0], float(at[0]) + offset[1]
+    return np.array([(z + z0, x + x0), (z + z1, x + x0), (z + z1, x + x1), (z + z0, x + x1), (z + z0, x + x0)])
+
+
+def holder_region(hits: Sequence[HolderHit], window: Grid) -> Any:
+    """The standing material the hits' holders enter, a Section on ``window`` (the turning check draws it)."""
+    if not hits:
+        return EMPTY_SECTION
+    rows = col.empty_flat()
+    for hit in hits:
+        rows = col.combine(rows, hit.entered, UNION)
+    return Section(window, rows)
 
 
 def holder_hits(start: Point, runs: Sequence[Any], before: Flat, window: Grid) -> list[HolderHit]:

@@ -42,7 +42,7 @@ from .column_figures import NOISE_AREA, hinted, measure_gouge, thicker_than
 from .column_reach import unreachable_across, unreachable_along
 from .column_sweep import FeedPath, Material, sweep
 from .columns import DIFFERENCE, INTERSECTION, UNION, Flat, Grid
-from .holder import Holder, HolderHit, holder_hits, holder_lines, holder_z_extent
+from .holder import Holder, HolderHit, holder_hits, holder_lines, holder_region, holder_z_extent
 from .machining_time import Feeds, MachiningTime, machining_time
 from .outline import outline_at_origin
 from .shapes import EMPTY_SECTION, Edges, Section, Shape, box, corners
@@ -137,6 +137,7 @@ class OpCheck:
     gouge_region: Region = EMPTY_SECTION
     leftover_region: Region = EMPTY_SECTION
     unreachable_region: Region = EMPTY_SECTION
+    holder_region: Region = EMPTY_SECTION  # the standing material the blade's holder enters
 
     @property
     def ok(self) -> bool:
@@ -326,6 +327,7 @@ def check_op(op: OpInput, material: Material, part: PartModel, tol: float = DEFA
     before = material.rows(*span)
     position, feeds = op.start, []
     check.holder_hits = holder_hits(op.start, op.grooves, before, window)
+    check.holder_region = holder_region(check.holder_hits, window)
     for run in op.grooves:
         hits, position, run_feeds = sweep(material, run.moves, run.tool, run.plunge, position, span)
         check.rapid_hits += [RapidHit(run.commands[h.index], h.start, h.end, h.area, h.at) for h in hits]
