@@ -220,3 +220,31 @@ def test_a_blade_from_the_shape_chooser_has_them_and_the_tool_library_keeps_them
     bit = again.attach_to_doc(doc)
     assert bit.MinBoreDiameter.Value == 20.0 and bit.FirstCutDiameterMin.Value == 0.0
     assert blade_holder.blade_limits(bit).min_bore == 20.0
+
+
+SWEEP = (float("nan"), float("inf"), float("-inf"), 1e308, 0.0, -1.0)
+
+
+@pytest.mark.parametrize("name", blade_holder.NAMES)
+def test_each_property_swept_through_bad_values_ends_valid_or_named(shop, name):
+    """As tests/freecad/test_op_bounds.py sweeps the ops' own properties: NaN, infinities, 1e308 and -1 refused
+    naming the property (its bound: docs/op-bounds.md), 0 (not given; FreeCAD keeps a negative length as 0) cuts as
+    before; never a traceback, never a
+    non-finite number in the Path; set back, the op cuts again."""
+    doc, shaft, job, tc = shop
+    op = groove(shop, "shoulder", FACE)
+    commands = op.Path.toGCode()
+    for value in SWEEP:
+        setattr(tc.Tool, name, value)
+        doc.recompute()
+        error = op_error(op)
+        assert op.isValid(), (name, value, op.getStatusString())
+        assert all(v == v and abs(v) != float("inf") for c in op.Path.Commands for v in c.Parameters.values())
+        if getattr(tc.Tool, name).Value == 0.0:  # 0, or a negative length FreeCAD's PropertyLength kept as 0
+            assert error is None and op.Path.toGCode() == commands, (name, value, error)
+        else:
+            assert error is not None and name in error and "\n" not in error, (name, value, error)
+            assert [c for c in op.Path.Commands if c.Parameters] == []
+    setattr(tc.Tool, name, 0.0)
+    doc.recompute()
+    assert op_error(op) is None and op.Path.toGCode() == commands
