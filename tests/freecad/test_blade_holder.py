@@ -87,6 +87,8 @@ def test_a_face_groove_outside_the_blades_first_cut_range_is_refused_naming_the_
     assert message.startswith("FirstCutDiameterMin=%g mm: the face groove's first plunge cuts diameters %g..%g mm, "
                               "below the first-cut diameter range of Grooving blade: its curved holder would hit "
                               "the face" % (low + 1.0, low, high)), message
+    assert message.endswith("(use a blade for these diameters); the groove at Position=1 mm of Shaft.%s"
+                            % face_name(shaft.Shape, "shoulder")), message
     assert [c for c in op.Path.Commands if c.Parameters] == []
     for name in LATHE_POSTS:
         with pytest.raises(PostError) as info:

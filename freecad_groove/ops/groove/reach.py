@@ -60,5 +60,5 @@ def check_holder_limits(obj: object, plans: list) -> None:
         problem = limits_problem(entry, limits, blade)
         if problem is not None:
             where = "Position" if entry.bore is None else "Base"
-            raise GrooveInputError("%s (the groove at Position=%s mm of %s)"
+            raise GrooveInputError("%s; the groove at Position=%s mm of %s"
                                    % (problem, format_value(plan.position), plan.face.name), (where,))
