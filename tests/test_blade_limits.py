@@ -75,10 +75,12 @@ def test_a_bad_field_is_refused_naming_it(line, message):
 def test_a_face_groove_outside_the_first_cut_range_is_refused_naming_the_field():
     assert refusal(FACE_PROGRAM, "5 3 0.2 minus dmin=121") == (
         "dmin=121: the face groove's first plunge cuts diameters 120.4..126.4, below the first-cut diameter range "
-        "of T5's blade (tools.tbl): its curved holder would hit the face (use a blade for these diameters)")
+        "of T5's blade (tools.tbl), dmin=121, no dmax: its curved holder would hit the face (use a blade for these "
+        "diameters)")
     assert refusal(FACE_PROGRAM, "5 3 0.2 minus dmin=100 dmax=126") == (
         "dmax=126: the face groove's first plunge cuts diameters 120.4..126.4, above the first-cut diameter range "
-        "of T5's blade (tools.tbl): its curved holder would hit the face (use a blade for these diameters)")
+        "of T5's blade (tools.tbl), dmin=100 to dmax=126: its curved holder would hit the face (use a blade for "
+        "these diameters)")
     plain = translate_program(FACE_PROGRAM, "sinumerik", tools=table("5 3 0.2 minus\n"))
     assert translate_program(FACE_PROGRAM, "sinumerik", tools=table("5 3 0.2 minus dmin=120.4 dmax=126.4")) == plain
     assert translate_program(FACE_PROGRAM, "sinumerik", tools=table("5 3 0.2 minus bore=500")) == plain  # a face
@@ -115,7 +117,8 @@ def test_expand_refuses_it_in_one_line(tmp_path):
     assert proc.returncode == 2 and proc.stdout == b""
     assert proc.stderr.decode().splitlines() == [
         "%s:4: dmin=130: the face groove's first plunge cuts diameters 120.4..126.4, below the first-cut diameter "
-        "range of T5's blade (%s): its curved holder would hit the face (use a blade for these diameters)"
+        "range of T5's blade (%s), dmin=130 to dmax=150: its curved holder would hit the face (use a blade for these "
+        "diameters)"
         % (program, tools)]
 
 

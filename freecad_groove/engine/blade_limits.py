@@ -75,14 +75,18 @@ def limits_problem(entry: Optional[BladeEntry], limits: Optional[BladeLimits], b
 
     if entry.plunge in (MINUS_Z, PLUS_Z) and entry.low is not None:
         span = "%s..%s" % (format_value(entry.low), length(entry.high))
+        both = limits.first_cut_min is not None and limits.first_cut_max is not None
+        given = ["%s=%s" % (name, length(value)) if value is not None else "no " + name
+                 for name, value in ((lo_name, limits.first_cut_min), (hi_name, limits.first_cut_max))]
+        blade_range = "%s, %s" % (blade, (" to " if both else ", ").join(given))  # both names and values
         if limits.first_cut_min is not None and entry.low < limits.first_cut_min - TOLERANCE:
             return ("%s=%s: the face groove's first plunge cuts diameters %s, below the first-cut diameter range "
                     "of %s: its curved holder would hit the face (use a blade for these diameters)"
-                    % (lo_name, length(limits.first_cut_min), span, blade))
+                    % (lo_name, length(limits.first_cut_min), span, blade_range))
         if limits.first_cut_max is not None and entry.high > limits.first_cut_max + TOLERANCE:
             return ("%s=%s: the face groove's first plunge cuts diameters %s, above the first-cut diameter range "
                     "of %s: its curved holder would hit the face (use a blade for these diameters)"
-                    % (hi_name, length(limits.first_cut_max), span, blade))
+                    % (hi_name, length(limits.first_cut_max), span, blade_range))
     if entry.plunge == PLUS_X and entry.bore is not None and limits.min_bore is not None:
         if entry.bore < limits.min_bore - TOLERANCE:
             return ("%s=%s: the internal groove's bore is %s, smaller than the smallest bore %s enters: its bar "

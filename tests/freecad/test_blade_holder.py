@@ -85,8 +85,9 @@ def test_a_face_groove_outside_the_blades_first_cut_range_is_refused_naming_the_
     doc.recompute()
     message = op_error(op)
     assert message.startswith("FirstCutDiameterMin=%g mm: the face groove's first plunge cuts diameters %g..%g mm, "
-                              "below the first-cut diameter range of Grooving blade: its curved holder would hit "
-                              "the face" % (low + 1.0, low, high)), message
+                              "below the first-cut diameter range of Grooving blade, FirstCutDiameterMin=%g mm, no "
+                              "FirstCutDiameterMax: its curved holder would hit "
+                              "the face" % (low + 1.0, low, high, low + 1.0)), message
     assert message.endswith("(use a blade for these diameters); the groove at Position=1 mm of Shaft.%s"
                             % face_name(shaft.Shape, "shoulder")), message
     assert [c for c in op.Path.Commands if c.Parameters] == []
@@ -98,7 +99,9 @@ def test_a_face_groove_outside_the_blades_first_cut_range_is_refused_naming_the_
     tc.Tool.FirstCutDiameterMax = high - 0.5
     doc.recompute()
     assert op_error(op).startswith("FirstCutDiameterMax=%g mm: the face groove's first plunge cuts diameters "
-                                   "%g..%g mm, above" % (high - 0.5, low, high)), op_error(op)
+                                   "%g..%g mm, above the first-cut diameter range of Grooving blade, "
+                                   "FirstCutDiameterMin=%g mm to FirstCutDiameterMax=%g mm: its curved holder"
+                                   % (high - 0.5, low, high, low, high - 0.5)), op_error(op)
     tc.Tool.FirstCutDiameterMax = high  # the range holds the first plunge exactly
     doc.recompute()
     assert op_error(op) is None, op_error(op)
