@@ -88,7 +88,7 @@ def test_the_header_names_the_tables_unit():
 @pytest.mark.parametrize("line, message", [
     ("5 3 0.2 minus", "1: T5: its side is not given: add side=external|internal|face|back-face"),
     ("5 3 0.2 minus side=top", "1: side=top: must be external, internal, face or back-face"),
-    ("5 3 0.2 minus hand=left", "1: hand=left: unknown; the only named field is side="),
+    ("5 3 0.2 minus hand=left", "1: hand=left: unknown; the named fields are side=, dmin=, dmax=, bore=, holder="),
     ("0 3 0.2 minus side=face", "1: T=0: LinuxCNC's tool numbers are 1 to 99999 (T0 is no tool)"),
     ("100000 3 0.2 minus side=face", "1: T=100000: LinuxCNC's tool numbers are 1 to 99999"),
     ("# nothing", "0: <stdin> lists no tool: nothing to write"),

@@ -17,6 +17,7 @@ it; a program memory (``MEMORY``, ``program_memory.py``) and parameter blocks
 
 from typing import ClassVar, Dict, List, Optional, Tuple, Type
 
+from .blade_limits import BladeEntry
 from .block_forms import BlockForm, SingleBlock
 from .moves import MachineState, Move
 from .settings import DEFAULT_SETTINGS, Settings
@@ -96,6 +97,12 @@ class Cycle:
         """(how deep the blade cuts below the surface, as a radius; the word that says it) for the blade's
         reach check (tool_table.reach_problem); None: the call does not say (the pecking cycles' programs
         do not say where the surface is). Default: None."""
+        return None
+
+    def blade_entry(self, state: MachineState, settings: Settings, moves: List[Move]) -> Optional[BladeEntry]:
+        """Where the blade's first plunge of the expansion ``moves`` (from ``state``) cuts, for the holder's
+        limits (blade_limits.limits_problem: a face-grooving blade's first-cut diameters, an internal bar's
+        smallest bore); None: the call does not say where the part is. Default: None."""
         return None
 
     # program memory (MEMORY set): program_memory.py

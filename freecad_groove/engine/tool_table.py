@@ -24,6 +24,14 @@ The text format, one tool a line::
   bore), ``face`` (toward -Z) or ``back-face`` (toward +Z). The cycles do not
   need it (a cycle's own words say where it cuts); a lathe tool table written
   for a control does (``tools --to linuxcnc``: the tool's orientation);
+* anywhere after the first four, optionally, what the blade's holder allows
+  (blade_limits.py; each one given is checked, one not given is not):
+  ``dmin=D`` and ``dmax=D``, a face-grooving blade's first-cut diameter
+  range (a face groove's first plunge must cut between them); ``bore=D``, an
+  internal bar's smallest bore (an internal groove's bore must be at least
+  D); ``holder=W``, the holder's width across the blade, centred on it,
+  beginning at the reach (needs the reach field): ``verify`` draws it and
+  reports it entering standing material (verify/holder.py);
 * ``#`` starts a comment, to the end of the line; blank lines are skipped;
 * lengths are in the program's units at the time the cycle runs (a table for
   an inch program holds inches), like ``--tool-width``.
@@ -42,6 +50,7 @@ import math
 import re
 from typing import Dict, Iterable, Optional, Tuple
 
+from .blade_limits import BladeLimits
 from .errors import ProgramError
 from .moves import REFERENCE_MINUS, REFERENCE_PLUS, GroovingTool
 from .numbers import MAX_WORD, format_value
@@ -66,6 +75,8 @@ class ToolTable(Dict[int, GroovingTool]):
         self.reach: Dict[int, float] = {}  # tool number -> the blade's free reach, where the table gives one
         self.sides: Dict[int, str] = {}  # tool number -> its side= (SIDES), where the line gives one
         self.lines: Dict[int, int] = {}  # tool number -> the line that gives it (messages)
+        self.limits: Dict[int, BladeLimits] = {}  # tool number -> dmin=, dmax=, bore= (where a line gives one)
+        self.holders: Dict[int, float] = {}  # tool number -> holder= (the holder's width)
 
 
 def _number(field: str, text: str, line: int) -> float:
@@ -78,20 +89,51 @@ def _number(field: str, text: str, line: int) -> float:
     return value
 
 
-def _options(fields: list, line: int) -> Dict[str, str]:
-    """The ``name=value`` fields of a line (removed from ``fields``): side=."""
-    options: Dict[str, str] = {}
+NUMBER_OPTIONS = ("dmin", "dmax", "bore", "holder")  # lengths (diameters, the holder's width), greater than 0
+
+
+def _options(fields: list, line: int) -> Dict[str, object]:
+    """The ``name=value`` fields of a line (removed from ``fields``): side=, dmin=, dmax=, bore=, holder=."""
+    options: Dict[str, object] = {}
     for field in [f for f in fields if "=" in f]:
         fields.remove(field)
         name, value = field.split("=", 1)
-        if name != "side":
-            raise ProgramError("%s: unknown; the only named field is side=" % field, line)
-        if value not in SIDES:
-            raise ProgramError("side=%s: must be %s" % (value, ", ".join(SIDES[:-1]) + " or " + SIDES[-1]), line)
+        if name != "side" and name not in NUMBER_OPTIONS:
+            raise ProgramError("%s: unknown; the named fields are side=, %s" % (
+                field, ", ".join(n + "=" for n in NUMBER_OPTIONS)), line)
         if name in options:
-            raise ProgramError("%s: side= is given twice" % field, line)
-        options[name] = value
+            raise ProgramError("%s: %s= is given twice" % (field, name), line)
+        if name == "side":
+            if value not in SIDES:
+                raise ProgramError("side=%s: must be %s" % (value, ", ".join(SIDES[:-1]) + " or " + SIDES[-1]),
+                                   line)
+            options[name] = value
+            continue
+        number = _number(name, value, line)
+        if not number > 0:
+            raise ProgramError("%s=%s: must be greater than 0 (leave the field out when it is not known)"
+                               % (name, value), line)
+        options[name] = number
+    if "dmin" in options and "dmax" in options and not options["dmin"] < options["dmax"]:
+        raise ProgramError("dmin=%s: must be less than dmax=%s" % (
+            format_value(options["dmin"]), format_value(options["dmax"])), line)
     return options
+
+
+def _holder_options(number: int, tool: GroovingTool, reach: Optional[float], options: dict, table: "ToolTable",
+                    line: int) -> None:
+    """A line's dmin=, dmax=, bore= and holder= into ``table`` (holder= needs the reach, at least the width)."""
+    if any(name in options for name in ("dmin", "dmax", "bore")):
+        table.limits[number] = BladeLimits(options.get("dmin"), options.get("dmax"), options.get("bore"))
+    if "holder" in options:
+        holder = options["holder"]
+        if reach is None:
+            raise ProgramError("holder=%s: needs the reach field (the holder begins at the blade's free reach)"
+                               % format_value(holder), line)
+        if holder < tool.width - TOLERANCE:
+            raise ProgramError("holder=%s: must be at least the blade's width %s"
+                               % (format_value(holder), format_value(tool.width)), line)
+        table.holders[number] = holder
 
 
 def _tool_line(fields: list, line: int) -> Tuple[int, GroovingTool, Optional[float]]:
@@ -139,6 +181,7 @@ def read_tool_table(text: str, source_name: str = "the tool table") -> ToolTable
             table.reach[number] = reach
         if "side" in options:
             table.sides[number] = options["side"]
+        _holder_options(number, tool, reach, options, table, line)
         lines[number] = line
     return table
 

@@ -11,6 +11,7 @@ are declared by the cycle beside its form."""
 from dataclasses import replace
 from typing import List, Optional, Sequence
 
+from .blade_limits import limits_problem
 from .block_forms import CycleCall, OpenBlocks
 from .cycle import Cycle
 from .dialects import CYCLE, CYCLE_OPTIONS, MODE_GROUPS
@@ -65,6 +66,7 @@ class CycleTranslation(TranslatorBase):
             if cycle.MEMORY:
                 model = with_memory(self, model, start)
             moves = model.expand(start, settings)
+            self._check_blade_limits(model, start, settings, moves)
             note = model.note(start, settings)  # what the call did that its words do not say (G32: the Z used)
             if note is not None:
                 label = "%s: %s" % (label, note)
@@ -156,6 +158,16 @@ class CycleTranslation(TranslatorBase):
         if said is None or not isinstance(self.tools, ToolTable) or self.state.tool not in self.tools:
             return
         problem = reach_problem(said[0], self.state.tool, self.tools, said[1])
+        if problem is not None:
+            self._fail(problem)
+
+    def _check_blade_limits(self, model: Cycle, start: MachineState, settings: Settings, moves: List[Move]) -> None:
+        """A call the holder of the tool in force cannot cut (the tool table's dmin=, dmax=, bore=) is refused
+        (blade_limits.limits_problem; where the blade cuts: Cycle.blade_entry)."""
+        if not isinstance(self.tools, ToolTable) or self.state.tool not in self.tools.limits:
+            return
+        problem = limits_problem(model.blade_entry(start, settings, moves), self.tools.limits[self.state.tool],
+                                 "T%d's blade (%s)" % (self.state.tool, self.tools.source))
         if problem is not None:
             self._fail(problem)
 

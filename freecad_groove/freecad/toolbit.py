@@ -34,6 +34,8 @@ import os
 import FreeCAD
 
 from .addon_bits import length, make_bit, make_tool_controller, reload_shape
+from .blade_holder import NAMES as HOLDER_PROPERTIES
+from .blade_holder import add_holder_properties
 
 SHAPE_FILE = os.path.join(
     os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
@@ -85,6 +87,12 @@ if NEW_TOOLBITS:
         def __init__(self, shape, id=None):
             super().__init__(shape, id=id)
 
+        def _create_base_properties(self):
+            # CAM sets up a bit's own properties here (new, from a library, restored): the holder's, optional
+            # (blade_holder.py), beside them; plain properties, not shape parameters.
+            super()._create_base_properties()
+            add_holder_properties(self.obj)
+
         @property
         def summary(self):
             width = self.get_property_str("Width", "?", precision=3)
@@ -111,10 +119,13 @@ if NEW_TOOLBITS:
 def make_grooving_bit(doc, width, corner_radius, label="Grooving blade", **params):
     """A grooving blade tool bit in ``doc`` (a Part::FeaturePython) with
     Width ``width`` and CornerRadius ``corner_radius`` (mm); ``params`` sets
-    other shape parameters (CuttingEdgeHeight, Length). Diameter follows
+    other shape parameters (CuttingEdgeHeight, Length) and the holder's
+    properties (blade_holder.py: FirstCutDiameterMin, FirstCutDiameterMax,
+    MinBoreDiameter, HolderWidth; 0 or left out: not given). Diameter follows
     Width."""
     if not os.path.exists(SHAPE_FILE):
         raise FileNotFoundError("the grooving blade shape is missing: " + SHAPE_FILE)
+    holder = {name: length(params.pop(name)) for name in HOLDER_PROPERTIES if name in params}
     values = dict(params, Width=width, CornerRadius=corner_radius)
     unknown = sorted(set(values) - {"Width", "CornerRadius", "CuttingEdgeHeight", "Length"})
     if unknown:
@@ -124,6 +135,9 @@ def make_grooving_bit(doc, width, corner_radius, label="Grooving blade", **param
     bit = make_bit(doc, SHAPE_FILE, _load_shape if NEW_TOOLBITS else None, ToolBitGrooving if NEW_TOOLBITS else None,
                    values, label)
     bit.setExpression("Diameter", "Width")
+    add_holder_properties(bit)  # (FreeCAD 1.1's bit has them already)
+    for name, value in holder.items():
+        setattr(bit, name, value)
     return bit
 
 

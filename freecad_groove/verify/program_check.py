@@ -37,11 +37,12 @@ import numpy as np
 
 from freecad_groove.engine.errors import ProgramError
 from freecad_groove.engine.moves import DWELL, FEED, MINUS_X, MINUS_Z, PLUS_X, RAPID
-from freecad_groove.engine.tool_table import blade_for
+from freecad_groove.engine.tool_table import ToolTable, blade_for
 
 from . import columns as col
 from .column_figures import NOISE_AREA
 from .column_sweep import Material, swept_rows
+from .holder import Holder
 from .machining_time import Feeds, MachiningTime, feed_seconds, rapid_seconds
 from .program_record import RecordingTranslator, SpeedState, Step, mm_blade
 from .shapes import Section, Shape, union_all
@@ -152,10 +153,17 @@ def _fill_blades(steps: list[Step], tools, default_blade) -> None:
         step.plunge = nearest.plunge if nearest is not None else MINUS_X
 
 
-def _op(step: Step) -> OpInput:
+def _holder(step: Step, tools) -> Optional[Holder]:
+    """The holder of the step's tool where the tool table gives its reach and ``holder=`` (mm), else None."""
+    if not isinstance(tools, ToolTable) or step.tool not in tools.holders or step.tool not in tools.reach:
+        return None
+    return Holder(tools.reach[step.tool] * step.scale, tools.holders[step.tool] * step.scale)
+
+
+def _op(step: Step, holder: Optional[Holder] = None) -> OpInput:
     rings = step.grooves or [[]]
-    runs = [GrooveRun(step.moves if k == 0 else [], step.lines if k == 0 else [], step.blade, step.plunge, ring)
-            for k, ring in enumerate(rings)]
+    runs = [GrooveRun(step.moves if k == 0 else [], step.lines if k == 0 else [], step.blade, step.plunge, ring,
+                      holder=holder) for k, ring in enumerate(rings)]
     return OpInput(step.label, step.start, runs)
 
 
@@ -227,6 +235,12 @@ def findings(steps: list[Step], checks: list[OpCheck], gouge_line=_gouge_line) -
                           "standing stock near X%.3f Z%.3f (X diameters)" % (
                               2 * hit.start[0], hit.start[1], 2 * hit.end[0], hit.end[1], hit.area,
                               2 * hit.at[0], hit.at[1])))
+        for hit in check.holder_hits:
+            found.append((hit.command, "holder: %s X%.3f Z%.3f -> X%.3f Z%.3f: the blade's holder (%.4g wide, from "
+                          "%.4g behind the cutting edge) enters %.4g mm^2 of standing material near X%.3f Z%.3f "
+                          "(X diameters, mm)" % ("G0" if hit.rapid else "G1", 2 * hit.start[0], hit.start[1],
+                                                 2 * hit.end[0], hit.end[1], hit.holder.width, hit.holder.reach,
+                                                 hit.area, 2 * hit.at[0], hit.at[1])))
     return sorted(found)
 
 
@@ -239,7 +253,7 @@ def check_program(name: str, record: RecordingTranslator, stock_spec: Optional[S
     _fill_blades(steps, record.tools, record.settings.tool)
     stock, note = default_stock(steps, record.first_approach, stock_spec)
     part = stock - union_all([groove_region(ring) for step in steps for ring in step.grooves])
-    ops = [_op(step) for step in steps]
+    ops = [_op(step, _holder(step, record.tools)) for step in steps]
     grid, step_width = layout([stock, part], ops)
     material = Material(grid, stock, falls=True)
     part_model = PartModel(grid, part)
@@ -259,6 +273,7 @@ def _step_line(name: str, step: Step, check: OpCheck, time: MachiningTime) -> st
     what = _what(step)
     gouge = "GOUGE %.4f mm^2" % check.gouge_area if check.gouge_depth else "gouge 0"
     rapids = ", %d RAPID(S) THROUGH STOCK" % len(check.rapid_hits) if check.rapid_hits else ""
+    rapids += ", HOLDER IN STOCK AT %d MOVE(S)" % len(check.holder_hits) if check.holder_hits else ""
     return "%s:%d: %s: removed %.4f mm^2, %s, leftover %.4f mm^2, unreachable %.4f mm^2%s, time %s" % (
         name, step.line, what, check.removed, gouge, check.leftover, check.unreachable, rapids, time.describe())
 

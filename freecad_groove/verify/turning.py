@@ -42,6 +42,7 @@ from .column_figures import NOISE_AREA, hinted, measure_gouge, thicker_than
 from .column_reach import unreachable_across, unreachable_along
 from .column_sweep import FeedPath, Material, sweep
 from .columns import DIFFERENCE, INTERSECTION, UNION, Flat, Grid
+from .holder import Holder, HolderHit, holder_hits, holder_lines, holder_region, holder_z_extent
 from .machining_time import Feeds, MachiningTime, machining_time
 from .outline import outline_at_origin
 from .shapes import EMPTY_SECTION, Edges, Section, Shape, box, corners
@@ -84,6 +85,7 @@ class GrooveRun:
     region: list[Point]
     reach_warning: float = 0.0
     programmed: bool = True
+    holder: Optional[Holder] = None  # the blade's holder (holder.py); None: not drawn
 
 
 @dataclass(frozen=True)
@@ -129,15 +131,18 @@ class OpCheck:
     unreachable: float = 0.0
     reach_warning: float = 0.0
     rapid_hits: list[RapidHit] = field(default_factory=list)
+    holder_hits: list[HolderHit] = field(default_factory=list)  # moves whose holder enters standing material
     time: Optional[MachiningTime] = None
     removed_region: Region = EMPTY_SECTION
     gouge_region: Region = EMPTY_SECTION
     leftover_region: Region = EMPTY_SECTION
     unreachable_region: Region = EMPTY_SECTION
+    holder_region: Region = EMPTY_SECTION  # the standing material the blade's holder enters
 
     @property
     def ok(self) -> bool:
-        return self.error is None and not self.gouge_depth and not self.leftover and not self.rapid_hits
+        return (self.error is None and not self.gouge_depth and not self.leftover and not self.rapid_hits
+                and not self.holder_hits)
 
     def summary(self) -> str:
         if self.error:
@@ -154,6 +159,7 @@ class OpCheck:
         lines.append("  unreachable %.4f mm^2 (the cycle's reach warnings: %.4f mm^2)"
                      % (self.unreachable, self.reach_warning))
         lines += ["  RAPID THROUGH STOCK: " + hit.describe() for hit in self.rapid_hits]
+        lines += holder_lines(self.holder_hits)
         if self.time is not None:
             lines.append("  machining time " + self.time.describe())
         return "\n".join(lines)
@@ -204,15 +210,15 @@ def _arc_reach(move: Move) -> float:
 
 
 def op_range(op: OpInput) -> tuple[float, float]:
-    """The Z range an op's blades and grooves reach (WINDOW_MARGIN more)."""
+    """The Z range an op's blades (their holders too) and grooves reach (WINDOW_MARGIN more)."""
     lo = hi = float(op.start[1])
     for run in op.grooves:
-        base = outline_at_origin(run.tool, run.plunge)
+        below, above = holder_z_extent(run.tool, run.plunge, run.holder, outline_at_origin(run.tool, run.plunge))
         zs = [float(m.z) for m in run.moves] + [float(z) for _x, z in run.region]
         bulge = max([_arc_reach(m) for m in run.moves if m.kind in ARCS] or [0.0])
         if zs:
-            lo = min(lo, min(zs) - bulge + float(base[:, 0].min()))
-            hi = max(hi, max(zs) + bulge + float(base[:, 0].max()))
+            lo = min(lo, min(zs) - bulge + below)
+            hi = max(hi, max(zs) + bulge + above)
     return lo - WINDOW_MARGIN, hi + WINDOW_MARGIN
 
 
@@ -320,6 +326,8 @@ def check_op(op: OpInput, material: Material, part: PartModel, tol: float = DEFA
     window = grid.part(*span)
     before = material.rows(*span)
     position, feeds = op.start, []
+    check.holder_hits = holder_hits(op.start, op.grooves, before, window)
+    check.holder_region = holder_region(check.holder_hits, window)
     for run in op.grooves:
         hits, position, run_feeds = sweep(material, run.moves, run.tool, run.plunge, position, span)
         check.rapid_hits += [RapidHit(run.commands[h.index], h.start, h.end, h.area, h.at) for h in hits]

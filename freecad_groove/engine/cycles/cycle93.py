@@ -65,6 +65,7 @@ from dataclasses import dataclass, fields
 from functools import lru_cache
 from typing import ClassVar, List, Optional, Tuple
 
+from ..blade_limits import BladeEntry, face_band, first_plunge
 from ..cycle import Cycle
 from ..moves import MINUS_X, MINUS_Z, PLUS_X, PLUS_Z, MachineState, Move
 from ..numbers import DIGITS_RULE, format_exact, format_value, shortened, too_many_digits
@@ -226,6 +227,19 @@ class Cycle93(Cycle):
         """DEPG as a radius (halved for a longitudinal groove in diameter input), for the blade's reach."""
         depth = float(self.depg) / (2 if settings.cycle93_diameter_input and self.kind()[0] else 1)
         return depth, "CYCLE93 DEPG=%s" % format_value(self.depg)
+
+    def blade_entry(self, state: MachineState, settings: Settings, moves: List[Move]) -> Optional[BladeEntry]:
+        """The diameters the first plunge spans (face grooves) or the bore at the groove's opening (internal
+        longitudinal grooves: the region's smallest radius), as blade_limits reads them."""
+        plunge = self.plunge_direction()
+        first = first_plunge(moves)
+        if plunge in (MINUS_Z, PLUS_Z) and first is not None and first.x is not None:
+            low, high = face_band(settings.tool, float(first.x))
+            return BladeEntry(plunge, low=low, high=high)
+        if plunge == PLUS_X:
+            region = self.geometry(settings, state.metric).region_world()
+            return BladeEntry(plunge, bore=2 * min(float(x) for x, _z in region))
+        return None
 
     def warnings(self, state: MachineState, settings: Settings = DEFAULT_SETTINGS) -> List[CycleWarning]:
         """What the expansion from ``state`` cannot do as programmed: allowances

@@ -63,4 +63,10 @@ TOOL_BOUNDS = (
     _length("Width", "greater than 0: the blade's width (else the op's ToolWidth)"),
     _length("CornerRadius"),
     _length("CuttingEdgeHeight", "the blade's free reach: a deeper groove is refused (0 or none: not checked)"),
+    _length("FirstCutDiameterMin", "a face groove's first plunge cutting below it is refused (0 or none: not "
+                                   "checked)"),
+    _length("FirstCutDiameterMax", "a face groove's first plunge cutting above it is refused (0 or none: not "
+                                   "checked)"),
+    _length("MinBoreDiameter", "an internal groove in a smaller bore is refused (0 or none: not checked)"),
+    _length("HolderWidth", "the turning check draws the holder (0 or none: not drawn)"),
 )

@@ -104,7 +104,7 @@ from .properties import (  # noqa: F401 - this module's API too
     error_properties,
     finite_or_error,
 )
-from .reach import check_reach
+from .reach import check_holder_limits, check_reach
 
 # TYP units digit for "right" grooves: (longitudinal, external) -> TYP
 TYP_RIGHT = {(True, True): 5, (True, False): 7, (False, True): 6, (False, False): 8}
@@ -450,6 +450,7 @@ class ObjectGroove(AddonOp):
                 previous = plans[-1] if plans else None
                 plans.append(plan_groove(face, index, self.position(obj, index), call, settings, envelope, feed,
                                          previous, origin))
+        check_holder_limits(obj, plans)
         last = plans[-1]
         last.retreat = envelope.retreat(last.start_point, last.start_on, blade_origin(origin, last.cycle, settings))
         return plans

@@ -28,7 +28,9 @@ Here the Job is read into plain data:
   on a plain face; never one in a face of a modelled groove: the model says
   what the op must leave there); the feeds and speeds
   (groove/cutting.py) with the tool controller's rapid rates (HorizRapid for X,
-  VertRapid for Z).
+  VertRapid for Z); the blade's holder where its tool bit gives CuttingEdgeHeight
+  and HolderWidth (verify/holder.py: a holder entering standing material is
+  reported with the op and the move).
 
 Each checked op's CycleTime becomes its machining time (HH:MM:SS, as
 FreeCAD's ops write it) and the Job's CycleTime their sum. A recompute of
@@ -51,6 +53,7 @@ from ...freecad.units import feed_mm_per_min, length_mm
 from ..groove.cutting import cutting_data
 
 if TYPE_CHECKING:
+    from ...verify.holder import Holder
     from ...verify.machining_time import Feeds
     from ...verify.turning import JobCheck, OpInput
 
@@ -177,6 +180,17 @@ def _feeds(op: object) -> Feeds:
                  rapid_x, rapid_z)
 
 
+def _holder(op: object) -> Optional[Holder]:
+    """The blade's holder the check draws: its tool bit's CuttingEdgeHeight and HolderWidth, when both are given
+    (freecad/blade_holder.py); None: not drawn."""
+    from ...freecad.blade_holder import holder_outline
+    from ...verify.holder import Holder
+
+    bit = getattr(getattr(op, "ToolController", None), "Tool", None)
+    outline = holder_outline(bit) if bit is not None and getattr(bit, "Width", None) is not None else None
+    return Holder(*outline) if outline is not None else None
+
+
 def op_input(op: object) -> OpInput:
     """The verify.turning.OpInput of Groove op ``op`` (its error when it cannot be checked)."""
     from ...freecad.addon_op import op_error
@@ -193,9 +207,10 @@ def op_input(op: object) -> OpInput:
             raise TurningCheckError("its Path has %d groove section(s) but the op plans %d groove(s): recompute it"
                                     % (len(runs), len(plans)))
         programmed = not op.ModelGroove and not op.Proxy.in_modelled_groove(op)
+        holder = _holder(op)
         grooves = [GrooveRun([m for _n, m in run], [n for n, _m in run], tool, plan.cycle.plunge_direction(),
                              plan.geometry.region_world(), sum(u.area for u in unreachable_regions(plan.geometry)),
-                             programmed)
+                             programmed, holder)
                    for run, plan in zip(runs, plans)]
         first = runs[0][0][1] if runs else Move(RAPID, 0.0, 0.0)
         return OpInput(op.Label, (first.x, first.z), grooves, _feeds(op))

@@ -2,7 +2,10 @@
 while its panel is open: in the XZ plane at Y = 0 (X = radius), like the
 op's Path and the Groove panel's preview, in an SoAnnotation: the stock left
 standing (grey outline), gouges (red), material left in the grooves that the
-blade could reach (orange) and what it cannot reach (yellow).
+blade could reach (orange), what it cannot reach (yellow), and where a
+blade's holder enters standing material: that material (magenta) and the
+holder's outline at the end of each move that does (violet; the first
+HOLDER_OUTLINES of an op).
 """
 
 from pivy import coin
@@ -13,6 +16,9 @@ REMAINING_COLOR = (0.45, 0.45, 0.45)
 GOUGE_COLOR = (0.9, 0.0, 0.0)
 LEFTOVER_COLOR = (1.0, 0.55, 0.0)
 UNREACHABLE_COLOR = (0.9, 0.8, 0.0)
+HOLDER_COLOR = (0.85, 0.0, 0.85)
+HOLDER_OUTLINE_COLOR = (0.5, 0.2, 0.9)
+HOLDER_OUTLINES = 3
 
 
 def rings(geometry):
@@ -39,7 +45,8 @@ class SectionDrawing:
     takes them out. ``drawn`` holds the rings of each layer by name."""
 
     LAYERS = (("remaining", REMAINING_COLOR, 1.5), ("unreachable", UNREACHABLE_COLOR, 3),
-              ("leftover", LEFTOVER_COLOR, 3), ("gouge", GOUGE_COLOR, 4))
+              ("leftover", LEFTOVER_COLOR, 3), ("gouge", GOUGE_COLOR, 4), ("holder", HOLDER_COLOR, 4),
+              ("holder outline", HOLDER_OUTLINE_COLOR, 2))
 
     def __init__(self, view):
         self.root = coin.SoAnnotation()
@@ -64,6 +71,9 @@ class SectionDrawing:
             "unreachable": [r for op in ops for r in rings(op.unreachable_region)],
             "leftover": [r for op in ops for r in rings(op.leftover_region)],
             "gouge": [r for op in ops for r in rings(op.gouge_region)],
+            "holder": [r for op in ops for r in rings(op.holder_region)],
+            "holder outline": [[(float(x), 0.0, float(z)) for z, x in hit.outline]
+                               for op in ops for hit in op.holder_hits[:HOLDER_OUTLINES]],
         }
         for name, polys in self.drawn.items():
             _separator, coords, lines = self._layers[name]
