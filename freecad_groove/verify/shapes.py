@@ -51,14 +51,22 @@ class Shape:
     def is_empty(self) -> bool:
         return self.area == 0.0
 
+    def z_range(self) -> Optional[tuple[float, float]]:
+        """The Z range the region may reach (None: nowhere): an intersection
+        reaches no farther than either side, a difference than its first."""
+        v = self.vertices()
+        return (float(v[:, 0].min()), float(v[:, 0].max())) if len(v) else None
+
     @property
     def area(self) -> float:
-        """On columns AREA_STEP wide (and at every vertex): exact for straight edges."""
-        v = self.vertices()
-        if not len(v):
+        """On columns AREA_STEP wide (and at every vertex) over its Z range: exact for straight edges."""
+        reach = self.z_range()
+        if reach is None or reach[1] <= reach[0]:
             return 0.0
-        grid = col.make_grid(v[:, 0], [(v[:, 0].min(), v[:, 0].max())], AREA_STEP, 0.0)
-        return col.area(self.rows(grid.centres), grid.widths)
+        shape = self.clipped(*reach)
+        z = shape.vertices()[:, 0]
+        grid = col.make_grid(np.concatenate([z[(z >= reach[0]) & (z <= reach[1])], reach]), [reach], AREA_STEP, 0.0)
+        return col.area(shape.rows(grid.centres), grid.widths)
 
     def __or__(self, other: Shape) -> Shape:
         return Combined(UNION, self, other)
@@ -101,6 +109,17 @@ class Combined(Shape):
 
     def clipped(self, zlo: float, zhi: float) -> Shape:
         return Combined(self.op, self.a.clipped(zlo, zhi), self.b.clipped(zlo, zhi))
+
+    def z_range(self) -> Optional[tuple[float, float]]:
+        a = self.a.z_range()
+        if self.op == DIFFERENCE or a is None:
+            return a
+        b = self.b.z_range()
+        if b is None:
+            return None if self.op == INTERSECTION else a
+        if self.op == INTERSECTION:
+            return (max(a[0], b[0]), min(a[1], b[1])) if max(a[0], b[0]) <= min(a[1], b[1]) else None
+        return (min(a[0], b[0]), max(a[1], b[1]))
 
 
 @dataclass(frozen=True, eq=False)
