@@ -25,7 +25,7 @@ from . import columns as col
 from .arcs import straightened
 from .columns import DIFFERENCE, Flat, Grid
 from .outline import outline_at_origin
-from .shapes import Shape
+from .shapes import Shape, padded_area, padded_rows
 
 # As sweep.RAPID_SKIN and sweep.RAPID_AREA_TOL (that module needs shapely).
 RAPID_SKIN = 2e-5 + 1e-5
@@ -67,13 +67,18 @@ class Material:
 
     def __init__(self, grid: Grid, shape: Shape, falls: bool = False) -> None:
         self.grid = grid
-        self.lo, self.hi = col.pack(len(grid), shape.rows(grid.centres))
+        self.lo, self.hi = padded_rows(grid, shape)
+        self.stock_area = self.area()
         self.falls = falls
         self.held_end = len(grid)
         if falls:
             full = np.nonzero(self.lo[:, 0] < self.hi[:, 0])[0]
             if len(full):
                 self.drop_after(int(full[0]), len(grid))
+
+    def area(self) -> float:
+        """The area standing (mm^2)."""
+        return padded_area(self.lo, self.hi, self.grid.widths)
 
     def rows(self, i0: int, i1: int) -> Flat:
         """The columns i0:i1, numbered from i0."""

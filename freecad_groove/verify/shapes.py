@@ -221,6 +221,46 @@ class Section:
 EMPTY_SECTION = Section()
 
 
+@dataclass(frozen=True)
+class Measured:
+    """A region of which only the area is kept (verify's report: no picture to draw)."""
+
+    area: float
+
+    @property
+    def is_empty(self) -> bool:
+        return not self.area
+
+
+def padded_area(lo: np.ndarray, hi: np.ndarray, widths: np.ndarray, chunk: int = 1 << 16) -> float:
+    """The area of a padded set on columns ``widths`` wide (``chunk`` columns at a time)."""
+    total = 0.0
+    for i0 in range(0, len(lo), chunk):
+        a, b = lo[i0:i0 + chunk], hi[i0:i0 + chunk]
+        length = np.subtract(b, a, out=np.zeros(a.shape), where=a < b)
+        total += float(np.sum(length.sum(axis=1) * widths[i0:i0 + chunk]))
+    return total
+
+
+def padded_rows(grid: Grid, shape: Shape, chunk: int = 1 << 16) -> tuple[np.ndarray, np.ndarray]:
+    """``shape`` on the columns of ``grid`` as a padded set, taken ``chunk``
+    columns at a time (only the rings that reach them): no whole-grid array
+    but the result."""
+    n = len(grid)
+    parts = []
+    for i0 in range(0, n, chunk):
+        i1 = min(n, i0 + chunk)
+        local = shape.clipped(float(grid.edges[i0]), float(grid.edges[i1]))
+        parts.append(col.pack(i1 - i0, local.rows(grid.centres[i0:i1])))
+    if len(parts) == 1:
+        return parts[0]
+    k = max(lo.shape[1] for lo, _hi in parts)
+    lo, hi = col.empty_padded(n, k)
+    for i0, (a, b) in zip(range(0, n, chunk), parts):
+        lo[i0:i0 + len(a), :a.shape[1]], hi[i0:i0 + len(a), :a.shape[1]] = a, b
+    return lo, hi
+
+
 # ---------------------------------------------------------------- distances to a shape's edges
 
 

@@ -44,7 +44,7 @@ from .column_sweep import FeedPath, Material, sweep
 from .columns import DIFFERENCE, INTERSECTION, UNION, Flat, Grid
 from .machining_time import Feeds, MachiningTime, machining_time
 from .outline import outline_at_origin
-from .shapes import EMPTY_SECTION, Edges, Section, Shape, box, corners
+from .shapes import EMPTY_SECTION, Edges, Section, Shape, box, corners, padded_area, padded_rows
 from .turned_section import groove_region, part_to_leave
 
 Point = tuple[float, float]
@@ -189,7 +189,8 @@ class PartModel:
 
     def __init__(self, grid: Grid, shape: Shape) -> None:
         self.shape = shape
-        self.lo, self.hi = col.pack(len(grid), shape.rows(grid.centres))
+        self.lo, self.hi = padded_rows(grid, shape)
+        self.area = padded_area(self.lo, self.hi, grid.widths)
         self.edges = Edges(shape)
 
     def rows(self, i0: int, i1: int) -> Flat:
