@@ -247,17 +247,16 @@ def padded_rows(grid: Grid, shape: Shape, chunk: int = 1 << 16) -> tuple[np.ndar
     columns at a time (only the rings that reach them): no whole-grid array
     but the result."""
     n = len(grid)
-    parts = []
+    lo, hi = col.empty_padded(n)
     for i0 in range(0, n, chunk):
         i1 = min(n, i0 + chunk)
         local = shape.clipped(float(grid.edges[i0]), float(grid.edges[i1]))
-        parts.append(col.pack(i1 - i0, local.rows(grid.centres[i0:i1])))
-    if len(parts) == 1:
-        return parts[0]
-    k = max(lo.shape[1] for lo, _hi in parts)
-    lo, hi = col.empty_padded(n, k)
-    for i0, (a, b) in zip(range(0, n, chunk), parts):
-        lo[i0:i0 + len(a), :a.shape[1]], hi[i0:i0 + len(a), :a.shape[1]] = a, b
+        a, b = col.pack(i1 - i0, local.rows(grid.centres[i0:i1]))
+        k = a.shape[1]
+        if k > lo.shape[1]:
+            grow = np.full((n, k - lo.shape[1]), col.EMPTY_SLOT)
+            lo, hi = np.hstack([lo, grow]), np.hstack([hi, grow])
+        lo[i0:i1, :k], hi[i0:i1, :k] = a, b
     return lo, hi
 
 

@@ -44,7 +44,7 @@ from .column_sweep import FeedPath, Material, sweep
 from .columns import DIFFERENCE, INTERSECTION, UNION, Flat, Grid
 from .machining_time import Feeds, MachiningTime, machining_time
 from .outline import outline_at_origin
-from .shapes import EMPTY_SECTION, Edges, Section, Shape, box, corners, padded_area, padded_rows
+from .shapes import EMPTY_SECTION, Edges, Section, Shape, box, corners
 from .turned_section import groove_region, part_to_leave
 
 Point = tuple[float, float]
@@ -185,16 +185,28 @@ class JobCheck:
 
 
 class PartModel:
-    """The part the ops must leave on the material's grid, and its edges (for depths)."""
+    """The part the ops must leave on the material's grid, and its edges (for
+    depths): taken on the columns an op asks for when it asks (only the rings
+    that reach them), nothing kept per column."""
+
+    CHUNK = 1 << 16  # columns measured at once for the area
 
     def __init__(self, grid: Grid, shape: Shape) -> None:
+        self.grid = grid
         self.shape = shape
-        self.lo, self.hi = padded_rows(grid, shape)
-        self.area = padded_area(self.lo, self.hi, grid.widths)
         self.edges = Edges(shape)
 
     def rows(self, i0: int, i1: int) -> Flat:
-        return col.flat(self.lo[i0:i1], self.hi[i0:i1])
+        """The columns i0:i1, numbered from i0."""
+        if i1 <= i0:
+            return col.empty_flat()
+        local = self.shape.clipped(float(self.grid.edges[i0]), float(self.grid.edges[i1]))
+        return local.rows(self.grid.centres[i0:i1])
+
+    @property
+    def area(self) -> float:
+        n, step = len(self.grid), self.CHUNK
+        return sum(col.area(self.rows(i0, min(n, i0 + step)), self.grid.widths[i0:]) for i0 in range(0, n, step))
 
 
 def _arc_reach(move: Move) -> float:
