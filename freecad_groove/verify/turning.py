@@ -195,13 +195,18 @@ class PartModel:
         self.grid = grid
         self.shape = shape
         self.edges = Edges(shape)
+        self._last: Optional[tuple[tuple[int, int], Flat]] = None
 
     def rows(self, i0: int, i1: int) -> Flat:
-        """The columns i0:i1, numbered from i0."""
+        """The columns i0:i1, numbered from i0 (the last span's kept: an op asks for its own several times)."""
         if i1 <= i0:
             return col.empty_flat()
+        if self._last is not None and self._last[0] == (i0, i1):
+            return self._last[1]
         local = self.shape.clipped(float(self.grid.edges[i0]), float(self.grid.edges[i1]))
-        return local.rows(self.grid.centres[i0:i1])
+        rows = local.rows(self.grid.centres[i0:i1])
+        self._last = ((i0, i1), rows)
+        return rows
 
     @property
     def area(self) -> float:
