@@ -101,7 +101,7 @@ def _check(args: argparse.Namespace, warnings: List[Tuple[int, CycleWarning]]):
         record = record_program(text, args.dialect, settings_from(args), start_state(args), tools)
         warnings.extend(record.warnings)
         spec = None if args.stock is None else StockSpec(*args.stock)
-        return check_program(name, record, spec, args.rapid_rate)
+        return check_program(name, record, spec, args.rapid_rate, regions=args.command == "plot")
     except ProgramError as exc:
         raise Failure.of_program_error(name, exc) from None
 

@@ -7,9 +7,12 @@ the values grow toward the blade's back, so the blade comes from above. A
 column is open from level F up when nothing but target and air lies above F
 and the target reaches down to F (the air straight behind the target is the
 only way in: reach.reachable_region's column); a column without target is
-closed. A blade placed with its reference corner at column position p sits
-no lower than y(p) = max over the columns it covers of F - L (L the lower
-side of its outline there); the lowest level it reaches in a column is
+open above the part in it (a blade may overhang the groove's opening where
+the contour falls away beside it, as tests/blade_oracle.py and
+cycle93_reach let it; a column of air holds it nowhere). A blade placed
+with its reference corner at column position p sits no lower than
+y(p) = max over the columns it covers of F - L (L the lower side of its
+outline there); the lowest level it reaches in a column is
 g = min over the placements covering it of y(p) + L. The target below g is
 what no placement reaches (cycle93_reach defines the same on the exact
 profile). Placements stand with a side on every column edge: flush with
@@ -26,6 +29,8 @@ from . import columns as col
 from .columns import DIFFERENCE, UNION, Flat, Grid
 from .outline import lower_chain, outline_at_origin
 from .shapes import Shape
+
+SEAM = 1e-6  # mm: part thinner than this along a column is rounding, not a wall
 
 # plunge: (columns along X (transposed), the sign that makes the blade's back "up")
 FRAMES = {MINUS_X: (False, 1.0), PLUS_X: (False, -1.0), MINUS_Z: (True, 1.0), PLUS_Z: (True, -1.0)}
@@ -52,11 +57,14 @@ def frame_unreachable(grid: Grid, target: Flat, solid: Flat, outline: np.ndarray
         return col.shifted(local, a)
     n = len(grid)
     c, edges = grid.centres, grid.edges
+    # where the target's top runs along the part's surface the two agree only to rounding: the sliver of
+    # part left above the target would close its column (blade_oracle grows the target by a seam likewise)
+    solid = col.select(solid, solid[2] - solid[1] > SEAM)
     top = np.full(n, -np.inf)
     np.maximum.at(top, solid[0], solid[2])
     floor = np.full(n, np.inf)
     np.minimum.at(floor, target[0], target[1])
-    level = np.where(np.isfinite(floor), np.maximum(top, floor), np.inf)
+    level = np.where(np.isfinite(floor), np.maximum(top, floor), top)
     chain = lower_chain(outline)
     omin, omax = chain[0, 0], chain[-1, 0]
     pos = np.concatenate([edges - omin, edges - omax])

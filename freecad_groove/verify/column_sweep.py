@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -24,7 +25,7 @@ from . import columns as col
 from .arcs import straightened
 from .columns import DIFFERENCE, Flat, Grid
 from .outline import outline_at_origin
-from .shapes import Shape
+from .shapes import Shape, padded_area, padded_rows
 
 # As sweep.RAPID_SKIN and sweep.RAPID_AREA_TOL (that module needs shapely).
 RAPID_SKIN = 2e-5 + 1e-5
@@ -66,13 +67,18 @@ class Material:
 
     def __init__(self, grid: Grid, shape: Shape, falls: bool = False) -> None:
         self.grid = grid
-        self.lo, self.hi = col.pack(len(grid), shape.rows(grid.centres))
+        self.lo, self.hi = padded_rows(grid, shape)
+        self.stock_area = self.area()
         self.falls = falls
         self.held_end = len(grid)
         if falls:
             full = np.nonzero(self.lo[:, 0] < self.hi[:, 0])[0]
             if len(full):
                 self.drop_after(int(full[0]), len(grid))
+
+    def area(self) -> float:
+        """The area standing (mm^2)."""
+        return padded_area(self.lo, self.hi, self.grid.widths)
 
     def rows(self, i0: int, i1: int) -> Flat:
         """The columns i0:i1, numbered from i0."""
@@ -159,14 +165,18 @@ def _extreme(w0: np.ndarray, w1: np.ndarray, dz: np.ndarray, dx: np.ndarray, r: 
     return np.where((w0 <= m1) & (w1 >= m0), overall, ends)
 
 
+@lru_cache(maxsize=64)
 def blade_box(tool: GroovingTool, plunge: str) -> tuple[np.ndarray, float]:
     """The blade as a box (z0, x0, z1, x1) about its reference corner grown
     by a disk of its corner radius (all four corners rounded: the back ones,
-    far behind the cutting edge, are sharp on the real blade), and the radius."""
+    far behind the cutting edge, are sharp on the real blade), and the radius
+    (cached: read-only)."""
     points = np.asarray(outline_at_origin(tool, plunge))
     r = float(tool.corner_radius) if float(tool.corner_radius) > 1e-7 else 0.0
     lo, hi = points.min(axis=0) + r, points.max(axis=0) - r
-    return np.array([lo[0], lo[1], hi[0], hi[1]]), r
+    box = np.array([lo[0], lo[1], hi[0], hi[1]])
+    box.setflags(write=False)
+    return box, r
 
 
 def swept_rows(centres: np.ndarray, tool: GroovingTool, plunge: str, starts: np.ndarray, ends: np.ndarray,
@@ -177,6 +187,8 @@ def swept_rows(centres: np.ndarray, tool: GroovingTool, plunge: str, starts: np.
     B grown by a disk; swept along d it is B + capsule(0 -> d, r), and a
     column's line z = c meets it from the lowest to the highest level of the
     capsule over c - B's Z extent, B's X extent added: exact, arcs and all."""
+    if not len(starts):
+        return col.empty_flat(), np.empty(0, dtype=np.int64)
     box, r = blade_box(tool, plunge)
     if skin > r:
         box, r = box + np.array([skin - r, skin - r, r - skin, r - skin]), 0.0
@@ -224,57 +236,91 @@ def _zx(points: Sequence[Point]) -> np.ndarray:
     return np.array([(z, x) for x, z in points], dtype=float).reshape(-1, 2)
 
 
-def _rapid_hit(material: Material, tool: GroovingTool, plunge: str, start: Point, end: Point,
-               window: tuple[int, int]) -> tuple[float, Point] | None:
-    """(area, (x, z) inside) of the held material the rapid's sweep (less RAPID_SKIN) overlaps, or None."""
-    limit = material.held_end
-    box, r = blade_box(tool, plunge)
-    reach = r - RAPID_SKIN  # the swept area's bounding box, shrunk by the skin: nothing standing in it, no hit
-    zlo, zhi = min(start[1], end[1]) + box[0] - reach, max(start[1], end[1]) + box[2] + reach
-    xlo, xhi = min(start[0], end[0]) + box[1] - reach, max(start[0], end[0]) + box[3] + reach
-    i0, i1 = material.grid.span(zlo, zhi)
-    lo, hi = material.lo[i0:min(i1, limit)], material.hi[i0:min(i1, limit)]
-    if not np.any((lo < hi) & (lo < xhi) & (hi > xlo)):
-        return None
-    rows, _which = swept_rows(material.grid.centres, tool, plunge, _zx([start]), _zx([end]), RAPID_SKIN, limit)
+def _overlaps(material: Material, rows: Flat) -> np.ndarray:
+    """The area each row (cols, lo, hi) shares with the standing material, per row and slot (rows, K)."""
+    cols, a, b = rows
+    each = np.minimum(b[:, None], material.hi[cols]) - np.maximum(a[:, None], material.lo[cols])
+    return np.clip(each, 0.0, None) * material.grid.widths[cols][:, None]
+
+
+def _rapid_hit(material: Material, rows: Flat, window: tuple[int, int]) -> tuple[float, Point] | None:
+    """(area, (x, z) inside) of the held material a rapid's rows (its sweep, less RAPID_SKIN) overlap, or None."""
     if not len(rows[0]):
         return None
+    each = _overlaps(material, rows)
+    area = each.sum(axis=1)
+    if float(area.sum()) <= RAPID_AREA_TOL:
+        return None
     cols, a, b = rows
-    each = np.clip(np.minimum(b[:, None], material.hi[cols]) - np.maximum(a[:, None], material.lo[cols]), 0.0, None)
-    area = each.sum(axis=1) * material.grid.widths[cols]
-    if float(area.sum()) <= RAPID_AREA_TOL:
-        return None
     if material.falls:  # what a cut in this step set free has fallen: only what is still held counts
-        area = np.where(cols < material.first_empty(window[0], material.held_end), area, 0.0)
-    if float(area.sum()) <= RAPID_AREA_TOL:
-        return None
+        end = min(material.held_end, int(cols.max()) + 1)
+        area = np.where(cols < material.first_empty(window[0], end), area, 0.0)
+        if float(area.sum()) <= RAPID_AREA_TOL:
+            return None
     best = int(np.argmax(area))
     k = int(np.argmax(each[best]))
     x = 0.5 * (max(a[best], material.lo[cols[best], k]) + min(b[best], material.hi[cols[best], k]))
     return float(area.sum()), (float(x), float(material.grid.centres[cols[best]]))
 
 
+RAPID_SCAN = 32  # rapids whose overlap with the standing material is taken at once
+
+
+class _Groups:
+    """The rows the feeds sweep, by feed group (the feeds between two rapids), taken away group by group."""
+
+    def __init__(self, material: Material, tool: GroovingTool, plunge: str, starts: np.ndarray, ends: np.ndarray,
+                 group: np.ndarray) -> None:
+        self.material = material
+        rows, which = swept_rows(material.grid.centres, tool, plunge, starts, ends)
+        order = np.argsort(group[which], kind="stable")
+        self.rows, self.group = col.select(rows, order), group[which][order]
+        self.done = 0  # the groups before this one are taken away
+
+    def take_until(self, stop: int) -> None:
+        """Take away the groups before ``stop``."""
+        if stop <= self.done:
+            return
+        a, b = np.searchsorted(self.group, [self.done, stop], "left")
+        if b > a:
+            self.material.subtract(col.union_per_column(col.select(self.rows, slice(a, b))))
+        self.done = stop
+
+
 def sweep(material: Material, moves: Sequence[Move], tool: GroovingTool, plunge: str, start: Point,
           window: tuple[int, int]) -> tuple[list[Hit], Point, FeedPath]:
     """Run ``moves`` from ``start`` through ``material`` (updated): the
-    rapids that meet standing material, where the tool ends, the feeds."""
+    rapids that meet standing material, where the tool ends, the feeds.
+    All the moves are swept at once; a feed group is taken away before the
+    first rapid after it that overlaps the standing material (material only
+    shrinks: a rapid clear of it before is clear of it after)."""
     segments, final = straight_segments(moves, start)
-    hits, pending, feeds = [], [], []
-
-    def flush() -> None:
-        if pending:
-            starts, ends = _zx([s for s, _e in pending]), _zx([e for _s, e in pending])
-            material.subtract(col.union_per_column(swept_rows(material.grid.centres, tool, plunge, starts, ends)[0]))
-            feeds.extend(pending)
-            pending.clear()
-
-    for index, a, b, rapid in segments:
-        if not rapid:
-            pending.append((a, b))
+    rapid = np.array([r for _i, _a, _b, r in segments], dtype=bool)
+    starts, ends = _zx([a for _i, a, _b, _r in segments]), _zx([b for _i, _a, b, _r in segments])
+    feeds = FeedPath(tool, plunge, starts[~rapid], ends[~rapid])
+    groups = _Groups(material, tool, plunge, feeds.starts, feeds.ends, np.cumsum(rapid)[~rapid])
+    rapids = np.nonzero(rapid)[0]
+    rows, which = swept_rows(material.grid.centres, tool, plunge, starts[rapids], ends[rapids], RAPID_SKIN,
+                             material.held_end)
+    order = np.argsort(which, kind="stable")
+    rows, which = col.select(rows, order), which[order]
+    bounds = np.searchsorted(which, np.arange(len(rapids) + 1), "left")
+    hits, k = [], 0
+    while k < len(rapids):
+        stop = min(k + RAPID_SCAN, len(rapids))
+        a, b = bounds[k], bounds[stop]
+        area = np.bincount(which[a:b] - k, _overlaps(material, col.select(rows, slice(a, b))).sum(axis=1),
+                           minlength=stop - k)
+        near = np.nonzero(area > RAPID_AREA_TOL)[0]
+        if not len(near):
+            k = stop
             continue
-        flush()
-        hit = _rapid_hit(material, tool, plunge, a, b, window)
+        j = k + int(near[0])
+        groups.take_until(j + 1)
+        hit = _rapid_hit(material, col.select(rows, slice(bounds[j], bounds[j + 1])), window)
         if hit is not None:
-            hits.append(Hit(index, a, b, hit[0], hit[1]))
-    flush()
-    return hits, final, FeedPath(tool, plunge, _zx([a for a, _b in feeds]), _zx([b for _a, b in feeds]))
+            index, a_point, b_point, _r = segments[rapids[j]]
+            hits.append(Hit(index, a_point, b_point, hit[0], hit[1]))
+        k = j + 1
+    groups.take_until(len(rapids) + 1)
+    return hits, final, feeds

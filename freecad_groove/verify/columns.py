@@ -241,7 +241,21 @@ def ring_rows(rings: Sequence[np.ndarray], centres: np.ndarray) -> Flat:
     if odd.any():
         keep = ~odd[cols - base]
         cols, xs = cols[keep], xs[keep]
-    return combine((cols[0::2], xs[0::2], xs[1::2]), empty_flat(), UNION)
+    return _joined(cols[0::2], xs[0::2], xs[1::2])
+
+
+def _joined(cols: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> Flat:
+    """Sorted disjoint rows with the touching ones joined and the empty ones dropped (the crossings of
+    rings, paired: an interval may end where the next begins, at a vertex on a column's line)."""
+    keep = lo < hi
+    cols, lo, hi = cols[keep], lo[keep], hi[keep]
+    if not len(cols):
+        return empty_flat()
+    first = np.ones(len(cols), dtype=bool)
+    first[1:] = (cols[1:] != cols[:-1]) | (lo[1:] > hi[:-1])
+    last = np.ones(len(cols), dtype=bool)
+    last[:-1] = first[1:]
+    return cols[first], lo[first], hi[last]
 
 
 def convex_rows(normals: np.ndarray, support: np.ndarray, centres: np.ndarray,

@@ -30,6 +30,7 @@ shapely polygons, the tests' second oracle).
 from __future__ import annotations
 
 import math
+import operator
 from dataclasses import dataclass, field
 from typing import Optional
 
@@ -45,7 +46,7 @@ from .column_sweep import Material, swept_rows
 from .holder import Holder
 from .machining_time import Feeds, MachiningTime, feed_seconds, rapid_seconds
 from .program_record import RecordingTranslator, SpeedState, Step, mm_blade
-from .shapes import Section, Shape, union_all
+from .shapes import EMPTY_SECTION, Measured, Section, Shape, union_all
 from .turned_section import bar_section, groove_region
 from .turning import DEFAULT_TOL, GrooveRun, JobCheck, OpCheck, OpInput, PartModel, check_op, layout
 
@@ -123,15 +124,17 @@ def stock_bar(steps: list[Step], approach: Optional[Point], spec: Optional[Stock
     return StockBar(radius, bore, low, high, note)
 
 
-def default_stock(steps: list[Step], approach: Optional[Point], spec: Optional[StockSpec]) -> tuple[Shape, str]:
-    """The stock and how it was derived (see the module)."""
+def default_stock(steps: list[Step], approach: Optional[Point], spec: Optional[StockSpec], bar_region=bar_section,
+                  groove=groove_region, union=union_all, minus=operator.sub) -> tuple[Shape, str]:
+    """The stock and how it was derived (see the module): a Shape, or with
+    the region functions of another model (program_check_shapely's) its region."""
     bar = stock_bar(steps, approach, spec)
-    stock = bar_section(bar.radius, bar.low, bar.high)
+    stock = bar_region(bar.radius, bar.low, bar.high)
     if bar.bore > 0:
-        stock = stock - bar_section(bar.bore, bar.low, bar.high)
-    air = [groove_region(ring) for step in steps for ring in step.air]
+        stock = minus(stock, bar_region(bar.bore, bar.low, bar.high))
+    air = [groove(ring) for step in steps for ring in step.air]
     if air:
-        stock = stock - union_all(air)
+        stock = minus(stock, union(air))
     return stock, bar.note
 
 
@@ -244,23 +247,42 @@ def findings(steps: list[Step], checks: list[OpCheck], gouge_line=_gouge_line) -
     return sorted(found)
 
 
-def check_program(name: str, record: RecordingTranslator, stock_spec: Optional[StockSpec] = None,
-                  rapid_rate: float = 0.0, tol: float = DEFAULT_TOL) -> ProgramCheck:
-    """Sweep the recorded program over its stock and judge it (see the module)."""
+def checked_steps(record: RecordingTranslator) -> list[Step]:
+    """The steps of ``record`` that make moves, plain ones with their blades
+    (_fill_blades); ProgramError when there is none (both checks' start)."""
     steps = [step for step in record.steps if step.moves]
     if not steps:
         raise ProgramError("the program makes no moves: nothing to verify", 0)
     _fill_blades(steps, record.tools, record.settings.tool)
+    return steps
+
+
+def check_program(name: str, record: RecordingTranslator, stock_spec: Optional[StockSpec] = None,
+                  rapid_rate: float = 0.0, tol: float = DEFAULT_TOL, regions: bool = True) -> ProgramCheck:
+    """Sweep the recorded program over its stock and judge it (see the
+    module). ``regions`` False (verify's report): the job's sections and
+    each step's regions are not kept (only their areas; a gouge's region
+    stays), so that memory does not grow with the steps; plot keeps them."""
+    steps = checked_steps(record)
     stock, note = default_stock(steps, record.first_approach, stock_spec)
     part = stock - union_all([groove_region(ring) for step in steps for ring in step.grooves])
     ops = [_op(step, _holder(step, record.tools)) for step in steps]
     grid, step_width = layout([stock, part], ops)
     material = Material(grid, stock, falls=True)
     part_model = PartModel(grid, part)
-    checks = [check_op(op, material, part_model, tol, step_width) for op in ops]
-    whole = (0, len(grid))
-    job = JobCheck(Section(grid, stock.rows(grid.centres)), Section(grid, part_model.rows(*whole)),
-                   Section(grid, material.rows(*whole)), checks, [note])
+    checks = []
+    for op in ops:
+        check = check_op(op, material, part_model, tol, step_width)
+        if not regions:
+            check.removed_region = check.leftover_region = check.unreachable_region = EMPTY_SECTION
+        checks.append(check)
+    if regions:
+        whole = (0, len(grid))
+        sections = (Section(grid, stock.rows(grid.centres)), Section(grid, part_model.rows(*whole)),
+                    Section(grid, material.rows(*whole)))
+    else:
+        sections = (Measured(material.stock_area), Measured(part_model.area), Measured(material.area()))
+    job = JobCheck(*sections, checks, [note])
     result = ProgramCheck(name, job, steps, note, [step_time(step, rapid_rate) for step in steps])
     result.findings = findings(steps, checks)
     return result

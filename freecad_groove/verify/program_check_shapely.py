@@ -10,12 +10,11 @@ from typing import Optional
 from shapely import Geometry
 from shapely.geometry import MultiPolygon, Polygon, box
 
-from freecad_groove.engine.errors import ProgramError
 from freecad_groove.engine.moves import FEED
 
 from .blade import outline_at_origin, swept_area
 from .overlay import NOISE_AREA, area, difference, intersection, union, union_all
-from .program_check import ProgramCheck, StockSpec, _fill_blades, _op, findings, step_time, stock_bar
+from .program_check import ProgramCheck, StockSpec, _op, checked_steps, default_stock, findings, step_time
 from .program_record import RecordingTranslator, Step
 from .section import bar_section, groove_region
 from .turning import DEFAULT_TOL, JobCheck, OpCheck
@@ -23,18 +22,6 @@ from .turning_shapely import check_op
 
 Point = tuple[float, float]
 WINDOW_MARGIN = 1.0  # mm around what a step's blade sweeps: the window its check works in
-
-
-def default_stock(steps: list[Step], approach: Optional[Point], spec: Optional[StockSpec]) -> tuple[Geometry, str]:
-    """The stock (shapely (z, x)) and how it was derived (see program_check)."""
-    bar = stock_bar(steps, approach, spec)
-    stock = bar_section(bar.radius, bar.low, bar.high)
-    if bar.bore > 0:
-        stock = difference(stock, bar_section(bar.bore, bar.low, bar.high))
-    air = [groove_region(ring) for step in steps for ring in step.air]
-    if air:
-        stock = difference(stock, union_all(air))
-    return stock, bar.note
 
 
 def held_by_chuck(chuck_z: float):
@@ -102,11 +89,9 @@ def _sweep_steps(steps: list[Step], stock: Geometry, part: Geometry, tol: float)
 def check_program(name: str, record: RecordingTranslator, stock_spec: Optional[StockSpec] = None,
                   rapid_rate: float = 0.0, tol: float = DEFAULT_TOL) -> ProgramCheck:
     """Sweep the recorded program over its stock and judge it (see the module)."""
-    steps = [step for step in record.steps if step.moves]
-    if not steps:
-        raise ProgramError("the program makes no moves: nothing to verify", 0)
-    _fill_blades(steps, record.tools, record.settings.tool)
-    stock, note = default_stock(steps, record.first_approach, stock_spec)
+    steps = checked_steps(record)
+    stock, note = default_stock(steps, record.first_approach, stock_spec, bar_section, groove_region, union_all,
+                                difference)
     grooves = union_all([groove_region(ring) for step in steps for ring in step.grooves] or [Polygon()])
     part = difference(stock, grooves)
     checks, remaining = _sweep_steps(steps, stock, part, tol)

@@ -100,6 +100,7 @@ class RecordingTranslator(Translator):
         self.steps: list[Step] = []
         self.first_approach: Optional[Point] = None
         self._call: Optional[tuple] = None
+        self._speed_states: dict[tuple, SpeedState] = {}
 
     # -- units and state --------------------------------------------------------
 
@@ -118,8 +119,12 @@ class RecordingTranslator(Translator):
         surface = None
         if state.css and state.spindle is not None:
             surface = state.spindle if state.metric else state.spindle / FEET_PER_METRE
-        return SpeedState(None if feed is None else feed * scale, bool(state.feed_per_rev),
-                          None if state.css else state.spindle, surface, state.speed_limit)
+        values = (None if feed is None else feed * scale, bool(state.feed_per_rev),
+                  None if state.css else state.spindle, surface, state.speed_limit)
+        known = self._speed_states.get(values)  # one object per state: a program's moves share a few
+        if known is None:
+            known = self._speed_states[values] = SpeedState(*values)
+        return known
 
     def _plain_step(self, start: Point) -> Step:
         """The open plain step of the tool in force, a new one when there is none."""
@@ -189,9 +194,10 @@ class RecordingTranslator(Translator):
         for move in moves:  # a move without F runs at the last F before it
             feed = feed if move.f is None else move.f
             feeds.append(feed)
+        speeds = [self._speeds(f) for f in feeds]
         for index, move in straightened(scaled, start, SWEEP_TOL):  # its arcs as chords, like a G2/G3 block's
             step.moves.append(move)
-            step.speeds.append(self._speeds(feeds[index]))
+            step.speeds.append(speeds[index])
         step.lines = [self._line] * len(step.moves)
         step.plunge, grooves, air = declared_grooves(entry.name, model, machine, settings, blade)
         step.grooves = [[(x * scale, z * scale) for x, z in ring] for ring in grooves]

@@ -51,14 +51,22 @@ class Shape:
     def is_empty(self) -> bool:
         return self.area == 0.0
 
+    def z_range(self) -> Optional[tuple[float, float]]:
+        """The Z range the region may reach (None: nowhere): an intersection
+        reaches no farther than either side, a difference than its first."""
+        v = self.vertices()
+        return (float(v[:, 0].min()), float(v[:, 0].max())) if len(v) else None
+
     @property
     def area(self) -> float:
-        """On columns AREA_STEP wide (and at every vertex): exact for straight edges."""
-        v = self.vertices()
-        if not len(v):
+        """On columns AREA_STEP wide (and at every vertex) over its Z range: exact for straight edges."""
+        reach = self.z_range()
+        if reach is None or reach[1] <= reach[0]:
             return 0.0
-        grid = col.make_grid(v[:, 0], [(v[:, 0].min(), v[:, 0].max())], AREA_STEP, 0.0)
-        return col.area(self.rows(grid.centres), grid.widths)
+        shape = self.clipped(*reach)
+        z = shape.vertices()[:, 0]
+        grid = col.make_grid(np.concatenate([z[(z >= reach[0]) & (z <= reach[1])], reach]), [reach], AREA_STEP, 0.0)
+        return col.area(shape.rows(grid.centres), grid.widths)
 
     def __or__(self, other: Shape) -> Shape:
         return Combined(UNION, self, other)
@@ -101,6 +109,17 @@ class Combined(Shape):
 
     def clipped(self, zlo: float, zhi: float) -> Shape:
         return Combined(self.op, self.a.clipped(zlo, zhi), self.b.clipped(zlo, zhi))
+
+    def z_range(self) -> Optional[tuple[float, float]]:
+        a = self.a.z_range()
+        if self.op == DIFFERENCE or a is None:
+            return a
+        b = self.b.z_range()
+        if b is None:
+            return None if self.op == INTERSECTION else a
+        if self.op == INTERSECTION:
+            return (max(a[0], b[0]), min(a[1], b[1])) if max(a[0], b[0]) <= min(a[1], b[1]) else None
+        return (min(a[0], b[0]), max(a[1], b[1]))
 
 
 @dataclass(frozen=True, eq=False)
@@ -200,6 +219,45 @@ class Section:
 
 
 EMPTY_SECTION = Section()
+
+
+@dataclass(frozen=True)
+class Measured:
+    """A region of which only the area is kept (verify's report: no picture to draw)."""
+
+    area: float
+
+    @property
+    def is_empty(self) -> bool:
+        return not self.area
+
+
+def padded_area(lo: np.ndarray, hi: np.ndarray, widths: np.ndarray, chunk: int = 1 << 16) -> float:
+    """The area of a padded set on columns ``widths`` wide (``chunk`` columns at a time)."""
+    total = 0.0
+    for i0 in range(0, len(lo), chunk):
+        a, b = lo[i0:i0 + chunk], hi[i0:i0 + chunk]
+        length = np.subtract(b, a, out=np.zeros(a.shape), where=a < b)
+        total += float(np.sum(length.sum(axis=1) * widths[i0:i0 + chunk]))
+    return total
+
+
+def padded_rows(grid: Grid, shape: Shape, chunk: int = 1 << 16) -> tuple[np.ndarray, np.ndarray]:
+    """``shape`` on the columns of ``grid`` as a padded set, taken ``chunk``
+    columns at a time (only the rings that reach them): no whole-grid array
+    but the result."""
+    n = len(grid)
+    lo, hi = col.empty_padded(n)
+    for i0 in range(0, n, chunk):
+        i1 = min(n, i0 + chunk)
+        local = shape.clipped(float(grid.edges[i0]), float(grid.edges[i1]))
+        a, b = col.pack(i1 - i0, local.rows(grid.centres[i0:i1]))
+        k = a.shape[1]
+        if k > lo.shape[1]:
+            grow = np.full((n, k - lo.shape[1]), col.EMPTY_SLOT)
+            lo, hi = np.hstack([lo, grow]), np.hstack([hi, grow])
+        lo[i0:i1, :k], hi[i0:i1, :k] = a, b
+    return lo, hi
 
 
 # ---------------------------------------------------------------- distances to a shape's edges

@@ -191,15 +191,33 @@ class JobCheck:
 
 
 class PartModel:
-    """The part the ops must leave on the material's grid, and its edges (for depths)."""
+    """The part the ops must leave on the material's grid, and its edges (for
+    depths): taken on the columns an op asks for when it asks (only the rings
+    that reach them), nothing kept per column."""
+
+    CHUNK = 1 << 16  # columns measured at once for the area
 
     def __init__(self, grid: Grid, shape: Shape) -> None:
+        self.grid = grid
         self.shape = shape
-        self.lo, self.hi = col.pack(len(grid), shape.rows(grid.centres))
         self.edges = Edges(shape)
+        self._last: Optional[tuple[tuple[int, int], Flat]] = None
 
     def rows(self, i0: int, i1: int) -> Flat:
-        return col.flat(self.lo[i0:i1], self.hi[i0:i1])
+        """The columns i0:i1, numbered from i0 (the last span's kept: an op asks for its own several times)."""
+        if i1 <= i0:
+            return col.empty_flat()
+        if self._last is not None and self._last[0] == (i0, i1):
+            return self._last[1]
+        local = self.shape.clipped(float(self.grid.edges[i0]), float(self.grid.edges[i1]))
+        rows = local.rows(self.grid.centres[i0:i1])
+        self._last = ((i0, i1), rows)
+        return rows
+
+    @property
+    def area(self) -> float:
+        n, step = len(self.grid), self.CHUNK
+        return sum(col.area(self.rows(i0, min(n, i0 + step)), self.grid.widths[i0:]) for i0 in range(0, n, step))
 
 
 def _arc_reach(move: Move) -> float:
