@@ -365,8 +365,8 @@ _PLACE = ("axfa", "axsa")  # the call's parameters that only place the groove
 def reach_warnings(geometry: "GrooveGeometry") -> List[CycleWarning]:
     """One warning per corner (base corners, and the edges where the passes
     start and end) where the blade leaves material."""
-    key = (tuple(value for name, value in vars(geometry.call).items() if name not in _PLACE), geometry.settings,
-           geometry.metric)
+    key = (repr(tuple(value for name, value in vars(geometry.call).items() if name not in _PLACE)),
+           geometry.settings, geometry.metric)  # the values' repr: -0.0 is not 0.0
     found = _REACH_CACHE.get(key)
     if found is None:
         found = _REACH_CACHE[key] = tuple(_reach_warnings(geometry))

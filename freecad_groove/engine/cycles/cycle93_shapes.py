@@ -52,9 +52,9 @@ _GEOMETRIES = _Recent(SHAPES)
 
 
 def shape_key(call: "Cycle93", settings: Settings, metric: bool) -> tuple:
-    """What a groove's geometry in its own frame depends on: every parameter but AXFA and AXSA, the settings
-    and the units."""
-    return tuple(value for name, value in vars(call).items() if name not in _PLACE), settings, metric
+    """What a groove's geometry in its own frame depends on: every parameter but AXFA and AXSA (as their repr:
+    -0.0 is not 0.0), the settings and the units."""
+    return repr(tuple(value for name, value in vars(call).items() if name not in _PLACE)), settings, metric
 
 
 def geometry(call: "Cycle93", settings: Settings, metric: bool,
