@@ -25,7 +25,8 @@ Warnings: what a cycle cannot do as programmed but does anyway (the engine's
 CycleWarning) prints one line each on stderr, ``PROGRAM:LINE: warning: CYCLE93:
 ...`` (``emit CYCLE:1: warning: ...`` for emit --expand), after the output is
 written; the status stays 0 and stdout and OUT are the same as without them.
-A run that fails prints its error alone.
+A run that fails prints its error alone. Until then they are kept as lines in
+a temporary file (cli_io.WarningSpool), not in memory.
 
 Memory: ``expand`` streams. The program is read a line at a time (standard
 input or a pipe is first copied to an anonymous temporary file; a first pass
@@ -53,6 +54,7 @@ from typing import Callable, List, Tuple
 from . import __version__
 from .cli_io import (
     Failure,
+    WarningSpool,
     check_not_the_program,
     open_program,
     program_name,
@@ -467,7 +469,7 @@ def _run_name(args):
 
 
 def _run(args, name):
-    warnings: List[Tuple[int, CycleWarning]] = []
+    warnings = WarningSpool()  # kept out of memory until the run has succeeded
     try:
         status = 0
         if args.command == "expand":
@@ -478,8 +480,7 @@ def _run(args, name):
             run_tools(args)
         else:
             write_stdout((_emit(args, warnings),))
-        for line, warning in warnings:  # after the output: a failed run reports its error alone
-            report(name, line, "warning: " + warning.text)
+        warnings.report(name)  # after the output: a failed run reports its error alone
         return status
     except Failure as exc:
         report(exc.name, exc.line, exc.message)
@@ -488,6 +489,8 @@ def _run(args, name):
         return 1
     except Exception as exc:  # never a traceback: one line, status 2
         report(name, 0, "internal error (%s: %s)" % (type(exc).__name__, exc))
+    finally:
+        warnings.close()
     return EXIT_ERROR
 
 

@@ -250,3 +250,36 @@ def quiet_stdout() -> None:
 def report(name: str, line: int, message: str) -> None:
     sys.stderr.write("%s:%s: %s\n" % (one_line(name), line, one_line(message)))
     sys.stderr.flush()
+
+
+class WarningSpool:
+    """The warnings of a run, (line, CycleWarning) pairs appended as they
+    arise, kept as their lines in a temporary file (in memory while small:
+    tempfile.SpooledTemporaryFile) rather than as objects, so that memory
+    stays flat however many there are; ``report`` prints them in their order
+    once the run has succeeded (a failed run reports its error alone)."""
+
+    def __init__(self) -> None:
+        self._file = tempfile.SpooledTemporaryFile(max_size=1 << 20, mode="w+", encoding="utf-8",
+                                                   errors="surrogatepass", newline="\n")
+
+    def append(self, item: Tuple[int, Any]) -> None:
+        line, warning = item
+        self._file.write("%s %s\n" % (line, one_line(warning.text)))
+
+    def extend(self, items: Iterable[Tuple[int, Any]]) -> None:
+        for item in items:
+            self.append(item)
+
+    def report(self, name: str) -> None:
+        """Each warning as ``NAME:LINE: warning: ...`` on stderr (see ``report``), in the order they came."""
+        spool = self._file
+        spool.seek(0)
+        name = one_line(name)
+        for text in spool:
+            line, message = text[:-1].split(" ", 1)
+            sys.stderr.write("%s:%s: %s\n" % (name, line, one_line("warning: " + message)))
+        sys.stderr.flush()
+
+    def close(self) -> None:
+        self._file.close()

@@ -86,6 +86,8 @@ from .cycle93_constants import (  # noqa: F401 - the constants are part of this 
     cycle93_error,
 )
 from .cycle93_geometry import GrooveGeometry
+from .cycle93_shapes import forget_shapes
+from .cycle93_shapes import geometry as shape_geometry
 from .cycle93_warnings import cycle93_warnings
 
 
@@ -255,4 +257,16 @@ GEOMETRY_CACHE_SIZE = 16
 
 @lru_cache(maxsize=GEOMETRY_CACHE_SIZE)
 def _cached_geometry(call: Cycle93, settings: Settings, metric: bool) -> GrooveGeometry:
-    return GrooveGeometry(call, settings, metric)
+    return shape_geometry(call, settings, metric, GrooveGeometry)  # the shape's, placed (cycle93_shapes)
+
+
+_clear_geometries = _cached_geometry.cache_clear
+
+
+def _forget_geometries() -> None:
+    """The geometry cache's cache_clear: also the shapes kept (the next geometry is built afresh)."""
+    _clear_geometries()
+    forget_shapes()
+
+
+_cached_geometry.cache_clear = _forget_geometries  # type: ignore[method-assign]

@@ -40,6 +40,7 @@ that another stuck blade reaches below is not counted.
 
 import math
 from bisect import bisect_right
+from collections import OrderedDict
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Dict, List, Optional, Sequence, Tuple
 
@@ -353,9 +354,30 @@ def _amount(value: float, decimals: int) -> str:
     return text
 
 
+# The warnings of the last few groove shapes. A groove's geometry is built in its own frame (u, v from its start
+# point AXFA/AXSA), from the other parameters, the settings and the units alone: the same groove elsewhere in a
+# program leaves the same material, figure for figure, and its warnings are not computed again.
+REACH_CACHE_SIZE = 32
+_REACH_CACHE: "OrderedDict[tuple, Tuple[CycleWarning, ...]]" = OrderedDict()
+_PLACE = ("axfa", "axsa")  # the call's parameters that only place the groove
+
+
 def reach_warnings(geometry: "GrooveGeometry") -> List[CycleWarning]:
     """One warning per corner (base corners, and the edges where the passes
     start and end) where the blade leaves material."""
+    key = (repr(tuple(value for name, value in vars(geometry.call).items() if name not in _PLACE)),
+           geometry.settings, geometry.metric)  # the values' repr: -0.0 is not 0.0
+    found = _REACH_CACHE.get(key)
+    if found is None:
+        found = _REACH_CACHE[key] = tuple(_reach_warnings(geometry))
+        if len(_REACH_CACHE) > REACH_CACHE_SIZE:
+            _REACH_CACHE.popitem(last=False)
+    else:
+        _REACH_CACHE.move_to_end(key)
+    return list(found)
+
+
+def _reach_warnings(geometry: "GrooveGeometry") -> List[CycleWarning]:
     regions = unreachable_regions(geometry)
     tool = geometry.tool
     units = "mm" if geometry.metric else "in"

@@ -67,13 +67,16 @@ def _points(start, end, step, count):
 
 
 def _plunge_axis_move(axis):
-    """A Move maker taking (kind, plunge coordinate, stepping coordinate, feed)."""
+    """A Move maker taking (kind, plunge coordinate, stepping coordinate, feed):
+    Move(kind, x, z, f) built directly as its tuple (the loop makes every move
+    of a pattern of thousands of grooves)."""
+    new, rest = tuple.__new__, tuple(Move._field_defaults[name] for name in Move._fields[4:])
     if axis == "X":
         def move(kind, p, s, f=None):
-            return Move(kind, p, s, f)
+            return new(Move, (kind, p, s, f) + rest)
     else:
         def move(kind, p, s, f=None):
-            return Move(kind, s, p, f)
+            return new(Move, (kind, s, p, f) + rest)
     return move
 
 

@@ -205,23 +205,19 @@ class Writer(MachineWords):
         f = move.f
         if f is None or self.target.c_feed != C_FEED_COMPOSITE or move.kind != FEED:
             return f
-        if self.x_text is None or self.z_text is None or self.c_text is None:
+        start = self._c_start((self.x_text, self.z_text, self.c_text))
+        x_factor = self.x_factor / self.scale
+        end = tuple(text if value is None else format_decimal(value, self.digits)
+                    for value, text in ((None if move.x is None else move.x * x_factor, start[0]),
+                                        (move.z, start[1]), (move.c, start[2])))
+        return _composite_feed(f, start, end, x_factor)
+
+    def _c_start(self, start: tuple) -> tuple:
+        """``start``, the X, Z and C texts written before a feed move in X/Z/C; ProgramError when one is not known."""
+        if None in start:
             raise ProgramError("a feed move in X/Z/C needs its start written before it (the %s feed of a "
                                "rotary move is computed from it)" % self.target.name)
-        # the move as the control reads it: from the words written to the words this move writes (a radius
-        # 0.71000000000000001 written X1.42 again does not move X; its float residue would make the linear
-        # length 1e-16 and the feed 1e+20)
-        x_factor = self.x_factor / self.scale
-        dx = (self._written(move.x * x_factor, self.x_text) - float(self.x_text)) / x_factor
-        dz = self._written(move.z, self.z_text) - float(self.z_text)
-        linear = math.hypot(dx, dz)
-        turn = abs(self._written(move.c, self.c_text) - float(self.c_text))
-        minutes = linear / f if linear > 0 else turn / f
-        return math.hypot(linear, turn) / minutes if minutes > 0 else f
-
-    def _written(self, value: Optional[float], text: str) -> float:
-        """The number the control reads for an axis set to ``value`` (None: not set, ``text`` held)."""
-        return float(text) if value is None else float(format_decimal(value, self.digits))
+        return start
 
     def _axis_words(self, move: Move, force: bool = False) -> List[str]:
         """The axis words of ``move`` whose written text changes (all it sets
@@ -289,61 +285,88 @@ class Writer(MachineWords):
         return ["I" + offsets[0], letter + offsets[1]]
 
     def write(self, moves: Iterable[Move], prefix: str = "") -> List[str]:
-        """Lines for ``moves`` (moves.Move); updates the modal state. ``prefix``
-        is put in front of every line (``"/"`` for block delete).
-
-        The straight moves of X and Z alone (most of every expansion) are
-        written inline here: the same words as ``_move_lines`` writes, without
-        its general steps."""
+        """Lines for ``moves`` (moves.Move); updates the modal state; ``prefix`` before every line (``"/"``:
+        block delete). Straight moves are written inline, the words ``_move_lines`` writes, each axis's text
+        formatted once per value (``xs``...: value -> text); the rest goes the general way (``_general``)."""
+        if self.scale != 1.0:
+            return [prefix + line for move in moves for line in self._move_lines(move, False)]
         out: List[str] = []
-        append = out.append
-        codes = self.target.motion_codes
-        digits, feed_digits = self.digits, self.target.feed_digits
-        plain = self.scale == 1.0
-        x_factor = self.x_factor
-        for move in moves:
-            kind, x, z, f = move[0], move[1], move[2], move[3]
-            if not (plain and (kind == FEED or kind == RAPID) and move[5] is None and move[6] is None):
-                out.extend(prefix + line for line in self._move_lines(move, False))
-                continue
-            words = []
-            if x is not None:
-                value = x * x_factor
-                if not -MAX_WORD < value < MAX_WORD:
-                    raise ProgramError("move to X%r cannot be written (not a number below %g)" % (value, MAX_WORD))
-                text = ("%.*f" % (digits, value)).rstrip("0")
-                if text == "-0.":
-                    text = "0."
-                if text != self.x_text:
-                    words.append("X" + text)
-                    self.x_text = text
-            if z is not None:
-                if not -MAX_WORD < z < MAX_WORD:
-                    raise ProgramError("move to Z%r cannot be written (not a number below %g)" % (z, MAX_WORD))
-                text = ("%.*f" % (digits, z)).rstrip("0")
-                if text == "-0.":
-                    text = "0."
-                if text != self.z_text:
-                    words.append("Z" + text)
-                    self.z_text = text
-            if words and kind != self.motion:
-                words.insert(0, codes[kind])
-                self.motion = kind
-            if f is not None:
-                if not 0 < f < MAX_WORD:
-                    raise ProgramError("feed %r cannot be written (must be greater than 0)" % (f,))
-                text = ("%.*f" % (feed_digits, f)).rstrip("0")
-                if text != self.f_text:
-                    words.append("F" + text)
-                    self.f_text = text
-            elif kind == FEED and self.f_text is None:
-                if self.default_feed is None:
-                    raise ProgramError("feed move with no feed rate (F) in force")
-                self.f_text = format_number(self.default_feed, feed_digits)
-                words.append("F" + self.f_text)
-            if words:
-                append(prefix + " ".join(words))
+        append, codes, target = out.append, self.target.motion_codes, self.target
+        fmt, f_fmt, x_factor = "%%.%df" % self.digits, "%%.%df" % target.feed_digits, self.x_factor
+        y_ok, c_ok, c_composite = target.mill, target.c_feed is not None, target.c_feed == C_FEED_COMPOSITE
+        xs, ys, zs, cs, fs, (x_text, y_text, z_text, c_text, f_text, motion) = {}, {}, {}, {}, {}, self._modal()
+        fast = True
+        try:
+            for move in moves:
+                kind, x, z, f, _p, y, c, _centre, _radius = move
+                if not (kind == FEED or kind == RAPID) or (y is not None and not y_ok) or (c is not None
+                                                                                and not c_ok):
+                    fast = False  # the state is the general way's, also after an error
+                    x_text, y_text, z_text, c_text, f_text, motion = self._general(
+                        move, prefix, out, (x_text, y_text, z_text, c_text, f_text, motion))
+                    fast = True
+                    continue
+                composite = c_composite and c is not None and kind == FEED and f is not None
+                start = composite and self._c_start((x_text, z_text, c_text))  # the feed: from start to end written
+                line = ""
+                if x is not None:
+                    text = xs.get(x) or _axis_text(xs, x, "X", x * x_factor, fmt)
+                    if text != x_text:
+                        x_text, line = text, " X" + text
+                if y is not None:
+                    text = ys.get(y) or _axis_text(ys, y, "Y", y, fmt)
+                    if text != y_text:
+                        y_text, line = text, line + " Y" + text
+                if z is not None:
+                    text = zs.get(z) or _axis_text(zs, z, "Z", z, fmt)
+                    if text != z_text:
+                        z_text, line = text, line + " Z" + text
+                if c is not None:
+                    text = cs.get(c) or _axis_text(cs, c, "C", c, fmt)
+                    if text != c_text:
+                        c_text, line = text, line + " C" + text
+                if composite:
+                    f = _composite_feed(f, start, (x_text, z_text, c_text), x_factor)
+                if line and kind != motion:
+                    line = " " + codes[kind] + line
+                    motion = kind
+                if f is not None:
+                    text = fs.get(f) or _feed_text(fs, f, f_fmt)
+                    if text != f_text:
+                        f_text, line = text, line + " F" + text
+                elif kind == FEED and f_text is None:
+                    f_text = self._default_feed_text()
+                    line += " F" + f_text
+                if line:
+                    append(prefix + line[1:])
+        finally:
+            if fast:
+                self._set_modal(x_text, y_text, z_text, c_text, f_text, motion)
         return out
+
+    def _general(self, move: Move, prefix: str, out: List[str], modal: tuple) -> tuple:
+        """``move`` written the general way (arcs, dwells, dress calls, an axis the
+        target lacks: refused there) after the modal state ``modal``; the state after it."""
+        self._set_modal(*modal)
+        try:
+            out.extend(prefix + line for line in self._move_lines(move, False))
+        finally:  # also what it wrote before an error
+            modal = self._modal()
+        return modal
+
+    def _default_feed_text(self) -> str:
+        """The F text of a feed move with no F in force: the default feed's."""
+        if self.default_feed is None:
+            raise ProgramError("feed move with no feed rate (F) in force")
+        return format_number(self.default_feed, self.target.feed_digits)
+
+    def _modal(self) -> tuple:
+        """The modal state as written: x, y, z, c, f texts and the motion."""
+        return self.x_text, self.y_text, self.z_text, self.c_text, self.f_text, self.motion
+
+    def _set_modal(self, x_text, y_text, z_text, c_text, f_text, motion) -> None:
+        self.x_text, self.y_text, self.z_text, self.c_text, self.f_text, self.motion = (
+            x_text, y_text, z_text, c_text, f_text, motion)
 
     def programmed(self, move: Move, explicit: bool = False) -> List[str]:
         """The words of a program's motion block as programmed: every axis the
@@ -427,3 +450,42 @@ class Writer(MachineWords):
         return call
 
 
+
+CACHED_TEXTS = 32768  # the texts of this many values of an axis are kept while writing
+
+
+def _axis_text(cache: dict, value: float, letter: str, scaled: float, fmt: str) -> str:
+    """The text of an axis word's number ``scaled`` (``fmt``: "%.4f") as
+    format_number writes it, kept in ``cache`` under ``value``; ProgramError
+    for magnitudes of MAX_WORD and above and NaN."""
+    if not -MAX_WORD < scaled < MAX_WORD:
+        raise ProgramError("move to %s%r cannot be written (not a number below %g)" % (letter, scaled, MAX_WORD))
+    text = (fmt % scaled).rstrip("0")
+    if len(cache) >= CACHED_TEXTS:
+        cache.clear()
+    cache[value] = text = "0." if text == "-0." else text
+    return text
+
+
+def _feed_text(cache: dict, feed: float, fmt: str) -> str:
+    """The text of an F word's number, kept in ``cache``; ProgramError unless the feed is positive."""
+    if not 0 < feed < MAX_WORD:
+        raise ProgramError("feed %r cannot be written (must be greater than 0)" % (feed,))
+    if len(cache) >= CACHED_TEXTS:
+        cache.clear()
+    cache[feed] = text = (fmt % feed).rstrip("0")
+    return text
+
+
+def _composite_feed(f: float, start: tuple, end: tuple, x_factor: float) -> float:
+    """The F of a feed in X/Z/C along its composite path (degrees counted as mm)
+    lasting as long as F ``f`` in LinuxCNC's reading, from the texts written at
+    its ``start`` to those at its ``end`` (X, Z, C), as the control reads the
+    move: a radius 0.71000000000000001 written X1.42 again does not move X (its
+    float residue would make the linear length 1e-16 and the feed 1e+20)."""
+    dx = (float(end[0]) - float(start[0])) / x_factor
+    dz = float(end[1]) - float(start[1])
+    linear = math.hypot(dx, dz)
+    turn = abs(float(end[2]) - float(start[2]))
+    minutes = linear / f if linear > 0 else turn / f
+    return math.hypot(linear, turn) / minutes if minutes > 0 else f
