@@ -24,9 +24,11 @@ outline is raised to the profile the blade's envelope keeps it on (the
 under the real sweep, so a stretch found not to cut leaves at most
 MATERIAL_MARGIN (and the floor's chord tolerance) of material.
 
-The passes' own cuts are not added to the field (it stays an upper bound of
-what stands): a finishing pass skips instead the stretches the roughing
-passes already ran on the same envelope (``note_pass``).
+The passes' cuts are added only as the blade standing at both ends of each
+stretch they feed (``cycle93_passes``: ``clear_slot`` at one position), less
+than they cut, so the field stays an upper bound of what stands; a finishing
+pass also skips the stretches the roughing passes already ran on the same
+envelope (``note_pass``).
 """
 
 import math
