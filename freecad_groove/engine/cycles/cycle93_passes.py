@@ -147,14 +147,17 @@ def covered(material: MaterialTop, env: Envelope, lo: float, hi: float) -> bool:
 
 
 def _stretches(pts: List[Point], groups: List[Tuple[int, int]], material: MaterialTop, width: float,
-               radius: float, top: List[Point], env: Envelope, entry: Callable[[Point], float]
-               ) -> Tuple[List[List[int]], List[float]]:
+               radius: float, top: List[Point], env: Envelope, entry: Callable[[Point], float],
+               corners: List[float]) -> Tuple[List[List[int]], List[float]]:
     """[first, last] point indexes of the runs of stretches that cut
     something, in pass order, and the level the blade may rapid down to over
     each run's first point (``entry``, taken before the run cuts). A stretch
     is tested whole (the blade swept along its lower hull, below it) against
     what the plunges and the stretches fed before it left: the blade standing
-    at both ends of each fed stretch is added to ``material``. A trace of one
+    at the end of each fed stretch that ends at one of the path's vertices
+    (u in ``corners``, sorted: the foot of a flank or a corner, where a pass
+    may have cut all there is before the next plunge position) is added to
+    ``material``. A trace of one
     point (a blade as wide as the opening) is a plunge to it: [0, 0] when
     material stands above the blade there."""
     runs: List[List[int]] = []
@@ -169,8 +172,10 @@ def _stretches(pts: List[Point], groups: List[Tuple[int, int]], material: Materi
         else:
             entries.append(entry(part[0]))
             runs.append([first, last])
-        for u, v in part[::max(len(part) - 1, 1)]:  # the blade stands there: cut for the stretches after
-            material.clear_slot(u, u, v, width, radius)
+        u, v = part[-1]
+        k = bisect_left(corners, u - STEP_EPS)
+        if k < len(corners) and corners[k] <= u + STEP_EPS:
+            material.stand_blade(u, v, width, radius)  # cut for the stretches after
     return runs, entries
 
 
@@ -190,19 +195,21 @@ def _length(pts: List[Point]) -> float:
 
 def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, material: MaterialTop,
                         steps: List[float], top: List[Point], env: Envelope, rough: bool,
-                        exact: Optional[List[PathPoint]] = None) -> None:
+                        exact: Optional[List[PathPoint]] = None, vertices: Optional[List[Point]] = None) -> None:
     """Feed the stretches of the trace ``pts`` on the envelope of ``top``
     that cut, linked the cheaper way; the blade comes from and goes back to
     the clearance. A roughing pass (``rough``) is noted in ``material``.
     ``exact``: the same pass as an exact path (arcs), not split: the moves
-    follow it, split at ``steps`` too (``_Written``); None: the chords."""
+    follow it, split at ``steps`` too (``_Written``); None: the chords.
+    ``vertices``: the path's vertices (None: ``exact``'s points, else ``pts``)."""
     w, r = geo.tool.width, geo.tool.corner_radius
     # Stretches also part at the path's vertices (where a flank, a corner or the base begins): the moves are
     # the same, but a stretch that runs on over what the ones before it cut is tested, and skipped, alone.
-    steps = sorted(set(steps).union(u for u, _v in (exact or pts)))
+    corners = sorted({u for u, _v in (vertices or exact or pts)})
+    steps = sorted(set(steps).union(corners))
     pts = split_at(pts, steps)
     groups = _groups(pts, steps)
-    runs, entries = _stretches(pts, groups, material, w, r, top, env, lambda at: _entry(geo, material, at))
+    runs, entries = _stretches(pts, groups, material, w, r, top, env, lambda at: _entry(geo, material, at), corners)
     written = _Written(pts, groups, exact, steps, runs)
     if rough:
         us = [u for u, _v in pts] + ([material.passed[1], material.passed[2]] if material.passed else [])
