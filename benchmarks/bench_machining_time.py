@@ -189,7 +189,7 @@ BOUND_DEFINITION = (
 WHERE = """
 Where the feed goes (mm): the plunges' depths (equal steps of at most 95 % of the blade's width less its
 corner radii, each plunge from the contour to where it stops, in equal infeeds: the Siemens manual's steps 1
-and 2), the rest of the plunges' feed (air: 0.1 mm entries over the contour and re-entries after each
+and 2), the rest of the plunges' feed (air: the VRT entries over the contour and the re-entries after each
 chip-break), the contour and finishing passes (steps 3 and 4, fed where material stands). Floor: the
 depths and passes at feed plus the rapids, what the manual's plunges and passes take whatever the links."""
 

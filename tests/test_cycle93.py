@@ -330,8 +330,8 @@ def test_plain_groove_moves_by_hand():
     # a 3 mm blade (r 0.4): the opening -16..-10 takes 3 plunges (3 mm to
     # cover in steps of at most 0.95 * (3 - 0.8) = 2.09: 2 steps of 1.5),
     # from the start side: minus corner at z -13, -14.5, -16. Each: rapid to
-    # VRT above the surface (X21), on down to 0.1 above it (X20.1, the entry
-    # clearance), three infeeds of 1 (X19, X18, X17); after the first two a
+    # VRT above the surface (X21), three infeeds of 1 (X19, X18, X17) fed from
+    # there (VRT is the clearance over uncut stock); after the first two a
     # chip-breaking retract of VRT (X20, X19), a rapid back down the slot just
     # cut to 0.1 above the depth reached (X19.1, X18.1), then the feed on. At
     # the bottom of the second and third plunge the free-off: a rapid of 1 mm
@@ -342,7 +342,7 @@ def test_plain_groove_moves_by_hand():
     moves = call().expand(MachineState(x=25.0, z=0.0), TOOL)
     expected = [(RAPID, 25.0, -13.0)]
     for z, freed in ((-13.0, None), (-14.5, -13.5), (-16.0, -15.0)):
-        expected += [(RAPID, 21.0, z), (RAPID, 20.1, z), (FEED, 19.0, z), (RAPID, 20.0, z), (RAPID, 19.1, z),
+        expected += [(RAPID, 21.0, z), (FEED, 19.0, z), (RAPID, 20.0, z), (RAPID, 19.1, z),
                      (FEED, 18.0, z), (RAPID, 19.0, z), (RAPID, 18.1, z), (FEED, 17.0, z)]
         if freed is None:
             expected += [(RAPID, 21.0, z)]  # the first plunge: straight out

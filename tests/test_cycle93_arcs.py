@@ -59,7 +59,7 @@ def test_a_small_groove_with_base_radii_by_hand():
     # from 0 to -90 degrees: clockwise, G2. There the blade (z 1 to 3 on the left, 3 to 5 on the right) stands
     # on the base with the plunges' slots beside it: going on along the base to the next plunge
     # position (4/3, 8/3) would cut nothing, so each pass goes back up from the arc's end. Every
-    # plunge rapids down to 0.1 above the surface (x 20.1) and feeds from there; the fourth one's
+    # plunge feeds from VRT above the surface (x 21); the fourth one's
     # free-off is a rapid (the third's slot beside it is cut deeper, to x 17). Each pass comes down
     # from VRT above the contour to 0.1 above the level the first plunge left (x 18.1).
     moves = Cycle93.parse("CYCLE93(20, 0, 6, 3, 0, 0, 0, 0, 0, 1, 1, 0, 0, 5, 0, 1, 1)").expand(
@@ -67,11 +67,11 @@ def test_a_small_groove_with_base_radii_by_hand():
     third, two_thirds = 4.0 / 3.0, 8.0 / 3.0
     expected = [
         (RAPID, 25.0, 0.0), (RAPID, 21.0, 0.0),  # along Z first (an external groove), down to VRT above
-        (RAPID, 20.1, 0.0), (FEED, 18.0, 0.0), (RAPID, 21.0, 0.0),
-        (RAPID, 21.0, third), (RAPID, 20.1, third), (FEED, 17.0, third), (RAPID, 21.0, third),
-        (RAPID, 21.0, two_thirds), (RAPID, 20.1, two_thirds), (FEED, 17.0, two_thirds),
+        (FEED, 18.0, 0.0), (RAPID, 21.0, 0.0),
+        (RAPID, 21.0, third), (FEED, 17.0, third), (RAPID, 21.0, third),
+        (RAPID, 21.0, two_thirds), (FEED, 17.0, two_thirds),
         (RAPID, 17.0, two_thirds - 1.0), (RAPID, 21.0, two_thirds - 1.0),
-        (RAPID, 21.0, 4.0), (RAPID, 20.1, 4.0), (FEED, 18.0, 4.0), (RAPID, 18.0, 3.0), (RAPID, 21.0, 3.0),
+        (RAPID, 21.0, 4.0), (FEED, 18.0, 4.0), (RAPID, 18.0, 3.0), (RAPID, 21.0, 3.0),
         (RAPID, 21.0, 0.0), (RAPID, 18.1, 0.0), (FEED, 18.0, 0.0),
         (ARC_CCW, 17.0, 1.0, (18.0, 1.0)), (RAPID, 21.0, 1.0),
         (RAPID, 21.0, 4.0), (RAPID, 18.1, 4.0), (FEED, 18.0, 4.0),

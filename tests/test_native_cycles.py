@@ -242,14 +242,13 @@ M30
 def test_one_groove_cut_in_one_peck_is_written_as_cycle93(reference, axsa, axfa):
     settings = Settings(tool=GroovingTool(3.0, 0.2, reference))
     text = assert_reads_back(ONE_PECK, "fanuc", "sinumerik", settings)
-    # G75 from X62. Z-15. (radius 31) to X56. (radius 28): VRT 0.1 (CYCLE93 rapids down to 0.1 over the
-    # contour and feeds from there, as G75 feeds from its start), the contour at radius 30.9, 2.9 deep, the
+    # G75 from X62. Z-15. (radius 31) to X56. (radius 28): VRT 1, the contour at radius 30, 2 deep, the
     # blade's reference corner at Z-15: its -Z edge at Z-15 (minus) or Z-18 (plus); IDEP the peck, 5
     longitudinal = lines_after(text, "G75 X56. P5000", 2)
-    assert longitudinal == ["F0.05", "CYCLE93(30.9, %s, 3, 2.9, , , , , , , , , , 5, , 1, 0.1)" % axsa]
-    # G74 from X30. Z2. to Z-3.: VRT 0.1, the contour at Z1.9, 4.9 deep, the blade's -X edge at radius 15 or 12
+    assert longitudinal == ["F0.05", "CYCLE93(30, %s, 3, 2, , , , , , , , , , 5, , 1, 1)" % axsa]
+    # G74 from X30. Z2. to Z-3.: VRT 1, the contour at Z1, 4 deep, the blade's -X edge at radius 15 or 12
     face = lines_after(text, "G74 Z-3. Q5000", 1)
-    assert face == ["CYCLE93(%s, 1.9, 3, 4.9, 90, , , , , , , , , 5, , 2, 0.1)" % axfa]
+    assert face == ["CYCLE93(%s, 1, 3, 4, 90, , , , , , , , , 5, , 2, 1)" % axfa]
     assert Cycle93.parse(face[0]).kind() == (False, True, True, False)
 
 
@@ -379,9 +378,8 @@ def test_a_haas_g75_is_written_for_ab9_and_gsk():
 
 
 def test_an_allen_bradley_plunge_in_one_peck_is_written_as_cycle93():
-    # from X52. Z-10. (radius 26) to X47. (23.5): one peck of 3 >= 2.5; VRT 0.1 (CYCLE93's entry
-    # clearance), the contour at radius 25.9, 2.4 deep; the call's F becomes the feed in force CYCLE93 cuts at
+    # from X52. Z-10. (radius 26) to X47. (23.5): one peck of 3 >= 2.5; VRT 1, the contour at radius 25;
+    # the call's F becomes the feed in force CYCLE93 cuts at
     program = AB9.replace("G77 X44. Z-30. I1.5 K10. F0.06 D0.", "G77 X47. I3. F0.06 D0.")
     text = assert_reads_back(program, "ab9", "sinumerik")
-    assert lines_after(text, "G77 X47. I3.", 2) == ["F0.06",
-                                                    "CYCLE93(25.9, -10, 3, 2.4, , , , , , , , , , 3, , 1, 0.1)"]
+    assert lines_after(text, "G77 X47. I3.", 2) == ["F0.06", "CYCLE93(25, -10, 3, 1.5, , , , , , , , , , 3, , 1, 1)"]

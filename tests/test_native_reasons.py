@@ -261,7 +261,7 @@ def test_a_blade_from_the_tool_table_reaches_the_cycle93_written_for_a_pecking_c
     program = PECKS.replace("CALL", "G75 X56. P5000 F0.05")
     tools = read_tool_table("3 3.0 0.2 plus\n")
     text = native(program, "fanuc", "sinumerik", Settings(), tools=tools)
-    assert "CYCLE93(30.9, -18, 3, 2.9, , , , , , , , , , 5, , 1, 0.1)" in text  # VRT 0.1 below the start
+    assert "CYCLE93(30, -18, 3, 2, , , , , , , , , , 5, , 1, 1)" in text
     assert GroovingTool(3.0, 0.2, "plus").reference_offset == 3.0
 
 

@@ -252,25 +252,21 @@ def _changed_on_purpose_since_3d18f68(key, program):
 
 
 def _cycle93_links_since_3d18f68(key, recorded):
-    """Issue 22 (item 4) changed two of CYCLE93's links on purpose (docs/choices.md, derived by hand in
-    tests/test_cycle93.py and tests/test_cycle93_links.py): each plunge rapids on down from VRT over the contour
-    (X21, radius) to 0.1 over it (X20.1) and feeds from there; the free-off along the bottom is a rapid. The
-    saved Groove op's two plain grooves (contour R20) as recorded, with those two changes made: its path
-    (``key`` "path": [name, params] commands) or its LinuxCNC program (X a diameter: X42. -> X40.2)."""
+    """Issue 22 (item 4) changed one of CYCLE93's links on purpose (docs/choices.md, derived by hand in
+    tests/test_cycle93.py and tests/test_cycle93_links.py): the free-off along the bottom is a rapid. The
+    saved Groove op's two plain grooves (contour R20) as recorded, with that change made: its path
+    (``key`` "path": [name, params] commands) or its LinuxCNC program."""
     if key == "path":
         out = []
         for name, params in recorded:
             last = out[-1] if out else None
-            if name == "G1" and last and last[0] == "G0" and last[1].get("X") == 21.0 and params["X"] < 21.0:
-                out.append(["G0", {"X": 20.1, "Z": params["Z"]}])  # on down to the entry clearance
             if name == "G1" and last and last[0] == "G1" and params["X"] == last[1]["X"]:
                 name, params = "G0", {k: v for k, v in params.items() if k != "F"}  # the free-off: a rapid
             out.append([name, params])
         return out
     if not key.startswith("GrooveJob/linuxcnc_lathe_post"):
         return recorded
-    text = re.sub(r"\nG1 X38\.", "\nX40.2\nG1 X38.", recorded)  # each plunge's first infeed (G0 before it)
-    return re.sub(r"\nG1 X36\.\n(Z[0-9.]+)\nG0 X42\.", "\nG1 X36.\nG0 \\1\nX42.", text)  # the free-off
+    return re.sub(r"\nG1 X36\.\n(Z[0-9.]+)\nG0 X42\.", "\nG1 X36.\nG0 \\1\nX42.", recorded)  # the free-off
 
 
 def test_the_ops_saved_before_the_move_post_the_programs_3d18f68_posted(ops_at_3d18f68):

@@ -75,15 +75,14 @@ def test_a_path_plunging_too_deep_shows_the_gouge_and_where(shop):
 
 
 @pytest.mark.parametrize("speeds, expected", [
-    # 2.1 mm at 0.01 mm/rev x 100 rpm = 1 mm/min: 126 s
-    (dict(spindle_speed=100), "00:02:06"),
+    # 3 mm at 0.01 mm/rev x 100 rpm = 1 mm/min: 180 s
+    (dict(spindle_speed=100), "00:03:00"),
     # V = 10 m/min: rpm(x) = 10000 / (2 pi x) (below the 100 rpm limit from R15.9 out), so
-    # t = int_18^20.1 2 pi x / (0.01 * 10000) dx = pi (20.1^2 - 18^2) / 100 min = 150.82 s
-    (dict(surface_speed="10 m/min", max_spindle_speed=100), "00:02:31"),
+    # t = int_18^21 2 pi x / (0.01 * 10000) dx = pi (21^2 - 18^2) / 100 min = 220.54 s
+    (dict(surface_speed="10 m/min", max_spindle_speed=100), "00:03:41"),
 ])
 def test_cycle_time_is_the_hand_computed_time(shop, speeds, expected):
-    """A groove as wide as the blade in one plunge: G0 X21 Z22 (R20 + the 1 mm retract), G0 X20.1 Z22 (the
-    0.1 mm entry clearance), G1 X18 Z22."""
+    """A groove as wide as the blade in one plunge: G0 X21 Z22, G1 X18 Z22 (from R20 + the 1 mm retract)."""
     op = cylinder_groove(shop, width=3, infeed=2, feed_per_rev=0.01, **speeds)
     feeds = [(c.Parameters["X"], c.Parameters["Z"]) for c in op.Path.Commands if c.Name == "G1"]
     assert feeds == [(18.0, 22.0)]

@@ -21,7 +21,7 @@ DEFAULT_VRT_INCH = 0.04
 # After a chip-breaking retract the blade rapids back down its own slot to
 # this far above the depth it reached, then feeds on: only this gap is fed in
 # air, not VRT. Never more than VRT (with VRT below it, no rapid back down).
-# Also how far over the contour a plunge starts feeding, and the passes.
+# Also how far over what the plunges left the contour passes start feeding.
 REENTRY_CLEARANCE_MM = 0.1
 REENTRY_CLEARANCE_INCH = 0.004
 # The Siemens manual: "From the second cut along the groove width onwards, the tool will

@@ -13,10 +13,10 @@ cut), and there is none when the previous plunge stopped higher (on an angled
 flank or a base corner): its slot is not cut down to this depth, so the move
 removes nothing.
 
-Each plunge comes over its place VRT above the contour and rapids on down to
-the re-entry clearance over the highest contour point under the blade (the
-material there: nothing is cut above the contour), as the contour passes
-enter, and feeds its first infeed from there.
+Each plunge comes over its place VRT above the contour and feeds its first
+infeed from there: VRT is the clearance the machinist sets for the stock as
+it stands (a rough bar wants more), so no rapid goes below it over stock that
+is not cut yet (docs/choices.md).
 """
 
 import math
@@ -67,8 +67,8 @@ def base_envelope(geo: "GrooveGeometry") -> Envelope:
 
 
 def plunges(geo: "GrooveGeometry", positions: List[float], go: Go, out: List[Move], material: MaterialTop) -> None:
-    """Steps 1 and 2: plunges in equal infeeds, each entered from the re-entry
-    clearance over the contour, with chip-breaking retracts (VRT up, then a
+    """Steps 1 and 2: plunges in equal infeeds, each fed from VRT over the
+    contour, with chip-breaking retracts (VRT up, then a
     rapid back down the blade's own slot to the re-entry clearance), DWT at
     the bottom of those that reach the base, the free-off (a rapid) from the
     second plunge on, then out; each slot is cleared in ``material``."""
@@ -83,7 +83,6 @@ def plunges(geo: "GrooveGeometry", positions: List[float], go: Go, out: List[Mov
         if bottom >= top - EPS:
             continue  # the blade cannot enter here without cutting the allowance
         go("r", u, top + vrt)
-        go("r", u, top + reentry)  # over material at the contour: the passes' entry clearance
         total = top - bottom
         n = int(infeed_count(total, idep))  # the count ExpansionSize checked before expanding
         inc = total / n

@@ -177,8 +177,8 @@ def groove_span(plan: Any, metric: bool = True) -> GrooveSpan:
     start = Point(*frame.blade(first, geometry.clearance(first)))
     approach = [Point(plan.start.x, plan.start.z)]
     for move in plan.moves:
-        if move.kind != RAPID or math.dist(approach[-1], start) <= SAME:
-            break  # the expansion rapids on down to its entry clearance; the pecking cycle feeds from here
+        if move.kind != RAPID:
+            break
         approach.append(Point(move.x, move.z))
     if math.dist(approach[-1], start) > SAME:
         raise NotNative("its start point (the approach of the expansion ends elsewhere)")

@@ -20,8 +20,7 @@ why, for the differences known to matter:
 from dataclasses import replace
 from typing import Any, Dict, List, Optional
 
-from ..cycles.cycle93 import Cycle93
-from ..cycles.cycle93_constants import REENTRY_CLEARANCE_INCH, REENTRY_CLEARANCE_MM
+from ..cycles.cycle93 import DEFAULT_VRT_INCH, DEFAULT_VRT_MM, Cycle93
 from ..cycles.cycle_words import F_DECIMALS
 from ..cycles.pecking import PeckingLayout
 from ..errors import CycleError
@@ -146,18 +145,16 @@ def cycle93_model(layout: PeckingLayout, tstart: MachineState, blade: GroovingTo
                   digits: int) -> Cycle93:
     """The CYCLE93 call whose one plunge is the layout's one peck from ``tstart``:
     a groove as wide as the blade, its contour (ANGC 90 for a face groove) VRT
-    below the start, its start edge where the blade's reference corner stands.
-    VRT is CYCLE93's entry clearance (0.1 mm, 0.004 in; at most half the
-    plunge): its plunge rapids down to that far over the contour and feeds
-    from there, as the pecking cycle feeds from its start."""
+    below the start (VRT at most half the plunge), its start edge where the
+    blade's reference corner stands."""
     longitudinal = layout.longitudinal
     here = tstart.x if longitudinal else tstart.z
     across = tstart.z if longitudinal else tstart.x
     external = layout.bottom < here
     sv = 1.0 if external else -1.0
     plunge = abs(here - layout.bottom)
-    entry = REENTRY_CLEARANCE_MM if tstart.metric else REENTRY_CLEARANCE_INCH
-    vrt = round(min(entry, plunge / 2.0), digits)
+    default = DEFAULT_VRT_MM if tstart.metric else DEFAULT_VRT_INCH
+    vrt = round(min(default, plunge / 2.0), digits)
     fine = digits + 1  # a radius read from a diameter word has one more decimal
     contour = round(here - sv * vrt, fine)
     depth = round(abs(contour - layout.bottom), fine)
