@@ -300,10 +300,11 @@ def split_plunges(moves, vrt=1.0):
     rapid re-entries in between, a dwell at the bottom. ``reentries``: how far
     above the depth reached each re-entry rapid stops."""
 
-    def chip_break(j):  # a retract (after a feed) or a re-entry (back down after a retract)
+    def chip_break(j):  # a retract (after a feed), a re-entry (back down after a retract) or the entry
         up, down = moves[j - 1], moves[j]
         back_in = up.kind == RAPID and moves[j - 2].kind == FEED and down.z == up.z and down.x < up.x
-        return moves[j - 1].kind == FEED or back_in
+        entry = up.kind == RAPID and moves[j + 1].kind == FEED and down.z == up.z and down.x < up.x
+        return moves[j - 1].kind == FEED or back_in or entry
 
     out = []
     for i, m in enumerate(moves):
@@ -329,14 +330,15 @@ def test_plain_groove_moves_by_hand():
     # a 3 mm blade (r 0.4): the opening -16..-10 takes 3 plunges (3 mm to
     # cover in steps of at most 0.95 * (3 - 0.8) = 2.09: 2 steps of 1.5),
     # from the start side: minus corner at z -13, -14.5, -16. Each: rapid to
-    # VRT above the surface (X21), three infeeds of 1 (X19, X18, X17); after
-    # the first two a chip-breaking retract of VRT (X20, X19), a rapid back
-    # down the slot just cut to 0.1 above the depth reached (X19.1, X18.1),
-    # then the feed on. At the bottom of the second and third plunge the
-    # free-off: a feed of 1 mm along Z back toward the previous plunge (1.5
-    # away), to Z-13.5 and Z-15; the first plunge has none. Out from there.
-    # No contour pass (square flanks, no allowance), back to the start the
-    # way the approach came (along X from the freed Z-15, then along Z).
+    # VRT above the surface (X21), three infeeds of 1 (X19, X18, X17) fed from
+    # there (VRT is the clearance over uncut stock); after the first two a
+    # chip-breaking retract of VRT (X20, X19), a rapid back down the slot just
+    # cut to 0.1 above the depth reached (X19.1, X18.1), then the feed on. At
+    # the bottom of the second and third plunge the free-off: a rapid of 1 mm
+    # along Z back toward the previous plunge (1.5 away, cut as deep), to
+    # Z-13.5 and Z-15; the first plunge has none. Out from there. No contour
+    # pass (square flanks, no allowance), back to the start the way the
+    # approach came (along X from the freed Z-15, then along Z).
     moves = call().expand(MachineState(x=25.0, z=0.0), TOOL)
     expected = [(RAPID, 25.0, -13.0)]
     for z, freed in ((-13.0, None), (-14.5, -13.5), (-16.0, -15.0)):
@@ -345,7 +347,7 @@ def test_plain_groove_moves_by_hand():
         if freed is None:
             expected += [(RAPID, 21.0, z)]  # the first plunge: straight out
         else:
-            expected += [(FEED, 17.0, freed), (RAPID, 21.0, freed)]  # free-off along the bottom, then out
+            expected += [(RAPID, 17.0, freed), (RAPID, 21.0, freed)]  # free-off along the bottom, then out
     expected += [(RAPID, 25.0, -15.0), (RAPID, 25.0, 0.0)]
     assert [(m.kind, round(m.x, 9), round(m.z, 9)) for m in moves] == expected
 
@@ -379,8 +381,8 @@ def test_after_each_chip_break_the_blade_rapids_back_down_its_slot(kw, start, me
 
 def free_offs(c, start, tool, metric=True):
     """[(k, freed u or None)] of each plunge k: after its bottom (and dwell)
-    the next move, in the groove frame, checked to be a FEED along the bottom
-    followed by a RAPID straight out, or that RAPID alone (None)."""
+    the next move, in the groove frame, checked to be a RAPID along the bottom
+    followed by a RAPID straight out, or that RAPID out alone (None)."""
     geo = c.geometry(tool, metric=metric)
     moves = [m for m in c.expand(start, tool) if m.kind != DWELL]
     uv = [geo.frame.blade_of(m.x, m.z) for m in moves]
@@ -390,7 +392,7 @@ def free_offs(c, start, tool, metric=True):
         i = next(j for j, (a, b) in enumerate(uv) if moves[j].kind == FEED
                  and a == pytest.approx(u, abs=1e-9) and b == pytest.approx(bottom, abs=1e-9))
         freed = None
-        if moves[i + 1].kind == FEED:
+        if moves[i + 1].kind == RAPID and uv[i + 1][0] != pytest.approx(u, abs=1e-9):
             freed, level = uv[i + 1]
             assert level == pytest.approx(bottom, abs=1e-9)  # along the bottom, nothing deeper
             i += 1
@@ -440,7 +442,7 @@ def test_free_off_is_the_one_in_the_guides_choices():
     assert (FREE_OFF_MM, FREE_OFF_INCH) == (1.0, 0.04)
     readme = (Path(__file__).parent.parent / "docs" / "choices.md").read_text(encoding="utf-8")
     row = next(line for line in readme.splitlines() if line.startswith("| free-off"))
-    assert "1 mm" in row and "0.04 in" in row and "FREE_OFF_MM" in row and "FEED" in row
+    assert "1 mm" in row and "0.04 in" in row and "FREE_OFF_MM" in row and "a RAPID" in row
 
 
 def test_reentry_clearance_is_the_one_in_the_guides_choices_and_below_the_default_vrt():

@@ -56,9 +56,12 @@ def test_a_small_groove_with_base_radii_by_hand():
     # corner runs down the base radius, a quarter circle of radius 1 about (x 18, z 1) on the left
     # (from angle 180 to 270 degrees about it, Z right and X up: counter-clockwise, G3) and about
     # (x 18, z 3) on the right for the blade's -Z corner (its +Z corner on the radius about z 5),
-    # from 0 to -90 degrees: clockwise, G2; then along the base to the next plunge position (4/3,
-    # 8/3), where the plunges have cut the rest. Each pass comes down from VRT above the contour
-    # to 0.1 above the level the first plunge left (x 18.1), and goes back up the same way.
+    # from 0 to -90 degrees: clockwise, G2. There the blade (z 1 to 3 on the left, 3 to 5 on the right) stands
+    # on the base with the plunges' slots beside it: going on along the base to the next plunge
+    # position (4/3, 8/3) would cut nothing, so each pass goes back up from the arc's end. Every
+    # plunge feeds from VRT above the surface (x 21); the fourth one's
+    # free-off is a rapid (the third's slot beside it is cut deeper, to x 17). Each pass comes down
+    # from VRT above the contour to 0.1 above the level the first plunge left (x 18.1).
     moves = Cycle93.parse("CYCLE93(20, 0, 6, 3, 0, 0, 0, 0, 0, 1, 1, 0, 0, 5, 0, 1, 1)").expand(
         MachineState(x=25.0, z=5.0, feed=0.1), Settings(tool=GroovingTool(2.0, 0.0)))
     third, two_thirds = 4.0 / 3.0, 8.0 / 3.0
@@ -66,14 +69,14 @@ def test_a_small_groove_with_base_radii_by_hand():
         (RAPID, 25.0, 0.0), (RAPID, 21.0, 0.0),  # along Z first (an external groove), down to VRT above
         (FEED, 18.0, 0.0), (RAPID, 21.0, 0.0),
         (RAPID, 21.0, third), (FEED, 17.0, third), (RAPID, 21.0, third),
-        (RAPID, 21.0, two_thirds), (FEED, 17.0, two_thirds), (FEED, 17.0, two_thirds - 1.0),
-        (RAPID, 21.0, two_thirds - 1.0),
-        (RAPID, 21.0, 4.0), (FEED, 18.0, 4.0), (FEED, 18.0, 3.0), (RAPID, 21.0, 3.0),
+        (RAPID, 21.0, two_thirds), (FEED, 17.0, two_thirds),
+        (RAPID, 17.0, two_thirds - 1.0), (RAPID, 21.0, two_thirds - 1.0),
+        (RAPID, 21.0, 4.0), (FEED, 18.0, 4.0), (RAPID, 18.0, 3.0), (RAPID, 21.0, 3.0),
         (RAPID, 21.0, 0.0), (RAPID, 18.1, 0.0), (FEED, 18.0, 0.0),
-        (ARC_CCW, 17.0, 1.0, (18.0, 1.0)), (FEED, 17.0, third), (RAPID, 21.0, third),
+        (ARC_CCW, 17.0, 1.0, (18.0, 1.0)), (RAPID, 21.0, 1.0),
         (RAPID, 21.0, 4.0), (RAPID, 18.1, 4.0), (FEED, 18.0, 4.0),
-        (ARC_CW, 17.0, 3.0, (18.0, 3.0)), (FEED, 17.0, two_thirds), (RAPID, 21.0, two_thirds),
-        (RAPID, 25.0, two_thirds), (RAPID, 25.0, 5.0),  # back the way the approach came
+        (ARC_CW, 17.0, 3.0, (18.0, 3.0)), (RAPID, 21.0, 3.0),
+        (RAPID, 25.0, 3.0), (RAPID, 25.0, 5.0),  # back the way the approach came
     ]
     assert len(moves) == len(expected)
     for move, (kind, x, z, *centre) in zip(moves, expected):

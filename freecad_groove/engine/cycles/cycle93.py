@@ -35,10 +35,12 @@ Expansion (the manual's four steps), driving the tool's reference corner:
 1+2. Paraxial plunges across the opening, equally spaced at most 95 % of
   (tool width - 2 x corner radius) apart, from the start side*; each to the
   roughing profile (final profile less the allowances) in equal infeeds of at
-  most IDEP, each followed by a rapid chip-breaking retract of VRT (0 = 1 mm)
-  and a feed back in; a DWT dwell at the bottom of the plunges that reach the
-  base (the manual: "dwell time at recess base"; not where a plunge stops on a flank
-  or a base corner above the base); rapid retract to VRT above the contour.
+  most IDEP (the first fed from 0.1 mm over the contour*), each followed by
+  a rapid chip-breaking retract of VRT (0 = 1 mm) and a feed back in; a DWT
+  dwell at the bottom of the plunges that reach the base (the manual: "dwell
+  time at recess base"; not where a plunge stops on a flank or a base corner
+  above the base); a rapid free-off of 1 mm* from the second plunge on; rapid
+  retract to VRT above the contour.
   Traverses run VRT above the contour, parallel to it.
 3. When flanks are angled, base corners rounded or the contour oblique, a
   contour-parallel pass on the roughing profile from each edge toward the

@@ -21,12 +21,13 @@ DEFAULT_VRT_INCH = 0.04
 # After a chip-breaking retract the blade rapids back down its own slot to
 # this far above the depth it reached, then feeds on: only this gap is fed in
 # air, not VRT. Never more than VRT (with VRT below it, no rapid back down).
+# Also how far over what the plunges left the contour passes start feeding.
 REENTRY_CLEARANCE_MM = 0.1
 REENTRY_CLEARANCE_INCH = 0.004
 # The Siemens manual: "From the second cut along the groove width onwards, the tool will
 # retract by 1 mm before each retraction": at the bottom of every plunge after
-# the first the blade feeds this far along the groove's axis back toward the
-# previous plunge (never further than it), then rapids out.
+# the first the blade rapids this far along the groove's axis back toward the
+# previous plunge (never further than it, inside slots cut as deep), then out.
 FREE_OFF_MM = 1.0
 FREE_OFF_INCH = 0.04
 PATH_TOLERANCE = 0.0002  # chord error allowed on contour passes and arcs

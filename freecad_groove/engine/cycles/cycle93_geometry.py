@@ -452,7 +452,8 @@ class GrooveGeometry:
         for start in self.pass_range(env, top):
             chorded, exact = env.traces(start, mid, PATH_TOLERANCE)
             pts = split_at(chorded, steps)
-            feed_where_material(self, pts, go, material, steps, top, env, top is self.rough_top, exact)
+            vertices = exact if exact is not None else env.traces(start, mid, None)[1]
+            feed_where_material(self, pts, go, material, steps, top, env, top is self.rough_top, exact, vertices)
 
     def _leg_clear(self, u_from, u_to, level):
         """True when a blade moving along u at ``level`` stays above the contour."""

@@ -24,14 +24,16 @@ outline is raised to the profile the blade's envelope keeps it on (the
 under the real sweep, so a stretch found not to cut leaves at most
 MATERIAL_MARGIN (and the floor's chord tolerance) of material.
 
-The passes' own cuts are not added to the field (it stays an upper bound of
-what stands): a finishing pass skips instead the stretches the roughing
-passes already ran on the same envelope (``note_pass``).
+The passes' cuts are added only as the blade standing at both ends of each
+stretch they feed (``cycle93_passes``: ``clear_slot`` at one position), less
+than they cut, so the field stays an upper bound of what stands; a finishing
+pass also skips the stretches the roughing passes already ran on the same
+envelope (``note_pass``).
 """
 
 import math
 from bisect import bisect_left, bisect_right
-from typing import List, Optional, Tuple
+from typing import List, Optional, Set, Tuple
 
 from ..envelope import Envelope
 from ..envelope_curves import CAP, CUP, LINE, Curve, crossings, upper_envelope, value
@@ -63,19 +65,51 @@ class MaterialTop:
         self._starts: List[float] = []
         self._pieces: List[Optional[Curve]] = []
         self.passed: Optional[Tuple[Envelope, float, float]] = None  # see note_pass
+        self._placed: Set[Point] = set()  # the blade positions cleared so far (stand_blade)
 
     def clear_slot(self, u_from: float, u_to: float, bottom: float, width: float, radius: float) -> None:
         """A plunge to ``bottom`` at u_from, freed off along the bottom to u_to."""
         a, b = min(u_from, u_to), max(u_from, u_to)
+        self._placed.update(((u_from, bottom), (u_to, bottom)))
         r, top = radius, -(bottom + radius)
-        for lo, hi, curve in (
+        slot = [curve for lo, hi, curve in (
             (a, a + r, Curve(a, a + r, CAP, a + r, top, r)),
             (a + r, b + width - r, Curve(a + r, b + width - r, LINE, a, -bottom, 0.0)),
             (b + width - r, b + width, Curve(b + width - r, b + width, CAP, b + width - r, top, r)),
-        ):
-            if hi > lo:
-                self._curves.append(curve)
-        self._starts = []
+        ) if hi > lo]
+        if self._starts:
+            self._lower(slot, max(a, self.lo), min(b + width, self.hi))
+        else:
+            self._curves.extend(slot)
+
+    def stand_blade(self, u: float, v: float, width: float, radius: float) -> None:
+        """The blade has stood at (u, v): a slot there, unless one was cleared
+        at that very place already (a plunge's bottom the pass ends on)."""
+        if (u, v) not in self._placed:
+            self._placed.add((u, v))
+            self.clear_slot(u, u, v, width, radius)
+
+    def _lower(self, slot: List[Curve], a: float, b: float) -> None:
+        """The field built, lowered by the ``slot``'s curves over [a, b] only:
+        there the new field is the upper envelope of the old one's pieces and
+        the slot's (each old piece is a curve at or under the old field)."""
+        if not b > a:
+            return
+        starts, pieces = self._starts, self._pieces
+        k0 = max(bisect_right(starts, a) - 1, 0)
+        kb = max(bisect_right(starts, b) - 1, 0)
+        local = list({id(c): c for c in pieces[k0:kb + 1] if c is not None}.values()) + slot
+        sub_starts, sub_pieces = upper_envelope(local, a, b)
+        head = k0 + 1 if starts[k0] < a else k0
+        tail_starts, tail_pieces = ([b] + starts[kb + 1:], [pieces[kb]] + pieces[kb + 1:]) if b < self.hi else ([], [])
+        new_starts, new_pieces = [], []
+        for u, piece in zip(starts[:head] + sub_starts + tail_starts, pieces[:head] + sub_pieces + tail_pieces):
+            if new_pieces and new_pieces[-1] is piece:
+                continue
+            new_starts.append(u)
+            new_pieces.append(piece)
+        self._starts, self._pieces = new_starts, new_pieces
+        self._curves = list({id(c): c for c in new_pieces if c is not None}.values())
 
     def note_pass(self, env: Envelope, lo: float, hi: float) -> None:
         """The roughing contour passes ran over blade positions [lo, hi] on
@@ -85,6 +119,9 @@ class MaterialTop:
     def _field(self) -> Tuple[List[float], List[Optional[Curve]]]:
         if not self._starts:
             self._starts, self._pieces = upper_envelope(self._curves, self.lo, self.hi)
+            # A curve below the field everywhere stays so (slots only lower the material): drop it, so that
+            # the next field is built from what stands, not from every slot and pass position so far.
+            self._curves = list({id(c): c for c in self._pieces if c is not None}.values())
         return self._starts, self._pieces
 
     def cuts(self, chain: List[Point], width: float, radius: float, floor: List[Point]) -> bool:

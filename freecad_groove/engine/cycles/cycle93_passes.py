@@ -1,13 +1,16 @@
 """Steps 3 and 4 of CYCLE93 fed only where material remains.
 
 A contour or finishing pass follows the blade's envelope over a profile
-(``Envelope.trace``), split at the plunge positions. Most of it runs where
-the plunges have already cut. Each stretch between two plunge positions is
-decided whole: fed when the blade swept along it would cut more than
-MATERIAL_MARGIN of what the plunges left (``MaterialTop.cuts``), skipped
-otherwise, or skipped without a test when the roughing passes already ran it
-on the same envelope (``covered``: a finishing pass over a stretch where the
-final profile is the roughing one). Between two fed runs the blade either
+(``Envelope.trace``), split at the plunge positions and at the path's
+vertices. Most of it runs where the plunges have already cut. Each stretch
+is decided whole: fed when the blade swept along it would cut more than
+MATERIAL_MARGIN of what the plunges and the stretches fed before it left
+(``MaterialTop.cuts``; a fed stretch adds the blade standing at its two
+ends), skipped otherwise, or skipped without a test when the roughing passes
+already ran it on the same envelope (``covered``: a finishing pass over a
+stretch where the final profile is the roughing one). So a pass ends where
+its last stretch that cuts ends (at the foot of a flank or a corner, not on
+along a base the plunges have cut) and the blade goes straight up there. Between two fed runs the blade either
 feeds on through the air of the gap or rapids out to the clearance VRT above
 the contour, across, and down to a re-entry clearance above the material left
 under the blade, whichever takes less time when a rapid runs RAPID_FEED_RATIO
@@ -144,12 +147,21 @@ def covered(material: MaterialTop, env: Envelope, lo: float, hi: float) -> bool:
 
 
 def _stretches(pts: List[Point], groups: List[Tuple[int, int]], material: MaterialTop, width: float,
-               radius: float, top: List[Point], env: Envelope) -> List[List[int]]:
+               radius: float, top: List[Point], env: Envelope, entry: Callable[[Point], float],
+               corners: List[float]) -> Tuple[List[List[int]], List[float]]:
     """[first, last] point indexes of the runs of stretches that cut
-    something; a stretch is tested whole (the blade swept along its lower
-    hull, below it). A trace of one point (a blade as wide as the opening)
-    is a plunge to it: [0, 0] when material stands above the blade there."""
+    something, in pass order, and the level the blade may rapid down to over
+    each run's first point (``entry``, taken before the run cuts). A stretch
+    is tested whole (the blade swept along its lower hull, below it) against
+    what the plunges and the stretches fed before it left: the blade standing
+    at the end of each fed stretch that ends at one of the path's vertices
+    (u in ``corners``, sorted: the foot of a flank or a corner, where a pass
+    may have cut all there is before the next plunge position) is added to
+    ``material``. A trace of one
+    point (a blade as wide as the opening) is a plunge to it: [0, 0] when
+    material stands above the blade there."""
     runs: List[List[int]] = []
+    entries: List[float] = []
     for first, last in groups:
         part = pts[first:last + 1]
         lo, hi = min(u for u, _v in part), max(u for u, _v in part)
@@ -158,8 +170,13 @@ def _stretches(pts: List[Point], groups: List[Tuple[int, int]], material: Materi
         if runs and runs[-1][1] == first:
             runs[-1][1] = last
         else:
+            entries.append(entry(part[0]))
             runs.append([first, last])
-    return runs
+        u, v = part[-1]
+        k = bisect_left(corners, u - STEP_EPS)
+        if k < len(corners) and corners[k] <= u + STEP_EPS:
+            material.stand_blade(u, v, width, radius)  # cut for the stretches after
+    return runs, entries
 
 
 def _entry(geo: "GrooveGeometry", material: MaterialTop, at: Point) -> float:
@@ -178,26 +195,31 @@ def _length(pts: List[Point]) -> float:
 
 def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, material: MaterialTop,
                         steps: List[float], top: List[Point], env: Envelope, rough: bool,
-                        exact: Optional[List[PathPoint]] = None) -> None:
+                        exact: Optional[List[PathPoint]] = None, vertices: Optional[List[Point]] = None) -> None:
     """Feed the stretches of the trace ``pts`` on the envelope of ``top``
     that cut, linked the cheaper way; the blade comes from and goes back to
     the clearance. A roughing pass (``rough``) is noted in ``material``.
     ``exact``: the same pass as an exact path (arcs), not split: the moves
-    follow it, split at ``steps`` too (``_Written``); None: the chords."""
+    follow it, split at ``steps`` too (``_Written``); None: the chords.
+    ``vertices``: the path's vertices (None: ``exact``'s points, else ``pts``)."""
     w, r = geo.tool.width, geo.tool.corner_radius
+    # Stretches also part at the path's vertices (where a flank, a corner or the base begins): the moves are
+    # the same, but a stretch that runs on over what the ones before it cut is tested, and skipped, alone.
+    corners = sorted({u for u, _v in (vertices or exact or pts)})
+    steps = sorted(set(steps).union(corners))
+    pts = split_at(pts, steps)
     groups = _groups(pts, steps)
-    runs = _stretches(pts, groups, material, w, r, top, env)
+    runs, entries = _stretches(pts, groups, material, w, r, top, env, lambda at: _entry(geo, material, at), corners)
     written = _Written(pts, groups, exact, steps, runs)
     if rough:
         us = [u for u, _v in pts] + ([material.passed[1], material.passed[2]] if material.passed else [])
         material.note_pass(env, min(us), max(us))
     here = None  # the point the blade stands on, None at the clearance
-    for first, last in runs:
+    for (first, last), entry in zip(runs, entries):
         start = pts[first]
         if here is not None:
             gap = pts[here:first + 1]
             end = pts[here]
-            entry = _entry(geo, material, start)
             around = (geo.clearance(end[0]) - end[1]) + math.dist(
                 (end[0], geo.clearance(end[0])), (start[0], geo.clearance(start[0]))
             ) + (geo.clearance(start[0]) - entry)
@@ -207,7 +229,6 @@ def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, materia
             else:
                 written.feed(go, here, first)
         if here is None:
-            entry = _entry(geo, material, start)
             go("r", start[0], geo.clearance(start[0]))
             go("r", start[0], entry)
             go("f", *written.point(first))

@@ -4,13 +4,19 @@ their chip-breaking retracts, the dwell at the base and the free-off.
 The Siemens manual: "From the second cut along the groove width onwards, the tool will
 retract by 1 mm before each retraction." Read here as a free-off along the
 groove's axis (the frame's u): at the bottom of every plunge after the first,
-the blade feeds ``FREE_OFF_MM`` (``FREE_OFF_INCH``) back toward the previous
-plunge, away from the wall it has just cut, and only then rapids out, so its
-side does not rub that wall on the way up. It is a FEED: the blade is still in
-contact at the bottom of the groove. It is never longer than the distance to
-the previous plunge (the blade stays inside the slot already cut), and there
-is none when the previous plunge stopped higher (on an angled flank or a base
-corner): its slot is not cut down to this depth.
+the blade rapids ``FREE_OFF_MM`` (``FREE_OFF_INCH``) back toward the previous
+plunge, away from the wall it has just cut, and only then out, so its side
+does not rub that wall on the way up. It is a RAPID, a retract (the manual
+leaves G0 or G1 open; Fanuc's G75 relief is one): it is never longer than the
+distance to the previous plunge (the blade stays inside the slot already
+cut), and there is none when the previous plunge stopped higher (on an angled
+flank or a base corner): its slot is not cut down to this depth, so the move
+removes nothing.
+
+Each plunge comes over its place VRT above the contour and feeds its first
+infeed from there: VRT is the clearance the machinist sets for the stock as
+it stands (a rough bar wants more), so no rapid goes below it over stock that
+is not cut yet (docs/choices.md).
 """
 
 import math
@@ -61,10 +67,11 @@ def base_envelope(geo: "GrooveGeometry") -> Envelope:
 
 
 def plunges(geo: "GrooveGeometry", positions: List[float], go: Go, out: List[Move], material: MaterialTop) -> None:
-    """Steps 1 and 2: plunges in equal infeeds with chip-breaking retracts
-    (VRT up, then a rapid back down the blade's own slot to the re-entry
-    clearance), DWT at the bottom of those that reach the base, the free-off
-    from the second plunge on, then out; each slot is cleared in ``material``."""
+    """Steps 1 and 2: plunges in equal infeeds, each fed from VRT over the
+    contour, with chip-breaking retracts (VRT up, then a
+    rapid back down the blade's own slot to the re-entry clearance), DWT at
+    the bottom of those that reach the base, the free-off (a rapid) from the
+    second plunge on, then out; each slot is cleared in ``material``."""
     p = geo.params
     vrt, idep, dwt = p["VRT"], p["IDEP"], p["DWT"]
     reentry = min(vrt, REENTRY_CLEARANCE_MM if geo.metric else REENTRY_CLEARANCE_INCH)
@@ -90,7 +97,7 @@ def plunges(geo: "GrooveGeometry", positions: List[float], go: Go, out: List[Mov
             out.append(dwell(x, z, dwt))
         freed = free_off(geo, u, bottom, previous)
         if freed != u:
-            go("f", freed, bottom)
+            go("r", freed, bottom)  # a retract inside the slots already cut this deep (FREE_OFF_RAPID)
         # Out to the plunge's own clearance, or higher when the contour over
         # the freed blade is (an oblique contour): VRT above it either way.
         go("r", freed, max(top + vrt, geo.clearance(freed)))

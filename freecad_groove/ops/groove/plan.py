@@ -155,14 +155,21 @@ def start_candidates(face: GrooveFace, geometry: GrooveGeometry, settings: Setti
 
 def rapids_clear(envelope: SafeEnvelope, start: Point, moves: list[Move]) -> bool:
     """The approach (rapids up to the first feed) and the final retreat (the
-    rapids after the one that leaves the groove) stay out of the model."""
+    rapids after the one that leaves the groove) stay out of the model. The
+    one that leaves the groove moves along the plunge axis (the first feed's,
+    a plunge): a rapid before it along the groove's bottom (CYCLE93's
+    free-off) is still in the groove."""
     kinds = [move.kind for move in moves]
     if FEED not in kinds:
         return True
     first_feed = kinds.index(FEED)
     approach = [start] + [(move.x, move.z) for move in moves[:first_feed]]
     last_cut = len(kinds) - 1 - [kind != RAPID for kind in reversed(kinds)].index(True)
-    retreat = [(move.x, move.z) for move in moves[last_cut + 1:]]
+    along_x = abs(moves[first_feed].x - approach[-1][0]) > abs(moves[first_feed].z - approach[-1][1])
+    out = last_cut + 1
+    while out + 1 < len(moves) and (moves[out].x == moves[out - 1].x) == along_x:
+        out += 1  # a rapid across the plunge axis, along the bottom: not yet out of the groove
+    retreat = [(move.x, move.z) for move in moves[out:]]
     for points in (approach, retreat):
         for a, b in zip(points, points[1:]):
             if envelope.hits(a, b):
