@@ -58,7 +58,9 @@ from ...engine import GroovingTool, MachineState, Settings
 from ...engine.cycles.cycle93 import Cycle93
 from ...engine.moves import Move
 from ...engine.warnings import CycleWarning
+from ...freecad.changes import read_once
 from ...freecad.faces import GrooveFace
+from ...freecad.shape_memo import ShapeMemo
 from .links import LinkMove
 from .plan import GroovePlan
 from .properties import DERIVED, PROPERTIES
@@ -119,11 +121,19 @@ def _canonical(value: object) -> object:
 
 def _shape_digest(shape: object) -> Optional[str]:
     """A digest of a Part shape's BREP text (its geometry, topology and
-    placement), less what a save and reopen changes (BREP_FLAGS, BREP_NEGATIVE_ZERO)."""
+    placement), less what a save and reopen changes (BREP_FLAGS, BREP_NEGATIVE_ZERO);
+    taken once per shape (shape_memo.py: the model's and the stock's are read at every recompute)."""
     if shape is None or shape.isNull():
         return None
+    return _SHAPE_DIGEST(shape)
+
+
+def _brep_digest(shape: object) -> str:
     text = BREP_NEGATIVE_ZERO.sub("0", BREP_FLAGS.sub("", shape.exportBrepToString()))
     return hashlib.sha256(text.encode()).hexdigest()
+
+
+_SHAPE_DIGEST = ShapeMemo(_brep_digest)
 
 
 def _values(obj: object, names: Optional[tuple] = None, shape: bool = True) -> object:
@@ -145,23 +155,24 @@ def _digest(data: object) -> str:
 
 
 def _input_digest(obj: object, shape: bool, memo: dict) -> Optional[str]:
-    """The digest of _values(obj, shape=shape), taken once per ``memo``."""
+    """The digest of _values(obj, shape=shape), taken once per ``memo`` and
+    once per change of ``obj`` (changes.read_once)."""
     if obj is None:
         return None
     key = (getattr(getattr(obj, "Document", None), "Name", None), obj.Name, shape)
     if key not in memo:
-        memo[key] = _digest(_values(obj, shape=shape))
+        memo[key] = read_once(obj, "plan inputs, shape" if shape else "plan inputs",
+                              lambda o: _digest(_values(o, shape=shape)))
     return memo[key]
 
 
-def fingerprint(op: object, job: object, memo: Optional[dict] = None) -> str:
-    """The fingerprint of every input ``op``'s plans depend on (the module's
-    notes). ``memo``: the digests of the other objects read (the tool
-    controller, the model, ...), shared by the ops fingerprinted with it at
-    one time, so that each is read once."""
+def inputs(op: object, job: object, memo: Optional[dict] = None) -> list:
+    """The digests of the objects other than ``op`` its plans read (the module's
+    notes), each read again only after it changed (changes.py). ``memo``: the
+    digests already taken, shared by the ops fingerprinted with it at one time."""
     memo = {} if memo is None else memo
     tool_controller = getattr(op, "ToolController", None)
-    inputs = [
+    return [
         # a tool bit's Shape is its 3D view (rebuilt on opening): its properties are what plans read
         _input_digest(tool_controller, False, memo), _input_digest(getattr(tool_controller, "Tool", None), False, memo),
         [_input_digest(base, True, memo) for base, _subs in op.Base or []],
@@ -169,7 +180,13 @@ def fingerprint(op: object, job: object, memo: Optional[dict] = None) -> str:
         _input_digest(getattr(job, "Stock", None), True, memo),
         _input_digest(getattr(job, "SetupSheet", None), True, memo),
     ]
-    return _digest([FORMAT, engine_stamp(), _values(op, OP_INPUTS), inputs])
+
+
+def fingerprint(op: object, job: object, memo: Optional[dict] = None, shared: Optional[list] = None) -> str:
+    """The fingerprint of every input ``op``'s plans depend on (the module's
+    notes): its own input properties and ``shared`` (default: inputs(op, job, memo))."""
+    shared = inputs(op, job, memo) if shared is None else shared
+    return _digest([FORMAT, engine_stamp(), _values(op, OP_INPUTS), shared])
 
 
 # -- the saved plans ----------------------------------------------------------------
