@@ -15,6 +15,7 @@ import Part
 import pytest
 import test_groove_op as tg
 import test_plan_cache as tc
+from documents import reopened
 from parts import PROFILE, shaft_shape
 
 from freecad_groove.freecad import changes, toolbit
@@ -173,8 +174,48 @@ def test_a_recompute_reads_the_tool_bit_once_per_change(shop, monkeypatch):
     assert [c for c in op.Path.Commands if c.Name == "G1"]
     assert reads[0] > read  # read again: it changed
     assert not op.Proxy.mustExecute(op)
+    op.Width = 3.0
+    shop[0].recompute()  # FreeCAD 1.1 sets the bit's properties again once after it changed
     read = reads[0]
     for width in (3.5, 4.0):
         op.Width = width
         shop[0].recompute()
     assert reads[0] == read
+
+
+SAVED_CHANGES = [(_op_width, False), (_stock_shape, True), (_stock_shape, False), (_tool_bit_width, False),
+                 (_feed_from_the_tool_controller, False)]
+
+
+@pytest.mark.parametrize("change, recompute", SAVED_CHANGES,
+                         ids=["%s-%s" % (f.__name__.lstrip("_"), "recomputed" if r else "not recomputed")
+                              for f, r in SAVED_CHANGES])
+def test_a_document_saved_after_an_input_changed_reopens_with_the_change(shop, tmp_path, plan_calls, change,
+                                                                          recompute):
+    # the plans' fingerprint is taken when the document is saved: never of inputs changed since they were planned
+    doc = shop[0]
+    op = tc._grooves(shop)
+    if change is _tool_bit_width:
+        _grooving_tool_controller(op, shop)
+        doc.recompute()
+    name, before = op.Name, tc._post(op)
+    change(op, shop)
+    if recompute:
+        doc.recompute()
+    with reopened(doc, tmp_path / "a.FCStd") as doc2:
+        op2 = doc2.getObject(name)
+        text = tc._post(op2)
+        assert text != before
+        assert text == tc._fresh_post(op2)
+
+
+def test_a_document_saved_unchanged_reopens_without_planning(shop, tmp_path, plan_calls):
+    doc = shop[0]
+    op = tc._grooves(shop)
+    op.Width = 3.5
+    doc.recompute()  # planned at this recompute, not posted: the fingerprint is taken at the save
+    name, before = op.Name, tc._post(op)
+    with reopened(doc, tmp_path / "a.FCStd") as doc2:
+        calls = plan_calls[0]
+        assert tc._post(doc2.getObject(name)) == before
+        assert plan_calls[0] == calls

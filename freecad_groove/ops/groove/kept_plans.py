@@ -51,15 +51,29 @@ class KeptPlans:
     # -- the plans kept in the document (cache.py) ---------------------------
     def _keep_plans(self, obj: object, plans: list[GroovePlan]) -> None:
         """Keep ``plans`` for the posts, with what they were planned from
-        (cache.inputs) and the fingerprint of their inputs for the saved
-        document (none when it cannot be taken: then nothing is saved)."""
-        self._plans = plans
+        (cache.inputs); their fingerprint for the saved document is taken when
+        it is saved (_saved_fingerprint), not at every recompute."""
+        self._plans, self._planned_op, self._fingerprint = plans, obj, None
         try:
             self._inputs = cache.inputs(obj, self._parent_job(obj))
-            self._fingerprint = cache.fingerprint(obj, None, shared=self._inputs)
         except Exception as e:  # never a reason to fail the op: the next post plans again
-            self._inputs = self._fingerprint = None
+            self._inputs = None
             FreeCAD.Console.PrintLog("%s: plans not kept for the saved document: %s\n" % (obj.Label, e))
+
+    def _saved_fingerprint(self) -> Optional[str]:
+        """The fingerprint the kept plans are saved with (cache.fingerprint), taken once: the op's own
+        values now are those they were planned from while the op is untouched (any change of a property
+        touches it until the next recompute, which plans again), the other objects' while cache.inputs is
+        the same. None (nothing saved: the next post after reopening plans) when either changed."""
+        obj = getattr(self, "_planned_op", None)
+        if getattr(self, "_fingerprint", None) is None and obj is not None:
+            try:
+                if not ({"Touched", "Invalid"} & set(obj.State)) and not self.tool_changed(obj) \
+                        and not self._inputs_changed(obj):
+                    self._fingerprint = cache.fingerprint(obj, None, shared=self._inputs)
+            except Exception as e:  # an op FreeCAD deleted, a broken document: nothing saved
+                FreeCAD.Console.PrintLog("Groove: plans not saved: %s: %s\n" % (type(e).__name__, e))
+        return getattr(self, "_fingerprint", None)
 
     def _inputs_changed(self, obj: object) -> bool:
         """Whether an object the kept plans were planned from (cache.inputs: not the op itself) changed since
@@ -107,8 +121,9 @@ class KeptPlans:
         """The proxy's saved state: the op's plans with their fingerprint
         (cache.py), or what the opened document held when they were not
         needed yet."""
-        plans, stamp = getattr(self, "_plans", None), getattr(self, "_fingerprint", None)
-        if plans is not None and stamp and getattr(self, "error", None) is None:
+        plans = getattr(self, "_plans", None)
+        stamp = self._saved_fingerprint() if plans is not None and getattr(self, "error", None) is None else None
+        if stamp:
             return {"plans": cache.pack(plans, stamp)}
         saved = getattr(self, "_saved_plans", None)
         return {"plans": saved.text} if saved else None
