@@ -27,6 +27,8 @@ import FreeCAD
 Value = TypeVar("Value")
 
 _COUNTER = itertools.count(1)
+_last = [0]  # the counter at the last change of any object
+_unchanged: dict = {"at": None, "memo": {}}  # unchanged_memo()'s
 _changed: dict = {}  # (document name, object name) -> the counter at its last change
 _opened: dict = {}  # document name -> the counter when it was opened or created
 _read: dict = {}  # (document name, object name, what) -> (its change count then, the value)
@@ -36,21 +38,26 @@ def _key(obj: object) -> tuple:
     return (obj.Document.Name, obj.Name)
 
 
+def _next() -> int:
+    _last[0] = next(_COUNTER)
+    return _last[0]
+
+
 class _Observer:
     """Counts the changes of every document object (FreeCAD calls these slots)."""
 
     def slotChangedObject(self, obj, prop):  # noqa: N802 - FreeCAD's names
-        _changed[_key(obj)] = next(_COUNTER)
+        _changed[_key(obj)] = _next()
 
     def slotCreatedObject(self, obj):  # noqa: N802
-        _changed[_key(obj)] = next(_COUNTER)
+        _changed[_key(obj)] = _next()
 
     def slotDeletedObject(self, obj):  # noqa: N802
-        _changed[_key(obj)] = next(_COUNTER)
+        _changed[_key(obj)] = _next()
 
     def slotAppendDynamicProperty(self, obj, prop):  # noqa: N802 - a property added: PropertiesList changed
         if hasattr(obj, "Document") and hasattr(obj, "Name"):
-            _changed[_key(obj)] = next(_COUNTER)
+            _changed[_key(obj)] = _next()
 
     slotRemoveDynamicProperty = slotAppendDynamicProperty  # noqa: N815
 
@@ -62,7 +69,7 @@ class _Observer:
 
 
 def _start_over(document: str) -> None:
-    _opened[document] = next(_COUNTER)
+    _opened[document] = _next()
     for key in [key for key in _read if key[0] == document]:
         del _read[key]
 
@@ -87,3 +94,16 @@ def read_once(obj: object, what: str, read: Callable[[object], Value]) -> Value:
     value = read(obj)
     _read[key] = (count, value)
     return value
+
+
+def last_change() -> int:
+    """A number that moves at every change of any document object (the module's notes)."""
+    return _last[0]
+
+
+def unchanged_memo() -> dict:
+    """A dict of values read from documents, kept while no document object changed (emptied at the first
+    change after): a post reads the same tool controller, model and stock for each of its ops."""
+    if _unchanged["at"] != _last[0]:
+        _unchanged["at"], _unchanged["memo"] = _last[0], {}
+    return _unchanged["memo"]

@@ -29,6 +29,14 @@ def _feed_from_the_tool_controller(op, shop):
     op.ToolController.HorizFeed = "50 mm/min"  # the op's FeedPerRev is 0: the tool controller's HorizFeed counts
 
 
+def _op_spindle_speed(op, shop):
+    op.SpindleSpeed = 1234
+
+
+def _tool_controller_spindle_speed(op, shop):
+    op.ToolController.SpindleSpeed = 777  # the op's SpindleSpeed is 0: the tool controller's counts
+
+
 def _grooving_tool_controller(op, shop):
     op.ToolController = toolbit.make_grooving_tool_controller(shop[2], 2.5, 0.1)
 
@@ -66,6 +74,8 @@ def _stock_placement(op, shop):
 CHANGES = [(_op_width, True), (_op_width, False), (_part_shape, True), (_model_shape, False),
            (_stock_shape, True), (_stock_shape, False), (_stock_placement, True), (_stock_placement, False),
            (_feed_from_the_tool_controller, True), (_feed_from_the_tool_controller, False),
+           (_op_spindle_speed, True), (_op_spindle_speed, False), (_tool_controller_spindle_speed, True),
+           (_tool_controller_spindle_speed, False),
            (_grooving_tool_controller, True), (_grooving_tool_controller, False),
            (_tool_bit_width, True), (_tool_bit_width, False), (_tool_bit_corner_radius, True),
            (_tool_bit_corner_radius, False)]

@@ -96,27 +96,42 @@ def engine_stamp() -> str:
 
 
 def _canonical(value: object) -> object:
-    """A property value as JSON data that changes whenever the value does."""
-    if value is None or isinstance(value, (bool, int, str)):
-        return value
-    if isinstance(value, float):
-        return repr(value)
-    if isinstance(value, (list, tuple)):
-        return [_canonical(item) for item in value]
-    if isinstance(value, dict):
-        return [[str(k), _canonical(v)] for k, v in sorted(value.items(), key=lambda item: str(item[0]))]
-    if hasattr(value, "Value") and hasattr(value, "Unit"):  # a Quantity
-        return ["Q", repr(value.Value), str(value.Unit)]
-    if hasattr(value, "Name") and hasattr(value, "Document"):  # a linked object: its own values count elsewhere
-        return ["O", value.Name]
-    if hasattr(value, "Base") and hasattr(value, "Rotation"):  # a Placement
-        return ["P", _canonical(tuple(value.Base)), _canonical(tuple(value.Rotation.Q))]
-    if hasattr(value, "x") and hasattr(value, "y") and hasattr(value, "z"):  # a Vector
-        return ["V", repr(value.x), repr(value.y), repr(value.z)]
+    """A property value as JSON data that changes whenever the value does (its kind found once per type)."""
+    kind = _KINDS.get(type(value))
+    if kind is None:
+        kind = _KINDS[type(value)] = _kind_of(value)
+    return kind(value)
+
+
+def _repr_value(value: object) -> list:
     text = repr(value)
     if " at 0x" in text:  # a repr naming an address (a Material) changes with every session: not a planning input
         return [type(value).__name__]
     return [type(value).__name__, text]
+
+
+def _kind_of(value: object):
+    """How _canonical writes a value of ``value``'s type."""
+    if value is None or isinstance(value, (bool, int, str)):
+        return lambda v: v
+    if isinstance(value, float):
+        return repr
+    if isinstance(value, (list, tuple)):
+        return lambda v: [_canonical(item) for item in v]
+    if isinstance(value, dict):
+        return lambda v: [[str(k), _canonical(x)] for k, x in sorted(v.items(), key=lambda item: str(item[0]))]
+    if hasattr(value, "Value") and hasattr(value, "Unit"):  # a Quantity
+        return lambda v: ["Q", repr(v.Value), str(v.Unit)]
+    if hasattr(value, "Name") and hasattr(value, "Document"):  # a linked object: its own values count elsewhere
+        return lambda v: ["O", v.Name]
+    if hasattr(value, "Base") and hasattr(value, "Rotation"):  # a Placement
+        return lambda v: ["P", _canonical(tuple(v.Base)), _canonical(tuple(v.Rotation.Q))]
+    if hasattr(value, "x") and hasattr(value, "y") and hasattr(value, "z"):  # a Vector
+        return lambda v: ["V", repr(v.x), repr(v.y), repr(v.z)]
+    return _repr_value
+
+
+_KINDS: dict = {}  # type -> _kind_of's function
 
 
 def _shape_digest(shape: object) -> Optional[str]:
@@ -159,11 +174,12 @@ def _input_digest(obj: object, shape: bool, memo: dict) -> Optional[str]:
     once per change of ``obj`` (changes.read_once)."""
     if obj is None:
         return None
-    key = (getattr(getattr(obj, "Document", None), "Name", None), obj.Name, shape)
-    if key not in memo:
-        memo[key] = read_once(obj, "plan inputs, shape" if shape else "plan inputs",
-                              lambda o: _digest(_values(o, shape=shape)))
-    return memo[key]
+    key = (id(obj), shape)  # the object is kept with its digest: no other object gets its id meanwhile
+    kept = memo.get(key)
+    if kept is None or kept[0] is not obj:
+        kept = memo[key] = (obj, read_once(obj, "plan inputs, shape" if shape else "plan inputs",
+                                           lambda o: _digest(_values(o, shape=shape))))
+    return kept[1]
 
 
 def inputs(op: object, job: object, memo: Optional[dict] = None) -> list:

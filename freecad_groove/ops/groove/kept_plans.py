@@ -15,7 +15,9 @@ from typing import Optional
 
 import FreeCAD
 
+from ...freecad import changes
 from . import cache
+from .cutting import CuttingData, cutting_data
 from .plan import GroovePlan
 
 
@@ -33,8 +35,7 @@ class KeptPlans:
         while the op stays untouched: a post after reopening a document whose
         saved plans no longer match, or that saved none, plans once, not at
         every post."""
-        untouched = getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)) \
-            and not self.tool_changed(obj)
+        untouched = self._untouched(obj)
         if untouched:
             plans = getattr(self, "_plans", None)
             if plans is not None and not self._inputs_changed(obj):
@@ -48,12 +49,32 @@ class KeptPlans:
             self._keep_plans(obj, plans)
         return plans
 
+    def current_cutting(self, obj: object) -> CuttingData:
+        """cutting_data(obj) (the posts ask twice an op), kept with the plans while they are current: it reads
+        the op and its tool controller's feeds and speeds, which tool_changed and cache.inputs watch."""
+        kept = getattr(self, "_cutting", None)
+        if kept is not None and self._plans_current(obj):
+            return kept
+        cutting = cutting_data(obj)
+        if self._plans_current(obj):
+            self._cutting = cutting
+        return cutting
+
+    def _untouched(self, obj: object) -> bool:
+        """The op without an error, untouched since its last recompute, its tool the same."""
+        return getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)) \
+            and not self.tool_changed(obj)
+
+    def _plans_current(self, obj: object) -> bool:
+        """Whether the kept plans are what plan(obj) would make now (current_plan's checks)."""
+        return getattr(self, "_plans", None) is not None and self._untouched(obj) and not self._inputs_changed(obj)
+
     # -- the plans kept in the document (cache.py) ---------------------------
-    def _keep_plans(self, obj: object, plans: list[GroovePlan]) -> None:
-        """Keep ``plans`` for the posts, with what they were planned from
-        (cache.inputs); their fingerprint for the saved document is taken when
-        it is saved (_saved_fingerprint), not at every recompute."""
-        self._plans, self._planned_op, self._fingerprint = plans, obj, None
+    def _keep_plans(self, obj: object, plans: list[GroovePlan], cutting: Optional[CuttingData] = None) -> None:
+        """Keep ``plans`` (and the op's ``cutting`` data when known) for the posts, with what they were planned
+        from (cache.inputs); their fingerprint for the saved document is taken when it is saved
+        (_saved_fingerprint), not at every recompute."""
+        self._plans, self._planned_op, self._fingerprint, self._cutting = plans, obj, None, cutting
         try:
             self._inputs = cache.inputs(obj, self._parent_job(obj))
         except Exception as e:  # never a reason to fail the op: the next post plans again
@@ -77,11 +98,19 @@ class KeptPlans:
 
     def _inputs_changed(self, obj: object) -> bool:
         """Whether an object the kept plans were planned from (cache.inputs: not the op itself) changed since
-        (a Job's stock changed recomputes no op); each read again only after it changed (changes.py)."""
+        (a Job's stock changed recomputes no op); each read again only after it changed, and not at all while
+        no document object changed since the last check (changes.py: the next ops of a post)."""
+        if getattr(self, "_inputs", None) is None:
+            return True
+        if getattr(self, "_inputs_checked", None) == changes.last_change():
+            return False
         try:
-            return getattr(self, "_inputs", None) is None or cache.inputs(obj, self._parent_job(obj)) != self._inputs
+            changed = cache.inputs(obj, self._parent_job(obj), changes.unchanged_memo()) != self._inputs
         except Exception:  # plan again, which says what is wrong
             return True
+        if not changed:
+            self._inputs_checked = changes.last_change()
+        return changed
 
     def _restored_plans(self, obj: object) -> Optional[list[GroovePlan]]:
         """The plans the opened document saved, when their fingerprint is that
@@ -96,7 +125,7 @@ class KeptPlans:
             self._saved_plans = None
             FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
             return None
-        memo: dict = {}  # cache.fingerprint's digests of the shared inputs
+        memo = changes.unchanged_memo()  # the digests of the shared inputs, read once
         self._restore(obj, job, memo)
         for other in getattr(getattr(job, "Operations", None), "Group", None) or []:
             proxy = getattr(other, "Proxy", None)
@@ -113,7 +142,8 @@ class KeptPlans:
             shared = cache.inputs(obj, job, memo)
             stamp = cache.fingerprint(obj, job, shared=shared)
             if stamp == saved.fingerprint:
-                self._plans, self._fingerprint, self._inputs = saved.plans, stamp, shared
+                self._plans, self._fingerprint, self._inputs, self._cutting = saved.plans, stamp, shared, None
+                self._inputs_checked = changes.last_change()  # the next current_plan: nothing to read again
         except Exception as e:  # plan again
             FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
 

@@ -141,7 +141,7 @@ class ObjectGroove(KeptPlans, AddonOp):
         self.commandlist.extend(self.commands(obj, plans, cutting))
         if obj.FeedsAndSpeeds != cutting.describe():
             obj.FeedsAndSpeeds = cutting.describe()
-        self._keep_plans(obj, plans)
+        self._keep_plans(obj, plans, cutting)
         for plan in plans:  # what the cycles cannot do as programmed: once per recompute
             for text in plan.warning_texts:
                 FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, text))
