@@ -44,28 +44,36 @@ def _next() -> int:
 
 
 class _Observer:
-    """Counts the changes of every document object (FreeCAD calls these slots)."""
+    """Counts the changes of every document object (FreeCAD calls these slots; one that raised would print a
+    traceback in the report view at every change: none does)."""
 
     def slotChangedObject(self, obj, prop):  # noqa: N802 - FreeCAD's names
-        _changed[_key(obj)] = _next()
+        _changed_object(obj)
 
     def slotCreatedObject(self, obj):  # noqa: N802
-        _changed[_key(obj)] = _next()
+        _changed_object(obj)
 
     def slotDeletedObject(self, obj):  # noqa: N802
-        _changed[_key(obj)] = _next()
+        _changed_object(obj)
 
     def slotAppendDynamicProperty(self, obj, prop):  # noqa: N802 - a property added: PropertiesList changed
-        if hasattr(obj, "Document") and hasattr(obj, "Name"):
-            _changed[_key(obj)] = _next()
+        _changed_object(obj)
 
     slotRemoveDynamicProperty = slotAppendDynamicProperty  # noqa: N815
 
     def slotCreatedDocument(self, doc):  # noqa: N802
-        _start_over(doc.Name)
+        _start_over(getattr(doc, "Name", None))
 
     # undo and redo set properties (signalled too): all read again all the same
     slotDeletedDocument = slotUndoDocument = slotRedoDocument = slotCreatedDocument  # noqa: N815
+
+
+def _changed_object(obj: object) -> None:
+    count = _next()
+    try:
+        _changed[_key(obj)] = count
+    except Exception:  # not a document object (a view provider's property): nothing of it is read here
+        pass
 
 
 def _start_over(document: str) -> None:

@@ -35,15 +35,14 @@ class KeptPlans:
         while the op stays untouched: a post after reopening a document whose
         saved plans no longer match, or that saved none, plans once, not at
         every post."""
+        plans = getattr(self, "_plans", None)
+        if plans is not None and self._plans_current(obj):
+            return plans
         untouched = self._untouched(obj)
-        if untouched:
-            plans = getattr(self, "_plans", None)
-            if plans is not None and not self._inputs_changed(obj):
+        if untouched and plans is None:
+            plans = self._restored_plans(obj)
+            if plans is not None:
                 return plans
-            if plans is None:
-                plans = self._restored_plans(obj)
-                if plans is not None:
-                    return plans
         plans = self.plan(obj)
         if untouched:
             self._keep_plans(obj, plans)
@@ -66,8 +65,16 @@ class KeptPlans:
             and not self.tool_changed(obj)
 
     def _plans_current(self, obj: object) -> bool:
-        """Whether the kept plans are what plan(obj) would make now (current_plan's checks)."""
-        return getattr(self, "_plans", None) is not None and self._untouched(obj) and not self._inputs_changed(obj)
+        """Whether the kept plans are what plan(obj) would make now: the op untouched, its tool the same, the
+        objects it reads the same; not checked again while no document object changed since (changes.py)."""
+        if getattr(self, "_plans", None) is None:
+            return False
+        now = changes.last_change()
+        if getattr(self, "_current_at", None) == now:
+            return True
+        current = self._untouched(obj) and not self._inputs_changed(obj)
+        self._current_at = now if current else None
+        return current
 
     # -- the plans kept in the document (cache.py) ---------------------------
     def _keep_plans(self, obj: object, plans: list[GroovePlan], cutting: Optional[CuttingData] = None) -> None:
@@ -75,6 +82,7 @@ class KeptPlans:
         from (cache.inputs); their fingerprint for the saved document is taken when it is saved
         (_saved_fingerprint), not at every recompute."""
         self._plans, self._planned_op, self._fingerprint, self._cutting = plans, obj, None, cutting
+        self._current_at = None
         try:
             self._inputs = cache.inputs(obj, self._parent_job(obj))
         except Exception as e:  # never a reason to fail the op: the next post plans again
@@ -143,6 +151,7 @@ class KeptPlans:
             stamp = cache.fingerprint(obj, job, shared=shared)
             if stamp == saved.fingerprint:
                 self._plans, self._fingerprint, self._inputs, self._cutting = saved.plans, stamp, shared, None
+                self._current_at = None
                 self._inputs_checked = changes.last_change()  # the next current_plan: nothing to read again
         except Exception as e:  # plan again
             FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
