@@ -5,8 +5,10 @@ Planning (plan.py: the engine's expansion and warnings, the link
 rapids checked against the model) is the costly part of a post. The op keeps
 its plans after a recompute; after reopening a document they are gone, and
 every post would plan every op again. So the op's proxy saves them (dumps:
-what a post reads of each GroovePlan) with a fingerprint taken when they were
-planned, and after reopening reuses them only when the fingerprint of the
+what a post reads of each GroovePlan) with a fingerprint taken when the
+document is saved (kept_plans.py: only while the op is untouched since it
+planned them and the objects it read are the same; else nothing is saved),
+and after reopening reuses them only when the fingerprint of the
 document's inputs is the same; otherwise the op plans again (nothing stale is
 trusted). The fingerprint covers every input plan() reads:
 
@@ -22,6 +24,12 @@ trusted). The fingerprint covers every input plan() reads:
   by it, and a digest of each Shape's BREP text: every face and Placement)
   and its Stock and SetupSheet.
 
+What the op reads of the other objects (inputs(): the tool controller, the
+bit, Base, the model, the stock, the setup sheet) is digested once per change
+of each (freecad/changes.py; a shape's BREP digest once per shape,
+freecad/shape_memo.py): in the session, the kept plans are checked against it
+before every post (a Job's stock changed recomputes no op).
+
 A restored plan has no ``geometry`` (GroovePlan.geometry: the preview's,
 which plans afresh); the rest is what the plan held when it was saved.
 
@@ -30,7 +38,7 @@ reads its saved plans as the document opens (read(), in its loads: about
 1.4 ms per 100 grooves); the first post that needs an op's plans checks the
 fingerprints of every Groove op of its Job at once, reading each input they
 share (tool controller, model, stock: one BREP digest each) once (the memo
-of fingerprint()). The ops whose fingerprint matches take their saved plans,
+of inputs()). The ops whose fingerprint matches take their saved plans,
 as if recomputed then; the others plan again at their own post, once: the
 plans are kept with their fingerprint for the next posts (and the next
 save) while the op stays untouched (ObjectGroove.current_plan; an input
@@ -38,7 +46,7 @@ changed while the document was closed, a document that saved none). So the
 first post after reopening costs a fingerprint per op more than a post
 before saving (about 0.2 ms, the first op's 0.7 ms).
 
-FreeCAD layer: duck-typed FreeCAD objects, no FreeCAD import.
+FreeCAD layer: duck-typed FreeCAD objects (FreeCAD itself through changes.py and shape_memo.py).
 """
 
 import base64
