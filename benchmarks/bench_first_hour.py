@@ -231,7 +231,8 @@ def _bench():
     import FreeCAD
     import FreeCADGui
 
-    checkout = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    # the guard runs a copy of this file from its shared folder: the checkout is the mounted add-on
+    checkout = os.environ.get("FREECAD_GROOVE_CHECKOUT", os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     phase = os.environ.get("FREECAD_GROOVE_BENCH_PHASE", "session")
     if phase == "session":  # the GUI tests' helpers (which import the add-on)
         for folder in (checkout, os.path.join(checkout, "tests", "freecad_gui"),

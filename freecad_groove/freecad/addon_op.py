@@ -24,6 +24,7 @@ import Path
 import Path.Op.Base as PathOp
 
 from ..ops import registry
+from .changes import read_once
 
 
 def comment_body(text: str) -> str:
@@ -71,14 +72,24 @@ TOOL_CONTROLLER_VALUES = ("ToolNumber", "HorizFeed", "VertFeed", "SpindleSpeed",
 
 def tool_signature(obj: object) -> tuple:
     """What the op ``obj`` reads of its tool controller and tool bit, to compare (FreeCAD does not recompute an
-    op when only its tool bit changed): their names, the tool controller's feeds and speeds, the bit's lengths."""
+    op when only its tool bit changed): their names, the tool controller's feeds and speeds, the bit's lengths;
+    each object read again only after it changed (changes.read_once: FreeCAD asks at every recompute)."""
     tc = getattr(obj, "ToolController", None)
     if tc is None:
         return (None,)
-    tool = getattr(tc, "Tool", None)
-    values = [str(getattr(tc, name, None)) for name in TOOL_CONTROLLER_VALUES]
+    tc_values, tool = read_once(tc, "tool signature", _tool_controller_values)
     if tool is None:
-        return (tc.Name, None, tuple(values))
+        return (tc.Name, None, tc_values)
+    return (tc.Name, tool.Name, tc_values, read_once(tool, "tool signature", _tool_lengths))
+
+
+def _tool_controller_values(tc: object) -> tuple:
+    """(the tool controller's TOOL_CONTROLLER_VALUES as text, its tool bit)."""
+    return tuple(str(getattr(tc, name, None)) for name in TOOL_CONTROLLER_VALUES), getattr(tc, "Tool", None)
+
+
+def _tool_lengths(tool: object) -> tuple:
+    """((name, length), ...) of every length of the tool bit ``tool``."""
     lengths = []
     for name in sorted(getattr(tool, "PropertiesList", ())):
         try:
@@ -87,7 +98,7 @@ def tool_signature(obj: object) -> tuple:
             continue
         if hasattr(value, "Value") and hasattr(value, "Unit"):
             lengths.append((name, repr(float(value.Value))))
-    return (tc.Name, tool.Name, tuple(values), tuple(lengths))
+    return tuple(lengths)
 
 
 class ToolError(ValueError):
@@ -96,12 +107,27 @@ class ToolError(ValueError):
     properties = ("ToolController",)
 
 
+def parent_job(obj: object) -> object:
+    """The Job ``obj`` (an op, or a Job) is in, None when in none: CAM's PathUtils.findParentJob without its
+    Path.Log.track(), which takes a stack trace at every call (0.2-0.7 ms; a recompute asked several times)."""
+    import Path.Main.Job as PathJob
+
+    if isinstance(getattr(obj, "Proxy", None), PathJob.ObjectJob):
+        return obj
+    for parent in obj.InList:
+        if isinstance(getattr(parent, "Proxy", None), PathJob.ObjectJob):
+            return parent
+        if parent.TypeId in ("Path::FeaturePython", "Path::FeatureCompoundPython", "App::DocumentObjectGroup"):
+            job = parent_job(parent)
+            if job is not None:
+                return job
+    return None
+
+
 def cannot_run(obj: object) -> Optional[ValueError]:
     """Why CAM's own execute would return before the op's opExecute, keeping the old Path (None: it runs it):
     a Job whose model is empty (its clones deleted), or a tool problem (tool_problem)."""
-    import PathScripts.PathUtils as PathUtils
-
-    job = PathUtils.findParentJob(obj)
+    job = parent_job(obj)
     if job is not None and not job.Model.Group:
         return ModelGoneError("Base: the Job %s has no model left (deleted?): nothing to cut" % job.Label)
     return tool_problem(obj)
@@ -237,12 +263,12 @@ class AddonOp(PathOp.ObjectOp):
     def mustExecute(self, obj: object) -> bool:
         """FreeCAD asks on every recompute: the op recomputes when its tool controller or tool bit changed since
         it last ran (a tool bit's Diameter set to 0, a tool controller losing its tool)."""
-        seen = getattr(self, "_tool_seen", None)
-        return seen is not None and seen != tool_signature(obj)
+        return self.tool_changed(obj)
 
     def tool_changed(self, obj: object) -> bool:
         """Whether the op's tool controller or tool bit changed since it last ran (the posts then plan again)."""
-        return self.mustExecute(obj)
+        seen = getattr(self, "_tool_seen", None)
+        return seen is not None and seen != tool_signature(obj)
 
     def report_error(self, obj: object, error: Exception) -> None:
         """An op that cannot cut: one error line "<Label>: <message>" in the

@@ -40,9 +40,11 @@ PECKING_PROPERTIES = {"I": "Infeed", "K": "Infeed", "P": "Infeed", "Q": "Infeed"
 
 
 def groove_cutting(op: Any) -> CuttingData:
-    """The Groove op's feeds and speeds (cutting.py); PostError naming the op property at fault."""
+    """The Groove op's feeds and speeds (cutting.py; kept by the op with its plans while they are current);
+    PostError naming the op property at fault."""
+    current = getattr(getattr(op, "Proxy", None), "current_cutting", None)
     try:
-        return cutting_data(op)
+        return current(op) if current is not None else cutting_data(op)
     except GrooveInputError as exc:
         raise PostError(str(exc), op=label_of(op)) from None
 

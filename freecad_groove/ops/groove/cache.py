@@ -5,8 +5,10 @@ Planning (plan.py: the engine's expansion and warnings, the link
 rapids checked against the model) is the costly part of a post. The op keeps
 its plans after a recompute; after reopening a document they are gone, and
 every post would plan every op again. So the op's proxy saves them (dumps:
-what a post reads of each GroovePlan) with a fingerprint taken when they were
-planned, and after reopening reuses them only when the fingerprint of the
+what a post reads of each GroovePlan) with a fingerprint taken when the
+document is saved (kept_plans.py: only while the op is untouched since it
+planned them and the objects it read are the same; else nothing is saved),
+and after reopening reuses them only when the fingerprint of the
 document's inputs is the same; otherwise the op plans again (nothing stale is
 trusted). The fingerprint covers every input plan() reads:
 
@@ -22,6 +24,12 @@ trusted). The fingerprint covers every input plan() reads:
   by it, and a digest of each Shape's BREP text: every face and Placement)
   and its Stock and SetupSheet.
 
+What the op reads of the other objects (inputs(): the tool controller, the
+bit, Base, the model, the stock, the setup sheet) is digested once per change
+of each (freecad/changes.py; a shape's BREP digest once per shape,
+freecad/shape_memo.py): in the session, the kept plans are checked against it
+before every post (a Job's stock changed recomputes no op).
+
 A restored plan has no ``geometry`` (GroovePlan.geometry: the preview's,
 which plans afresh); the rest is what the plan held when it was saved.
 
@@ -30,7 +38,7 @@ reads its saved plans as the document opens (read(), in its loads: about
 1.4 ms per 100 grooves); the first post that needs an op's plans checks the
 fingerprints of every Groove op of its Job at once, reading each input they
 share (tool controller, model, stock: one BREP digest each) once (the memo
-of fingerprint()). The ops whose fingerprint matches take their saved plans,
+of inputs()). The ops whose fingerprint matches take their saved plans,
 as if recomputed then; the others plan again at their own post, once: the
 plans are kept with their fingerprint for the next posts (and the next
 save) while the op stays untouched (ObjectGroove.current_plan; an input
@@ -38,7 +46,7 @@ changed while the document was closed, a document that saved none). So the
 first post after reopening costs a fingerprint per op more than a post
 before saving (about 0.2 ms, the first op's 0.7 ms).
 
-FreeCAD layer: duck-typed FreeCAD objects, no FreeCAD import.
+FreeCAD layer: duck-typed FreeCAD objects (FreeCAD itself through changes.py and shape_memo.py).
 """
 
 import base64
@@ -58,7 +66,9 @@ from ...engine import GroovingTool, MachineState, Settings
 from ...engine.cycles.cycle93 import Cycle93
 from ...engine.moves import Move
 from ...engine.warnings import CycleWarning
+from ...freecad.changes import read_once
 from ...freecad.faces import GrooveFace
+from ...freecad.shape_memo import ShapeMemo
 from .links import LinkMove
 from .plan import GroovePlan
 from .properties import DERIVED, PROPERTIES
@@ -94,36 +104,59 @@ def engine_stamp() -> str:
 
 
 def _canonical(value: object) -> object:
-    """A property value as JSON data that changes whenever the value does."""
-    if value is None or isinstance(value, (bool, int, str)):
-        return value
-    if isinstance(value, float):
-        return repr(value)
-    if isinstance(value, (list, tuple)):
-        return [_canonical(item) for item in value]
-    if isinstance(value, dict):
-        return [[str(k), _canonical(v)] for k, v in sorted(value.items(), key=lambda item: str(item[0]))]
-    if hasattr(value, "Value") and hasattr(value, "Unit"):  # a Quantity
-        return ["Q", repr(value.Value), str(value.Unit)]
-    if hasattr(value, "Name") and hasattr(value, "Document"):  # a linked object: its own values count elsewhere
-        return ["O", value.Name]
-    if hasattr(value, "Base") and hasattr(value, "Rotation"):  # a Placement
-        return ["P", _canonical(tuple(value.Base)), _canonical(tuple(value.Rotation.Q))]
-    if hasattr(value, "x") and hasattr(value, "y") and hasattr(value, "z"):  # a Vector
-        return ["V", repr(value.x), repr(value.y), repr(value.z)]
+    """A property value as JSON data that changes whenever the value does (its kind found once per type)."""
+    kind = _KINDS.get(type(value))
+    if kind is None:
+        kind = _KINDS[type(value)] = _kind_of(value)
+    return kind(value)
+
+
+def _repr_value(value: object) -> list:
     text = repr(value)
     if " at 0x" in text:  # a repr naming an address (a Material) changes with every session: not a planning input
         return [type(value).__name__]
     return [type(value).__name__, text]
 
 
+def _kind_of(value: object):
+    """How _canonical writes a value of ``value``'s type."""
+    if value is None or isinstance(value, (bool, int, str)):
+        return lambda v: v
+    if isinstance(value, float):
+        return repr
+    if isinstance(value, (list, tuple)):
+        return lambda v: [_canonical(item) for item in v]
+    if isinstance(value, dict):
+        return lambda v: [[str(k), _canonical(x)] for k, x in sorted(v.items(), key=lambda item: str(item[0]))]
+    if hasattr(value, "Value") and hasattr(value, "Unit"):  # a Quantity
+        return lambda v: ["Q", repr(v.Value), str(v.Unit)]
+    if hasattr(value, "Name") and hasattr(value, "Document"):  # a linked object: its own values count elsewhere
+        return lambda v: ["O", v.Name]
+    if hasattr(value, "Base") and hasattr(value, "Rotation"):  # a Placement
+        return lambda v: ["P", _canonical(tuple(v.Base)), _canonical(tuple(v.Rotation.Q))]
+    if hasattr(value, "x") and hasattr(value, "y") and hasattr(value, "z"):  # a Vector
+        return lambda v: ["V", repr(v.x), repr(v.y), repr(v.z)]
+    return _repr_value
+
+
+_KINDS: dict = {}  # type -> _kind_of's function
+
+
 def _shape_digest(shape: object) -> Optional[str]:
     """A digest of a Part shape's BREP text (its geometry, topology and
-    placement), less what a save and reopen changes (BREP_FLAGS, BREP_NEGATIVE_ZERO)."""
+    placement), less what a save and reopen changes (BREP_FLAGS, BREP_NEGATIVE_ZERO);
+    taken once per shape (shape_memo.py: the model's and the stock's are read at every recompute)."""
     if shape is None or shape.isNull():
         return None
+    return _SHAPE_DIGEST(shape)
+
+
+def _brep_digest(shape: object) -> str:
     text = BREP_NEGATIVE_ZERO.sub("0", BREP_FLAGS.sub("", shape.exportBrepToString()))
     return hashlib.sha256(text.encode()).hexdigest()
+
+
+_SHAPE_DIGEST = ShapeMemo(_brep_digest)
 
 
 def _values(obj: object, names: Optional[tuple] = None, shape: bool = True) -> object:
@@ -145,23 +178,25 @@ def _digest(data: object) -> str:
 
 
 def _input_digest(obj: object, shape: bool, memo: dict) -> Optional[str]:
-    """The digest of _values(obj, shape=shape), taken once per ``memo``."""
+    """The digest of _values(obj, shape=shape), taken once per ``memo`` and
+    once per change of ``obj`` (changes.read_once)."""
     if obj is None:
         return None
-    key = (getattr(getattr(obj, "Document", None), "Name", None), obj.Name, shape)
-    if key not in memo:
-        memo[key] = _digest(_values(obj, shape=shape))
-    return memo[key]
+    key = (id(obj), shape)  # the object is kept with its digest: no other object gets its id meanwhile
+    kept = memo.get(key)
+    if kept is None or kept[0] is not obj:
+        kept = memo[key] = (obj, read_once(obj, "plan inputs, shape" if shape else "plan inputs",
+                                           lambda o: _digest(_values(o, shape=shape))))
+    return kept[1]
 
 
-def fingerprint(op: object, job: object, memo: Optional[dict] = None) -> str:
-    """The fingerprint of every input ``op``'s plans depend on (the module's
-    notes). ``memo``: the digests of the other objects read (the tool
-    controller, the model, ...), shared by the ops fingerprinted with it at
-    one time, so that each is read once."""
+def inputs(op: object, job: object, memo: Optional[dict] = None) -> list:
+    """The digests of the objects other than ``op`` its plans read (the module's
+    notes), each read again only after it changed (changes.py). ``memo``: the
+    digests already taken, shared by the ops fingerprinted with it at one time."""
     memo = {} if memo is None else memo
     tool_controller = getattr(op, "ToolController", None)
-    inputs = [
+    return [
         # a tool bit's Shape is its 3D view (rebuilt on opening): its properties are what plans read
         _input_digest(tool_controller, False, memo), _input_digest(getattr(tool_controller, "Tool", None), False, memo),
         [_input_digest(base, True, memo) for base, _subs in op.Base or []],
@@ -169,7 +204,13 @@ def fingerprint(op: object, job: object, memo: Optional[dict] = None) -> str:
         _input_digest(getattr(job, "Stock", None), True, memo),
         _input_digest(getattr(job, "SetupSheet", None), True, memo),
     ]
-    return _digest([FORMAT, engine_stamp(), _values(op, OP_INPUTS), inputs])
+
+
+def fingerprint(op: object, job: object, memo: Optional[dict] = None, shared: Optional[list] = None) -> str:
+    """The fingerprint of every input ``op``'s plans depend on (the module's
+    notes): its own input properties and ``shared`` (default: inputs(op, job, memo))."""
+    shared = inputs(op, job, memo) if shared is None else shared
+    return _digest([FORMAT, engine_stamp(), _values(op, OP_INPUTS), shared])
 
 
 # -- the saved plans ----------------------------------------------------------------

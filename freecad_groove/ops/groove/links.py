@@ -24,6 +24,7 @@ import FreeCAD
 import Part
 
 from ...freecad.faces import edge_curve
+from ...freecad.shape_memo import ShapeMemo
 
 TESSELLATION = 0.01  # mm: deflection used to find the model's largest radius
 HIT_LENGTH = 1e-6  # mm of a rapid inside a solid that counts as a collision
@@ -65,10 +66,16 @@ def _edge_radius(edge: object) -> float:
 
 
 def largest_radius(shape: object) -> Optional[float]:
-    """Largest distance of a Part shape from the Z axis (None: an empty shape).
-    Exact for turned parts: on planes and on cylinders and cones about Z the
-    distance peaks on the boundary; other faces are tessellated (plus the
-    tessellation's deflection)."""
+    """Largest distance of a Part shape from the Z axis (None: an empty shape),
+    computed once per shape (shape_memo.py: every recompute and preview reads
+    the model's and the stock's, which rarely change)."""
+    return _LARGEST_RADIUS(shape)
+
+
+def _largest_radius(shape: object) -> Optional[float]:
+    """largest_radius, computed. Exact for turned parts: on planes and on
+    cylinders and cones about Z the distance peaks on the boundary; other faces
+    are tessellated (plus the tessellation's deflection)."""
     radii = [math.hypot(vertex.Point.x, vertex.Point.y) for vertex in shape.Vertexes]
     radii += [_edge_radius(edge) for edge in shape.Edges]
     for face in shape.Faces:
@@ -79,6 +86,9 @@ def largest_radius(shape: object) -> Optional[float]:
         if points:
             radii.append(max(math.hypot(p.x, p.y) for p in points) + TESSELLATION)
     return max(radii) if radii else None
+
+
+_LARGEST_RADIUS = ShapeMemo(_largest_radius)
 
 
 class _LinkWriter:

@@ -67,7 +67,6 @@ are typed ``object`` below.
 from typing import Optional
 
 import FreeCAD
-import PathScripts.PathUtils as PathUtils
 
 from ...engine import GroovingTool, Settings
 from ...engine.cycles.cycle93 import DEFAULT_VRT_MM, Cycle93
@@ -79,13 +78,14 @@ from ...freecad.addon_op import (  # noqa: F401 - its API
     document_object,
     modelled_part,
     op_error,
+    parent_job,
 )
 from ...freecad.bounds import first_problem
 from ...freecad.faces import GrooveFace, analyse_face, element_name
 from ...freecad.units import feed_mm_per_min, length_mm
-from . import cache
 from .bounds import TOOL_BOUNDS
 from .cutting import CuttingData, cutting_data
+from .kept_plans import KeptPlans
 from .links import SafeEnvelope
 from .model import MODEL_VALUES, ModelGroove, not_overridden, read_picked_groove, with_model_hint
 from .path import path_commands
@@ -111,7 +111,7 @@ TYP_RIGHT = {(True, True): 5, (True, False): 7, (False, True): 6, (False, False)
 TYP_CHR = 10  # added to TYP when chamfers are measured along their legs (CHR)
 
 
-class ObjectGroove(AddonOp):
+class ObjectGroove(KeptPlans, AddonOp):
     """Proxy of a Groove operation (Path::FeaturePython)."""
 
     DECLARED_PROPERTIES = PROPERTIES
@@ -141,7 +141,7 @@ class ObjectGroove(AddonOp):
         self.commandlist.extend(self.commands(obj, plans, cutting))
         if obj.FeedsAndSpeeds != cutting.describe():
             obj.FeedsAndSpeeds = cutting.describe()
-        self._keep_plans(obj, plans)
+        self._keep_plans(obj, plans, cutting)
         for plan in plans:  # what the cycles cannot do as programmed: once per recompute
             for text in plan.warning_texts:
                 FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, text))
@@ -154,91 +154,6 @@ class ObjectGroove(AddonOp):
         if named and not str(error).startswith(named):  # the property to fix first, as the posts say it
             error = GrooveInputError("%s: %s" % (named, error), error_properties(error))
         self.report_error(obj, error)
-
-    def current_plan(self, obj: object) -> list[GroovePlan]:
-        """plan(obj) as the last recompute made it, while nothing has touched
-        the op since (planning checks every link rapid against the model, the
-        costly part of posting); after reopening the document, the plans it
-        saved while their fingerprint still matches (cache.py); otherwise
-        a fresh plan, kept (with its fingerprint, for the saved document too)
-        while the op stays untouched: a post after reopening a document whose
-        saved plans no longer match, or that saved none, plans once, not at
-        every post."""
-        untouched = getattr(self, "error", None) is None and not ({"Touched", "Invalid"} & set(obj.State)) \
-            and not self.tool_changed(obj)
-        if untouched:
-            plans = getattr(self, "_plans", None)
-            if plans is None:
-                plans = self._restored_plans(obj)
-            if plans is not None:
-                return plans
-        plans = self.plan(obj)
-        if untouched:
-            self._keep_plans(obj, plans)
-        return plans
-
-    # -- the plans kept in the document (cache.py) ---------------------------
-    def _keep_plans(self, obj: object, plans: list[GroovePlan]) -> None:
-        """Keep ``plans`` for the posts, with the fingerprint of their inputs
-        for the saved document (none when it cannot be taken: then nothing is saved)."""
-        self._plans = plans
-        try:
-            self._fingerprint = cache.fingerprint(obj, self._parent_job(obj))
-        except Exception as e:  # never a reason to fail the op: the next post after reopening plans again
-            self._fingerprint = None
-            FreeCAD.Console.PrintLog("%s: plans not kept for the saved document: %s\n" % (obj.Label, e))
-
-    def _restored_plans(self, obj: object) -> Optional[list[GroovePlan]]:
-        """The plans the opened document saved, when their fingerprint is that
-        of the op's inputs now (kept from then on); None otherwise. The Job's
-        other Groove ops that still hold saved plans are checked at the same
-        time (a post reads them next), the inputs they share read once."""
-        if not getattr(self, "_saved_plans", None):
-            return None
-        try:
-            job = self._parent_job(obj)
-        except ValueError as e:
-            self._saved_plans = None
-            FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
-            return None
-        memo: dict = {}  # cache.fingerprint's digests of the shared inputs
-        self._restore(obj, job, memo)
-        for other in getattr(getattr(job, "Operations", None), "Group", None) or []:
-            proxy = getattr(other, "Proxy", None)
-            if isinstance(proxy, ObjectGroove) and getattr(proxy, "_saved_plans", None) \
-                    and getattr(proxy, "_plans", None) is None and getattr(proxy, "error", None) is None \
-                    and not ({"Touched", "Invalid"} & set(other.State)):
-                proxy._restore(other, job, memo)
-        return getattr(self, "_plans", None)
-
-    def _restore(self, obj: object, job: object, memo: dict) -> None:
-        """Take the saved plans as the op's plans when their fingerprint matches (then, or never)."""
-        saved, self._saved_plans = self._saved_plans, None
-        try:
-            stamp = cache.fingerprint(obj, job, memo)
-            if stamp == saved.fingerprint:
-                self._plans, self._fingerprint = saved.plans, stamp
-        except Exception as e:  # plan again
-            FreeCAD.Console.PrintLog("%s: saved plans not used: %s\n" % (obj.Label, e))
-
-    def dumps(self) -> Optional[dict]:
-        """The proxy's saved state: the op's plans with their fingerprint
-        (cache.py), or what the opened document held when they were not
-        needed yet."""
-        plans, stamp = getattr(self, "_plans", None), getattr(self, "_fingerprint", None)
-        if plans is not None and stamp and getattr(self, "error", None) is None:
-            return {"plans": cache.pack(plans, stamp)}
-        saved = getattr(self, "_saved_plans", None)
-        return {"plans": saved.text} if saved else None
-
-    def loads(self, state: object) -> None:
-        """Read the saved plans as the document opens (cache.read), so
-        that the first post only checks their fingerprint (_restored_plans)."""
-        try:
-            self._saved_plans = cache.read(state.get("plans") if isinstance(state, dict) else None)
-        except Exception as e:  # never a reason not to open the document: the post plans again
-            self._saved_plans = None
-            FreeCAD.Console.PrintLog("Groove: saved plans not read: %s: %s\n" % (type(e).__name__, e))
 
     # -- properties -------------------------------------------------------------
     def _add_missing_properties(self, obj: object) -> None:
@@ -315,7 +230,7 @@ class ObjectGroove(AddonOp):
     def _picked(self, obj: object) -> list[tuple]:
         """(part, its model object for names, "FaceN", "Label.FaceN") of every picked element."""
         picked = []
-        job = PathUtils.findParentJob(document_object(obj))
+        job = parent_job(document_object(obj))
         for base, subs in obj.Base or []:
             if isinstance(subs, str):
                 subs = (subs,)
@@ -416,7 +331,7 @@ class ObjectGroove(AddonOp):
 
     def _parent_job(self, obj: object) -> object:
         """The Job the op is in (ValueError when it is in none)."""
-        job = PathUtils.findParentJob(document_object(obj))
+        job = parent_job(document_object(obj))
         if job is None:
             raise ValueError("%s is not in a Job" % obj.Label)
         return job
