@@ -45,6 +45,7 @@ class AddonTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
         super().setupUi()
         for page in self.featurePages:  # FreeCAD's own pages too, now filled (1.1's tool controller editor)
             fit_narrow_docks(page.form)
+        self.op_page.add_message_rows()  # now: the fields show the op's values, a change is the user's
 
     @property
     def valid(self) -> bool:
