@@ -66,3 +66,20 @@ def test_a_panel_opened_while_the_last_one_is_still_held_reads_its_own_widgets(s
         task_button(panel, Cancel).click()
         wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
         process(0.05)
+
+
+@pytest.mark.parametrize("button", [Cancel, Ok], ids=["cancel", "ok"])
+def test_closing_the_panel_forgets_the_widgets_its_pages_hold(shop, button):
+    # The pages hold wrappers of widgets Qt made from the .ui files (the fields, the picture's label) until the
+    # garbage collector frees the closed panel: FreeCAD 1.0 segfaulted reading a Groove field's text in
+    # test_model_panel_cases, the wrapper handed out for it being the last panel's label at that address.
+    doc, op = shop
+    panel = edit(doc, op)
+    page = panel.groove_page
+    held = list(page.fields.widgets.values()) + [page.diagram.label, page.form]
+    assert all(shiboken.isValid(w) and not shiboken.createdByPython(w) for w in held)
+    task_button(panel, button).click()
+    wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
+    process(0.1)
+    still_valid = sum(1 for w in held if shiboken.isValid(w))  # a count: a stale wrapper must not be printed
+    assert still_valid == 0, "%d widgets FreeCAD deleted still have wrappers" % still_valid
