@@ -630,6 +630,16 @@ def test_the_message_shows_in_the_row_of_the_field_being_edited(shop):
         screenshot_widget("%s-message-in-the-row" % version(), dock_of(page.form))
         replan(page, pitch, "6 mm")  # fixed: the message goes
         assert page.error is None and row_message(page.form) is None and top.isHidden()
+        area.ensureWidgetVisible(pitch)
+        before = page.replans
+        type_into(pitch, "0", leave=False)  # the wrong field itself being edited: the message under it
+        wait_for(lambda: page.replans > before and page.error is not None, what="the error")
+        assert page.error.startswith("Pitch=0"), page.error
+        near = row_message(page.form)
+        assert near is not None and near.text() == page.error
+        wait_for(lambda: in_view(near, area), what="the message in view while Pitch is edited")
+        field_at = pitch.mapTo(page.form, QtCore.QPoint(0, pitch.height())).y()
+        assert 0 <= near.mapTo(page.form, QtCore.QPoint(0, 0)).y() - field_at <= 12
     finally:
         task_button(panel, Cancel).click()
         wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
