@@ -20,6 +20,8 @@ a CAM op task panel (Path.Op.Gui.Base.TaskPanel): every op panel of the
 add-on derives from it.
 """
 
+import gc
+
 from PySide import QtCore
 
 try:  # FreeCAD 1.1: Qt 6
@@ -48,6 +50,16 @@ def forget(wrappers: list) -> None:
     for wrapper in wrappers:
         if shiboken.isValid(wrapper):
             shiboken.invalidate(wrapper)
+
+
+def collect_closed_panels() -> None:
+    """Free the Python objects of closed panels before a new panel's widgets are built. A closed panel's pages
+    live on in reference cycles until Python's garbage collector breaks them, holding wrappers of widgets and
+    of items (a list's or a table's, which are no QObjects: ``forget`` cannot find them) that FreeCAD deleted
+    with the dialog; the next panel's widgets built at those addresses were handed these wrappers (FreeCAD 1.0,
+    test_model_panel_cases: the Groove page's error label came back as a QTableWidgetItem, the tool page's
+    combo box as a QListWidgetItem, and the panel did not open)."""
+    gc.collect()
 
 
 class ForgetsButtonBox:

@@ -286,6 +286,7 @@ def cancel_open_panel():
         vp.panel = None  # as CAM's clearTaskPanel does: open_op_panels no longer finds it
     process()
     qt_wrappers.forget(held)
+    qt_wrappers.collect_closed_panels()  # (the items of its lists, no QObjects, are not among those forgotten)
 
 
 def close_shop(doc):
