@@ -16,7 +16,7 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from . import PANELS
+from . import PANELS, qt_wrappers
 
 translate = FreeCAD.Qt.translate
 CONTEXT = "FreeCADGroove"
@@ -34,6 +34,7 @@ WARNING_LABEL = "warningLabel"  # object name of the label the warnings show in
 def load_form(name: str) -> object:
     """A page's form from resources/panels/<name> (a .ui file), made to fit narrow docks."""
     form = FreeCADGui.PySideUic.loadUi(os.path.join(PANELS, name))
+    qt_wrappers.drop_stale(form)
     fit_narrow_docks(form)
     return form
 
