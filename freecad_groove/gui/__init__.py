@@ -13,6 +13,7 @@ modules are imported only when a command is first used.
                     dialog (the Groove's and the Plunge grind's derive from it); a new op with its panel open
     task_dialog.py  AddonTaskPanel, the dialog of every op panel: OK refused while invalid, the modified flag
     live_page.py    an op page that re-plans as the user types: the error, warnings, framed fields
+    field_rows.py   the op's message also in the row of the field being edited
     geometry_page.py  FreeCAD's base geometry page, faces only, with the op's message
     widgets.py      the Qt helpers the pages are built from (forms, fields, error labels)
     qt_wrappers.py  forgetting PySide's wrappers of the widgets FreeCAD deletes with a closed panel

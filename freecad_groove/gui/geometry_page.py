@@ -7,6 +7,7 @@ Not stored in documents: free to move.
 
 import Path.Op.Gui.Base as PathOpGui
 
+from . import qt_wrappers
 from .widgets import add_error_label, fit_narrow_docks
 
 
@@ -16,6 +17,7 @@ class FacesPage(PathOpGui.TaskPanelBaseGeometryPage):
 
     def getForm(self):
         form = super().getForm()
+        qt_wrappers.drop_stale(form)
         self.add_lines(form)
         add_error_label(form)
         # Now: FreeCAD's task view sets its minimum width from the pages once, when it shows them.

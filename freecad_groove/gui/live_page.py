@@ -3,8 +3,9 @@ grind) share: every changed value re-plans the op from the panel's values
 (the document is not touched), a short while after the edit's last signal;
 the plan is drawn, or the op's error shows in one line on every page with the
 fields it names framed red (the dialog, task_dialog.AddonTaskPanel, refuses
-OK meanwhile); the plan's warnings show in amber under it, their fields
-framed amber.
+OK meanwhile), and in the row of the field being edited (field_rows.py: the
+top of a long page scrolls out of view); the plan's warnings show in amber
+under it, their fields framed amber.
 
 A page defines ``replan()`` (the plan from the values shown; a ValueError
 for bad values), ``show_plan(plan)`` (None while invalid), ``field(prop)``
@@ -16,7 +17,9 @@ import traceback
 
 import FreeCAD
 import Path.Op.Gui.Base as PathOpGui
+from PySide import QtGui
 
+from .field_rows import add_message_rows, show_in_row
 from .widgets import (
     CONTEXT,
     ERROR_LABEL,
@@ -48,6 +51,8 @@ class LivePage(PathOpGui.TaskPanelPage):
         self.replans = 0
         self.preview = None  # a drawing in the 3D view with remove(), if the page has one
         self.on_validity_changed = None  # the dialog's: OK follows the validity
+        self.message_rows = []  # {property: message label under its field's row} of each page (field_rows.py)
+        self.edited = None  # the property whose field the user changed last
         self._timer = coalescing_timer(REPLAN_DELAY_MS, self.update_preview)
 
     def schedule_preview(self) -> None:
@@ -82,8 +87,25 @@ class LivePage(PathOpGui.TaskPanelPage):
         self.invalid = self._mark(self.invalid, tuple(properties) if message else (), mark_invalid)
         for page in [self] + list(self.other_pages):
             show_error(child(page.form, ERROR_LABEL), message)
+        for labels in self.message_rows:
+            show_in_row(labels, message, self.edited, self.invalid)
         if was_valid != (message is None) and self.on_validity_changed is not None:
             self.on_validity_changed()
+
+    def add_message_rows(self) -> None:
+        """A message row under each field row of every page (field_rows.py), and each field's change noted as
+        the field being edited. Called once by the dialog, once the pages show the op's values (their change
+        signals then come from the user)."""
+        fields = {}
+        for prop in self.obj.PropertiesList:
+            widget = self.marked_field(prop)
+            if isinstance(widget, (QtGui.QAbstractSpinBox, QtGui.QComboBox)):
+                fields[prop] = widget
+        for page in [self] + list(self.other_pages):
+            self.message_rows.append(add_message_rows(page.form, fields))
+        for prop, widget in fields.items():
+            signal = widget.currentIndexChanged if isinstance(widget, QtGui.QComboBox) else widget.valueChanged
+            signal.connect(lambda *_a, p=prop: setattr(self, "edited", p))
 
     def show_warning_lines(self, lines: list, properties: tuple = ()) -> None:
         """Show warning ``lines`` in amber on every page and frame the fields of ``properties``."""
@@ -111,6 +133,7 @@ class LivePage(PathOpGui.TaskPanelPage):
 
     def cleanupPage(self, obj):
         self._timer.stop()
+        self.message_rows = []  # the labels go with the panel
         if self.preview is not None:
             self.preview.remove()
             self.preview = None

@@ -16,6 +16,7 @@ Not stored in documents itself (each op's subclass is): free to move.
 import FreeCAD
 import Path.Op.Gui.Base as PathOpGui
 
+from . import qt_wrappers
 from .task_dialog import AddonTaskPanel
 from .widgets import CONTEXT
 
@@ -79,6 +80,7 @@ class OpViewProvider(PathOpGui.ViewProvider):
             return False
         if vobj is None:
             vobj = self.vobj
+        qt_wrappers.collect_closed_panels()
         page = self.getTaskPanelOpPage(vobj.Object)
         page.setTitle(translate(CONTEXT, self.TITLE))
         page.setIcon(self.ICON)

@@ -20,6 +20,8 @@ a CAM op task panel (Path.Op.Gui.Base.TaskPanel): every op panel of the
 add-on derives from it.
 """
 
+import gc
+
 from PySide import QtCore
 
 try:  # FreeCAD 1.1: Qt 6
@@ -48,6 +50,33 @@ def forget(wrappers: list) -> None:
     for wrapper in wrappers:
         if shiboken.isValid(wrapper):
             shiboken.invalidate(wrapper)
+
+
+def drop_stale(form: object) -> None:
+    """Forget the wrappers PySide holds for the children of ``form``, a form Qt has just made from a .ui file:
+    Python cannot have taken a wrapper of them yet, so any it holds is a wrapper of a deleted object that was
+    at the same address (a closed panel's widget or list item, still held by something), which PySide would
+    hand out, of the wrong type, for the new widget (FreeCAD 1.0 segfaulted reading a Groove field in
+    test_model_panel_cases, late in the whole GUI suite). Only shiboken's flags and map are touched: no method
+    of a wrong-typed wrapper is called. Run it before anything reads the form's widgets."""
+    for item in form.findChildren(QtCore.QObject):
+        if not shiboken.createdByPython(item):
+            shiboken.invalidate(item)
+    # FreeCAD's loader set an attribute of the form for each named widget (form.width): wrappers taken the same
+    # way, now forgotten too, so each is taken again.
+    for name, value in list(vars(form).items()):
+        if isinstance(value, QtCore.QObject) and not shiboken.isValid(value):
+            setattr(form, name, form.findChild(QtCore.QObject, name))
+
+
+def collect_closed_panels() -> None:
+    """Free the Python objects of closed panels before a new panel's widgets are built. A closed panel's pages
+    live on in reference cycles until Python's garbage collector breaks them, holding wrappers of widgets and
+    of items (a list's or a table's, which are no QObjects: ``forget`` cannot find them) that FreeCAD deleted
+    with the dialog; the next panel's widgets built at those addresses were handed these wrappers (FreeCAD 1.0,
+    test_model_panel_cases: the Groove page's error label came back as a QTableWidgetItem, the tool page's
+    combo box as a QListWidgetItem, and the panel did not open)."""
+    gc.collect()
 
 
 class ForgetsButtonBox:

@@ -45,6 +45,7 @@ class AddonTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
         super().setupUi()
         for page in self.featurePages:  # FreeCAD's own pages too, now filled (1.1's tool controller editor)
             fit_narrow_docks(page.form)
+        self.op_page.add_message_rows()  # now: the fields show the op's values, a change is the user's
 
     @property
     def valid(self) -> bool:
@@ -93,6 +94,15 @@ class AddonTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
                 return
             self.applied = self.applied or self.isDirty()
         super().clicked(button)
+
+    def cleanup(self, resetEdit):
+        # The pages' widgets FreeCAD deletes with the dialog: their wrappers the pages hold (fields, the picture's
+        # label) forgotten once they are gone, so the next panel's widgets built at their addresses get wrappers
+        # of their own (qt_wrappers.py; FreeCAD 1.0 segfaulted reading a Groove field's text in
+        # test_model_panel_cases, the page of the panel before still holding a label at that address).
+        held = qt_wrappers.made_by_qt([page.form for page in self.featurePages])
+        super().cleanup(resetEdit)
+        qt_wrappers.forget(held)
 
     def _left_alone(self) -> bool:
         """An existing op, and nothing applied: the panel wrote nothing into it."""

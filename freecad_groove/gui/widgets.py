@@ -16,7 +16,7 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from . import PANELS
+from . import PANELS, qt_wrappers
 
 translate = FreeCAD.Qt.translate
 CONTEXT = "FreeCADGroove"
@@ -34,6 +34,7 @@ WARNING_LABEL = "warningLabel"  # object name of the label the warnings show in
 def load_form(name: str) -> object:
     """A page's form from resources/panels/<name> (a .ui file), made to fit narrow docks."""
     form = FreeCADGui.PySideUic.loadUi(os.path.join(PANELS, name))
+    qt_wrappers.drop_stale(form)
     fit_narrow_docks(form)
     return form
 
@@ -43,7 +44,7 @@ FIELD_FRAME = 30  # px: a spin box's frame, margins and up/down buttons beside i
 EDIT_MARGINS = 6  # px: a line edit's margins beside its text and the cursor
 BUTTON_PADDING = 16  # px: a push button's frame and margins beside its text
 COMBO_WIDE = 110  # px: a combo box wider than this (a tool controller's name) may elide
-COMBO_CHARS = 8  # its own width then, in characters
+COMBO_CHARS = 6  # its own width then, in characters (8: a tool controller's row was 227 px in 1.0's 218)
 FORM_ROW = 180  # px: a form row in a group box of 1.0's default combo view
 WRAP_WIDER_THAN = 200  # px: a label whose one line is wider than this wraps
 

@@ -208,16 +208,27 @@ def zoom_to(doc, x, z, size):
     return view
 
 
-DEFAULT_DOCK_WIDTHS = {}  # dock title -> its width before roomy_task_panel first widened it: as FreeCAD starts
+DEFAULT_DOCK_WIDTHS = {}  # dock title -> its width as FreeCAD starts (note_default_docks)
 TASK_DOCKS = ("Tasks", "Combo View", "Combo view")
+
+
+def note_default_docks():
+    """Note each shown dock's width the first time it is seen (before any test made it wider: roomy_task_panel
+    widens it, a panel of FreeCAD 1.0 whose buttons need more widens the combo view, and neither narrows it
+    again). Called as the suite starts (this module is imported) and by the fixtures that show the window."""
+    for dock in FreeCADGui.getMainWindow().findChildren(QtGui.QDockWidget):
+        if dock.isVisible():
+            DEFAULT_DOCK_WIDTHS.setdefault(dock.windowTitle(), dock.width())
+
+
+note_default_docks()
 
 
 def roomy_task_panel():
     """Widen the docks (combo view, tasks) so the panel shows whole in screenshots."""
     mw = FreeCADGui.getMainWindow()
     docks = [d for d in mw.findChildren(QtGui.QDockWidget) if d.isVisible() and d.windowTitle() in TASK_DOCKS]
-    for dock in docks:
-        DEFAULT_DOCK_WIDTHS.setdefault(dock.windowTitle(), dock.width())
+    note_default_docks()
     if docks:
         mw.resizeDocks(docks, [480] * len(docks), QtCore.Qt.Horizontal)
     process()
@@ -241,13 +252,41 @@ def screenshot_dock(name):
     return path
 
 
+def open_op_panels():
+    """[(view provider, its task panel)] of the ops (CAM's and the add-on's) with a panel open in any document."""
+    found = []
+    for doc in FreeCAD.listDocuments().values():
+        for obj in doc.Objects:
+            vp = getattr(getattr(obj, "ViewObject", None), "Proxy", None)
+            if getattr(vp, "panel", None) is not None:
+                found.append((vp, vp.panel))
+    return found
+
+
 def cancel_open_panel():
     """The open task panel (if any) closed. (Control.reject() first, as the Cancel button does, made the next
     Groove panel segfault FreeCAD 1.0 and 1.1 in test_task_panel when the document was closed right after:
-    closeDialog only.)"""
-    if FreeCADGui.Control.activeDialog():
-        FreeCADGui.Control.closeDialog()
+    closeDialog only.) What CAM's op panel does only in its accept or reject done here too: it stops observing
+    the selection (else, its widgets deleted, it answered a later selection with a traceback in the Report
+    view, failing a later test that reads it, or not, as the garbage collector ran), and the wrappers of the
+    widgets FreeCAD deletes with it are forgotten (gui/qt_wrappers.py: a wrapper left at a freed address is
+    handed out for the next panel's widget built there)."""
+    from freecad_groove.gui import qt_wrappers
+
+    if not FreeCADGui.Control.activeDialog():
+        return
+    panels = open_op_panels()
+    held = []
+    for _vp, panel in panels:
+        FreeCADGui.Selection.removeObserver(panel)
+        forms = panel.form if isinstance(panel.form, list) else [panel.form]
+        held += qt_wrappers.made_by_qt(forms + [getattr(panel, "buttonBox", None)])
+    FreeCADGui.Control.closeDialog()
+    for vp, _panel in panels:
+        vp.panel = None  # as CAM's clearTaskPanel does: open_op_panels no longer finds it
     process()
+    qt_wrappers.forget(held)
+    qt_wrappers.collect_closed_panels()  # (the items of its lists, no QObjects, are not among those forgotten)
 
 
 def close_shop(doc):

@@ -112,6 +112,10 @@ def test_ticking_groove_from_the_model_shows_the_modelled_values_on_every_face(c
             wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
             process(0.05)
             assert len(job.Operations.Group) == len(before) - 1  # the new op goes with Cancel
+            # Not held while the next panel opens: the closed panel's pages hold wrappers of widgets and list
+            # items FreeCAD deleted, which the next panel's widgets at those addresses were handed (FreeCAD 1.0
+            # segfaulted in fill_combo; qt_wrappers.collect_closed_panels frees only what nothing holds).
+            del panel, page, label
     finally:
         close_shop(doc)
 

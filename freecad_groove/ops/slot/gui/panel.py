@@ -29,6 +29,7 @@ import Path.Op.Gui.Base as PathOpGui
 import PathScripts.PathUtils as PathUtils
 from PySide import QtGui
 
+from ....gui import qt_wrappers
 from ....gui.live_page import LivePage
 from ....gui.task_dialog import AddonTaskPanel
 from ....gui.widgets import (
@@ -245,6 +246,7 @@ class SlotTaskPanel(AddonTaskPanel):
 def open_panel(vobj: object, delete_on_reject: bool) -> SlotTaskPanel:
     """Show the panel of the op of ``vobj`` (ViewProviderCylinderSlot.setEdit)."""
     obj = vobj.Object
+    qt_wrappers.collect_closed_panels()
     page = SlotPage(obj, 0)
     page.setTitle(translate(CONTEXT, "Cylinder slot"))
     page.setIcon(ICON)
