@@ -131,14 +131,29 @@ def choose_form_rows(layout: object) -> None:
     squeezed letter by letter. A form whose .ui asks for WrapAllRows keeps it."""
     if layout.rowWrapPolicy() == QtGui.QFormLayout.WrapAllRows:
         return
+    # The widgets and inner layouts by their place, not layout.itemAt: a QLayoutItem is no QObject, and PySide
+    # could hand back a stale wrapper left at its address by a deleted item (qt_wrappers).
     labels = fields = 0
-    for row in range(layout.rowCount()):
-        label = layout.itemAt(row, QtGui.QFormLayout.LabelRole)
-        field = layout.itemAt(row, QtGui.QFormLayout.FieldRole)
-        labels = max(labels, label.sizeHint().width() if label is not None else 0)
-        fields = max(fields, field.minimumSize().width() if field is not None else 0)
+    parent = layout.parentWidget()
+    places = [(layout.getWidgetPosition(widget), widget.sizeHint().width(), _least_width(widget))
+              for widget in (parent.findChildren(QtGui.QWidget) if parent is not None else [])]
+    places += [(layout.getLayoutPosition(inner), inner.sizeHint().width(), inner.minimumSize().width())
+               for inner in layout.findChildren(QtGui.QLayout)]
+    for (row, role), hint, least in places:
+        if row < 0:
+            continue  # not in this layout (the role is then not set)
+        if role == QtGui.QFormLayout.LabelRole:
+            labels = max(labels, hint)
+        elif role == QtGui.QFormLayout.FieldRole:
+            fields = max(fields, least)
     side_by_side = labels + max(layout.horizontalSpacing(), 6) + fields <= FORM_ROW
     layout.setRowWrapPolicy(QtGui.QFormLayout.DontWrapRows if side_by_side else QtGui.QFormLayout.WrapAllRows)
+
+
+def _least_width(widget: object) -> int:
+    """The width a layout gives a widget at the least (QWidgetItem.minimumSize: its minimum size, else its
+    minimum size hint)."""
+    return widget.minimumWidth() or widget.minimumSizeHint().width()
 
 
 def text_width(widget: object, text: str) -> int:
