@@ -65,3 +65,14 @@ def test_every_guide_page_is_linked_from_the_front_page():
     linked = {os.path.normpath(os.path.join(ROOT, t.partition("#")[0])) for t in links(os.path.join(ROOT, "README.md"))}
     for page in glob.glob(os.path.join(ROOT, "docs", "*.md")):
         assert page in linked or os.path.basename(page) == "index.md", os.path.relpath(page, ROOT)
+
+
+def placeholders(text):
+    """Lines that are only a token of capitals and underscores (RUN_TABLE): a generated table never filled in."""
+    return [line for line in text.splitlines() if re.fullmatch(r"[A-Z][A-Z0-9]*_[A-Z0-9_]+", line.strip())]
+
+
+def test_no_page_holds_a_placeholder_for_a_table_never_filled_in():
+    assert placeholders("Figures:\n\nRUN_TABLE\n\nmore") == ["RUN_TABLE"]  # the check finds one
+    assert {os.path.basename(path): placeholders(open(path, encoding="utf-8").read()) for path in PAGES
+            if placeholders(open(path, encoding="utf-8").read())} == {}
