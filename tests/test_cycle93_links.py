@@ -57,7 +57,8 @@ def test_a_contour_pass_ends_at_the_foot_of_the_flank_where_the_plunges_have_cut
     # corner (Z31/3) meets flank 2 at X20 - 5/3. Each plunge rapids to X21 and feeds from there;
     # the free-off (a rapid, 1 mm back toward the previous plunge) only where that one is cut as deep:
     # after 5, 20/3 and 25/3, not after 10/3 (the one at 5/3 stopped higher).
-    # Step 3 from each edge: down the flank from the top (X20, entered from X20.1) to its foot, the
+    # Step 3 from each edge: down the flank from the top (X20, fed from X21: VRT over the edge's stock, not
+    # cut yet) to its foot, the
     # blade's -Z corner at Z3 (left) or its +Z corner at Z9, the reference at Z7 (right). From there
     # on along the base to the next plunge position (10/3, 20/3) the blade would cut nothing: the
     # plunges there have cut the base. So each pass goes straight up from the foot.
@@ -71,9 +72,9 @@ def test_a_contour_pass_ends_at_the_foot_of_the_flank_where_the_plunges_have_cut
         if freed is not None:
             expected += [(RAPID, bottom, freed)]
         expected += [(RAPID, 21.0, z if freed is None else freed)]
-    expected += [(RAPID, 21.0, 0.0), (RAPID, 20.1, 0.0), (FEED, 20.0, 0.0), (FEED, a, 5 / 3), (FEED, 17.0, 3.0),
+    expected += [(RAPID, 21.0, 0.0), (FEED, 20.0, 0.0), (FEED, a, 5 / 3), (FEED, 17.0, 3.0),
                  (RAPID, 21.0, 3.0),
-                 (RAPID, 21.0, 10.0), (RAPID, 20.1, 10.0), (FEED, 20.0, 10.0), (FEED, a, 25 / 3), (FEED, 17.0, 7.0),
+                 (RAPID, 21.0, 10.0), (FEED, 20.0, 10.0), (FEED, a, 25 / 3), (FEED, 17.0, 7.0),
                  (RAPID, 21.0, 7.0),
                  (RAPID, 25.0, 7.0), (RAPID, 25.0, -5.0)]  # back the way the approach came
     got = [(m.kind, m.x, m.z) for m in moves]

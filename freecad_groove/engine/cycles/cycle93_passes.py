@@ -18,7 +18,8 @@ times as fast as the feed (the machining-time benchmark's rates: 10,000 and
 100 mm/min). A rapid never runs through material: out of a stretch the blade
 rises through the columns it has just cut, across at the clearance, and down
 only to REENTRY_CLEARANCE above the highest material the plunges left under
-the blade (an upper bound of what stands).
+the blade (an upper bound of what stands), or to VRT over the contour where
+that material is the contour itself (stock not cut yet).
 
 The decisions are taken on the chorded trace, the moves written along the
 exact path (``Envelope.path``, split at the same plunge positions): arcs
@@ -181,12 +182,17 @@ def _stretches(pts: List[Point], groups: List[Tuple[int, int]], material: Materi
 
 def _entry(geo: "GrooveGeometry", material: MaterialTop, at: Point) -> float:
     """Level the blade may rapid down to above ``at``: REENTRY_CLEARANCE (at
-    most VRT) over the highest material under it, never below ``at``."""
+    most VRT) over the highest material under it, never below ``at``; VRT
+    over the contour where that material is the contour itself (stock not
+    cut yet: VRT is the machinist's clearance over it, as the plunges enter)."""
     u, v = at
     w = geo.tool.width
     stand = max(material.stand(u, v, w), 0.0)
     gap = min(geo.params["VRT"], REENTRY_CLEARANCE_MM if geo.metric else REENTRY_CLEARANCE_INCH)
-    return min(v + stand + gap, geo.clearance(u))
+    clearance = geo.clearance(u)
+    if v + stand >= geo.contour_top(u) - PATH_TOLERANCE:
+        return clearance
+    return min(v + stand + gap, clearance)
 
 
 def _length(pts: List[Point]) -> float:
