@@ -87,31 +87,32 @@ def _moved(a, b):
 
 def _without_free_offs(commands):
     """``commands`` without CYCLE93's free-off (issue 9): at the bottom of a
-    plunge (a G0 then a G1 along one axis) a G1 of at most 1 mm along the
-    other axis, then G0s out from there. The free-off is dropped and the G0s
+    plunge (a G0 then a G1 along one axis) a G1 (a G0 since issue 22) of at
+    most 1 mm along the other axis, then G0s out from there. The free-off is dropped and the G0s
     that follow it, up to the next G1, start from the plunge's position again
     (the freed coordinate back to the plunge's), as an earlier release wrote
     them; every other move is kept as it is."""
     out, swap, held = [], None, None
     for name, words in commands:
-        if held is not None:  # a G1 that looked like a free-off: one only if a rapid goes straight out next
-            held_words, free = held
+        if held is not None:  # a move that looked like a free-off: one only if a rapid goes straight out next
+            held_name, held_words, free = held
             held = None
             if name == "G0" and words.get(free[0], free[1]) == free[1] and _moved(held_words, words):
                 swap = free
             else:
-                out.append(("G1", held_words))
+                out.append((held_name, held_words))
+        free = _free_off(out, words) if name in ("G0", "G1") else None
+        if free is not None:  # a G1, or since issue 22 (item 4) a G0: the free-off is a rapid now
+            swap = None
+            held = (name, words, free)
+            continue
         if name == "G1":
             swap = None
-            free = _free_off(out, words)
-            if free is not None:
-                held = (words, free)
-                continue
         elif name == "G0" and swap is not None and words.get(swap[0]) == swap[1]:
             words = dict(words, **{swap[0]: swap[2]})
         out.append((name, words))
     if held is not None:
-        out.append(("G1", held[0]))
+        out.append(held[:2])
     return out
 
 
