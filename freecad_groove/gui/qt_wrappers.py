@@ -22,7 +22,7 @@ add-on derives from it.
 
 import gc
 
-from PySide import QtCore
+from PySide import QtCore, QtGui
 
 try:  # FreeCAD 1.1: Qt 6
     import shiboken6 as shiboken
@@ -42,6 +42,24 @@ def made_by_qt(objects: list) -> list:
             if not shiboken.createdByPython(item):
                 found[id(item)] = item
     return list(found.values())
+
+
+def list_items(objects: list) -> list:
+    """The wrappers of the items of every list and table widget in ``objects`` (None allowed): items are no
+    QObjects, so made_by_qt cannot find them, and a page that lives on in a reference cycle (CAM's base
+    geometry page) keeps their wrappers after FreeCAD deleted them with the dialog (FreeCAD 1.0: CAM's next
+    Job dialog was handed one for a button, "QListWidgetItem has no attribute 'clicked'"). Call it while the
+    objects are surely alive, and ``forget`` the wrappers once they are deleted."""
+    found = []
+    for obj in objects:
+        if obj is None or not shiboken.isValid(obj):
+            continue
+        for widget in obj.findChildren(QtGui.QListWidget):
+            found += [widget.item(row) for row in range(widget.count())]
+        for widget in obj.findChildren(QtGui.QTableWidget):
+            found += [widget.item(row, column) for row in range(widget.rowCount())
+                      for column in range(widget.columnCount())]
+    return [item for item in found if item is not None]
 
 
 def forget(wrappers: list) -> None:

@@ -100,7 +100,8 @@ class AddonTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
         # label) forgotten once they are gone, so the next panel's widgets built at their addresses get wrappers
         # of their own (qt_wrappers.py; FreeCAD 1.0 segfaulted reading a Groove field's text in
         # test_model_panel_cases, the page of the panel before still holding a label at that address).
-        held = qt_wrappers.made_by_qt([page.form for page in self.featurePages])
+        forms = [page.form for page in self.featurePages]
+        held = qt_wrappers.made_by_qt(forms) + qt_wrappers.list_items(forms)
         super().cleanup(resetEdit)
         qt_wrappers.forget(held)
 
