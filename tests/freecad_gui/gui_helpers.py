@@ -419,3 +419,25 @@ def shown_message(form):
     if label is not None and not label.isHidden() and label.text():
         return label.text()
     return None
+
+
+def make_blade_shop(name, **lengths):
+    """make_gui_shop(name) with its Job's tool bit made a grooving blade: each of ``lengths`` (Width=3.0,
+    CuttingEdgeHeight=8.0, ...) a length property of the bit, added where the bit has none."""
+    FreeCADGui.getMainWindow().showMaximized()
+    FreeCADGui.activateWorkbench("CAMWorkbench")
+    doc, job, model = make_gui_shop(name)
+    bit = job.Tools.Group[0].Tool
+    for prop, value in lengths.items():
+        if prop not in bit.PropertiesList:
+            bit.addProperty("App::PropertyLength", prop, "Grooving blade", prop)
+        setattr(bit, prop, value)
+    doc.recompute()
+    return doc, job, model
+
+
+def replan(page, field, text):
+    """Type ``text`` into ``field`` and wait for the page's preview planned again."""
+    before = page.replans
+    type_into(field, text)
+    wait_for(lambda: page.replans > before, what="the preview after typing %r" % text)

@@ -8,14 +8,14 @@ import FreeCADGui
 import pytest
 from gui_helpers import (
     close_shop,
-    make_gui_shop,
+    make_blade_shop,
     process,
+    replan,
     roomy_task_panel,
     screenshot,
     shown_message,
     start_groove_command,
     task_button,
-    type_into,
     version,
     wait_for,
 )
@@ -26,23 +26,9 @@ Ok = QtGui.QDialogButtonBox.Ok
 
 @pytest.fixture
 def shop():
-    FreeCADGui.getMainWindow().showMaximized()
-    FreeCADGui.activateWorkbench("CAMWorkbench")
-    doc, job, model = make_gui_shop("GrooveReachGui")
-    bit = job.Tools.Group[0].Tool
-    for name in ("Width", "CornerRadius", "CuttingEdgeHeight"):
-        if name not in bit.PropertiesList:
-            bit.addProperty("App::PropertyLength", name, "Grooving blade", name)
-    bit.Width, bit.CornerRadius, bit.CuttingEdgeHeight = 3.0, 0.2, 8.0
-    doc.recompute()
+    doc, job, model = make_blade_shop("GrooveReachGui", Width=3.0, CornerRadius=0.2, CuttingEdgeHeight=8.0)
     yield doc, job, model
     close_shop(doc)
-
-
-def replan(page, field, text):
-    before = page.replans
-    type_into(field, text)
-    wait_for(lambda: page.replans > before, what="the preview after typing %r" % text)
 
 
 def test_a_depth_past_the_blades_reach_is_shown_and_ok_is_refused(shop):
