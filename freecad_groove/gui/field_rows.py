@@ -9,18 +9,25 @@ then shows in the row of the field the user last changed (else of the first
 field the message names), and still at the top of the pages.
 
 Nothing is looked up while the panel is used: the labels are made by Python
-as children of the page's form (Qt deletes them with the panel, and shiboken
-hears of it), the page keeps {property: label} until its cleanupPage, and
-the field the user changed is known by its property (each field's change
-signal says which). A previous try found the focused field when a message
-came, and inserted and removed a row each time; the wrappers of Qt's widgets
-and layout items it took outlived them and crashed FreeCAD 1.0's next panel.
+as children of the page's form, the page keeps {property: label} until its
+cleanupPage, which deletes them (remove_message_rows), and the field the
+user changed is known by its property (each field's change signal says
+which). Deleted by the page, not left to Qt's deletion of the dialog: PySide
+records a label inserted into a form layout as the child of that layout's
+wrapper, a wrapper PySide makes and drops each time Python reads the layout,
+and FreeCAD 1.1 once segfaulted in shiboken's releaseWrapper deleting such a
+label with the dialog (the whole GUI suite in CI, test_model_panel_cases).
+
+A previous try found the focused field when a message came, and inserted
+and removed a row each time; the wrappers of Qt's widgets and layout items
+it took outlived them and crashed FreeCAD 1.0's next panel.
 
 GUI layer: Qt only through FreeCAD's ``PySide`` shim. Not stored in documents.
 """
 
 from PySide import QtGui
 
+from .qt_wrappers import shiboken
 from .widgets import ERROR_STYLE
 
 FIELD_MESSAGE = "fieldMessage"  # object name of the message labels under the field rows
@@ -72,3 +79,11 @@ def show_in_row(labels: dict, message: object, edited: object, named: tuple) -> 
         if label is chosen:
             label.setText(str(message))
         label.setVisible(label is chosen)
+
+
+def remove_message_rows(labels: dict) -> None:
+    """Delete the message labels of ``labels`` (from add_message_rows) now, while the panel and every wrapper
+    are whole; their rows are left empty."""
+    for label in {id(label): label for label in labels.values()}.values():
+        if shiboken.isValid(label):
+            shiboken.delete(label)

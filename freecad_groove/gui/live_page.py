@@ -19,7 +19,7 @@ import FreeCAD
 import Path.Op.Gui.Base as PathOpGui
 from PySide import QtGui
 
-from .field_rows import add_message_rows, show_in_row
+from .field_rows import add_message_rows, remove_message_rows, show_in_row
 from .widgets import (
     CONTEXT,
     ERROR_LABEL,
@@ -133,7 +133,9 @@ class LivePage(PathOpGui.TaskPanelPage):
 
     def cleanupPage(self, obj):
         self._timer.stop()
-        self.message_rows = []  # the labels go with the panel
+        for labels in self.message_rows:
+            remove_message_rows(labels)
+        self.message_rows = []
         if self.preview is not None:
             self.preview.remove()
             self.preview = None

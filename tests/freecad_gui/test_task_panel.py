@@ -640,6 +640,17 @@ def test_the_message_shows_in_the_row_of_the_field_being_edited(shop):
         wait_for(lambda: in_view(near, area), what="the message in view while Pitch is edited")
         field_at = pitch.mapTo(page.form, QtCore.QPoint(0, pitch.height())).y()
         assert 0 <= near.mapTo(page.form, QtCore.QPoint(0, 0)).y() - field_at <= 12
+        # The page deletes its message labels itself when it is cleaned up, while the form is whole: FreeCAD
+        # 1.1 once segfaulted in shiboken deleting one with the dialog (field_rows.remove_message_rows).
+        from freecad_groove.gui.field_rows import FIELD_MESSAGE
+        from freecad_groove.gui.qt_wrappers import shiboken
+
+        forms = (page.form, tool_page.form)
+        labels = [label for form in forms for label in form.findChildren(QtGui.QLabel, FIELD_MESSAGE)]
+        assert len(labels) >= 10, len(labels)
+        page.cleanupPage(page.obj)  # as CAM's panel does on closing; Cancel below runs it again (a no-op)
+        assert not any(shiboken.isValid(label) for label in labels) and shiboken.isValid(page.form)
+        assert page.form.findChildren(QtGui.QLabel, FIELD_MESSAGE) == []
     finally:
         task_button(panel, Cancel).click()
         wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
