@@ -10,9 +10,9 @@ import io
 import math
 
 import pytest
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from rs274 import canonical_matches, require_rs274, run_rs274, written_moves
-from shapely.geometry import Polygon
+from shapely.geometry import LineString, Point, Polygon
 from test_cycle93_simulation import grooves
 
 from freecad_groove import cli
@@ -199,20 +199,22 @@ def test_the_exact_path_lines_up_with_the_chorded_trace_stretch_by_stretch(case)
 
 
 def _runs(moves):
-    """The fed runs between rapids: (first, last) end point of each."""
+    """The fed runs between rapids: the end points of each run's moves."""
     runs, run = [], []
     for move in moves:
         if move.kind == RAPID:
             if run:
-                runs.append((run[0], run[-1]))
+                runs.append(run)
             run = []
         elif move.kind != "G4":
             run.append((move.x, move.z))
-    return runs + ([(run[0], run[-1])] if run else [])
+    return runs + ([run] if run else [])
 
 
 @settings(suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow])
 @given(grooves())
+@example((Cycle93.parse("CYCLE93(15, 0, 1.51, 0.8, 6, 0, 0, 0.1, 0, 0, 0.74, 0, 0, 0.3, 0, 1, 0)"),
+          GroovingTool(1.5, 0.0)))  # a run starting where a grazing line meets the path (a random case)
 def test_arcs_change_only_the_feeds_between_the_bounds_the_chorded_passes_feed(case):
     # The same expansion with the passes writing their chords (as before arcs: the guard's way): the
     # same rapids and dwells, the same fed runs starting and ending at the same points (the exact
@@ -234,6 +236,12 @@ def test_arcs_change_only_the_feeds_between_the_bounds_the_chorded_passes_feed(c
     assert [m for m in moves if m.kind in (RAPID, "G4")] == [m for m in before if m.kind in (RAPID, "G4")]
     runs, runs_before = _runs(moves), _runs(before)
     assert len(runs) == len(runs_before)
-    for (first, last), (first_before, last_before) in zip(runs, runs_before):
-        assert math.dist(first, first_before) <= 2 * PATH_TOLERANCE
-        assert math.dist(last, last_before) <= 2 * PATH_TOLERANCE
+    for run, run_before in zip(runs, runs_before):
+        # Each end lies on the chorded run's path (its chords are within the tolerance of the exact path),
+        # and close to the chorded run's own end: where a run's end is found by meeting a line at a grazing
+        # angle (a pass starting where its material starts), the chords' tolerance across the path moves the
+        # meeting point along it by up to the tolerance over the angle's sine (0.00047 mm in the example).
+        path = LineString(run_before) if len(run_before) > 1 else Point(run_before[0])
+        for end, end_before in ((run[0], run_before[0]), (run[-1], run_before[-1])):
+            assert path.distance(Point(end)) <= 2 * PATH_TOLERANCE, (end, end_before)
+            assert math.dist(end, end_before) <= 10 * PATH_TOLERANCE, (end, end_before)
