@@ -18,7 +18,7 @@ import test_plan_cache as tc
 from documents import reopened
 from parts import PROFILE, shaft_shape
 
-from freecad_groove.freecad import changes, toolbit
+from freecad_groove.freecad import addon_bits, changes, toolbit
 from freecad_groove.ops.groove import links
 from freecad_groove.ops.groove.op import op_error
 
@@ -111,6 +111,23 @@ def test_posts_of_an_unchanged_op_plan_once(shop, plan_calls):
     shop[0].recompute()  # nothing touched: nothing recomputed, the plans kept
     assert tc._post(op) == first
     assert plan_calls[0] == calls
+
+
+def test_a_new_tool_controller_recomputes_itself_and_its_bit_not_the_ops(shop, plan_calls):
+    # Issue 21 item 10: the panel's "Create grooving tool controller" recomputed the whole document (the Job, its
+    # model, the open op's plan: half a second); the op is planned when it is recomputed with its new tool.
+    # (FreeCAD 1.0's own ToolBit recomputes the document when it is made: the tool controller is timed apart.)
+    doc, _shaft, job, _tc = shop
+    op = tc._grooves(shop)
+    bit = toolbit.make_grooving_bit(doc, 2.5, 0.2)
+    op.touch()  # an op being edited in its panel
+    calls = plan_calls[0]
+    new = addon_bits.make_tool_controller(job, bit, "TC: Grooving blade")
+    assert plan_calls[0] == calls and "Touched" in op.State
+    assert "Touched" not in new.State and "Touched" not in new.Tool.State and new in job.Tools.Group
+    op.ToolController = new
+    doc.recompute()
+    assert plan_calls[0] > calls and op_error(op) is None
 
 
 def test_the_model_s_largest_radius_is_found_once_per_shape(shop):
