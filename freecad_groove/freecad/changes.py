@@ -16,6 +16,14 @@ Every property change of a document object goes through FreeCAD's
 signalChangedObject (set from Python, by an expression, a recompute, undo and
 redo), which the observer hears; an object's Shape is one of its properties.
 
+Hearing a change costs one dict store: the object is only noted (by its
+wrapper, which FreeCAD keeps for the object's life) and counted at the next
+read (read_once, last_change, unchanged_memo), once however many of its
+properties changed. Opening a document signals every restored property (about
+a thousand for a saved 5-op Job, 27 objects), and FreeCAD 1.0 and 1.1 tell a
+Python observer neither where a restore starts nor where it ends: finding the
+object's document and name at each of them cost 9-13 ms of CPU an opening.
+
 FreeCAD layer: FreeCAD only.
 """
 
@@ -27,37 +35,41 @@ import FreeCAD
 Value = TypeVar("Value")
 
 _COUNTER = itertools.count(1)
-_last = [0]  # the counter at the last change of any object
+_last = [0]  # the counter at the last change of any object (counted)
 _unchanged: dict = {"at": None, "memo": {}}  # unchanged_memo()'s
 _changed: dict = {}  # (document name, object name) -> the counter at its last change
 _opened: dict = {}  # document name -> the counter when it was opened or created
 _read: dict = {}  # (document name, object name, what) -> (its change count then, the value)
+_heard: dict = {}  # id(object) -> the object: changed since the last count (its wrapper kept: the id stays its own)
+work = {"heard": 0, "keyed": 0}  # changes heard, objects' names found (to count them, to read): the tests read these
 
 
 def _key(obj: object) -> tuple:
-    return (obj.Document.Name, obj.Name)
-
-
-def _next() -> int:
-    _last[0] = next(_COUNTER)
-    return _last[0]
+    key = (obj.Document.Name, obj.Name)
+    work["keyed"] += 1
+    return key
 
 
 class _Observer:
-    """Counts the changes of every document object (FreeCAD calls these slots; one that raised would print a
+    """Notes the changes of every document object (FreeCAD calls these slots; one that raised would print a
     traceback in the report view at every change: none does)."""
 
     def slotChangedObject(self, obj, prop):  # noqa: N802 - FreeCAD's names
-        _changed_object(obj)
+        _heard[id(obj)] = obj
+        work["heard"] += 1
 
     def slotCreatedObject(self, obj):  # noqa: N802
-        _changed_object(obj)
+        _heard[id(obj)] = obj
+        work["heard"] += 1
 
-    def slotDeletedObject(self, obj):  # noqa: N802
-        _changed_object(obj)
+    def slotDeletedObject(self, obj):  # noqa: N802 - counted now: its name is gone after
+        _heard[id(obj)] = obj
+        work["heard"] += 1
+        _count_heard()
 
     def slotAppendDynamicProperty(self, obj, prop):  # noqa: N802 - a property added: PropertiesList changed
-        _changed_object(obj)
+        _heard[id(obj)] = obj
+        work["heard"] += 1
 
     slotRemoveDynamicProperty = slotAppendDynamicProperty  # noqa: N815
 
@@ -68,12 +80,23 @@ class _Observer:
     slotDeletedDocument = slotUndoDocument = slotRedoDocument = slotCreatedDocument  # noqa: N815
 
 
-def _changed_object(obj: object) -> None:
+def _count_heard() -> None:
+    """Count the changes heard since the last count: one new counter value for all of them."""
+    if not _heard:
+        return
+    heard = list(_heard.values())
+    _heard.clear()
     count = _next()
-    try:
-        _changed[_key(obj)] = count
-    except Exception:  # not a document object (a view provider's property): nothing of it is read here
-        pass
+    for obj in heard:
+        try:
+            _changed[_key(obj)] = count
+        except Exception:  # a view provider's property, an object of a closed document (_start_over counted it)
+            pass
+
+
+def _next() -> int:
+    _last[0] = next(_COUNTER)
+    return _last[0]
 
 
 def _start_over(document: str) -> None:
@@ -82,8 +105,9 @@ def _start_over(document: str) -> None:
         del _read[key]
 
 
-def _count(obj: object) -> tuple:
-    key = _key(obj)
+def _count(key: tuple) -> tuple:
+    """The change count of the object of ``key`` (_key), the changes heard counted first."""
+    _count_heard()
     return (_opened.get(key[0], 0), _changed.get(key, 0))
 
 
@@ -94,8 +118,9 @@ FreeCAD.addDocumentObserver(_OBSERVER)
 def read_once(obj: object, what: str, read: Callable[[object], Value]) -> Value:
     """``read(obj)``, read again only when ``obj`` changed since (the module's notes); ``what`` names the
     reading (one object has several)."""
-    key = _key(obj) + (what,)
-    count = _count(obj)
+    key = _key(obj)
+    count = _count(key)
+    key += (what,)
     kept = _read.get(key)
     if kept is not None and kept[0] == count:
         return kept[1]
@@ -106,12 +131,14 @@ def read_once(obj: object, what: str, read: Callable[[object], Value]) -> Value:
 
 def last_change() -> int:
     """A number that moves at every change of any document object (the module's notes)."""
+    _count_heard()
     return _last[0]
 
 
 def unchanged_memo() -> dict:
     """A dict of values read from documents, kept while no document object changed (emptied at the first
     change after): a post reads the same tool controller, model and stock for each of its ops."""
+    _count_heard()
     if _unchanged["at"] != _last[0]:
         _unchanged["at"], _unchanged["memo"] = _last[0], {}
     return _unchanged["memo"]

@@ -246,3 +246,56 @@ def test_a_document_saved_unchanged_reopens_without_planning(shop, tmp_path, pla
         calls = plan_calls[0]
         assert tc._post(doc2.getObject(name)) == before
         assert plan_calls[0] == calls
+
+
+# (change, whether it is posted with the document recomputed first), made in the session that reopened the document
+REOPENED_CHANGES = [(_model_shape, False), (_part_shape, True), (_stock_shape, False), (_stock_placement, False),
+                    (_tool_bit_width, False)]
+
+
+@pytest.mark.parametrize("change, recompute", REOPENED_CHANGES,
+                         ids=["%s-%s" % (f.__name__.lstrip("_"), "recomputed" if r else "not recomputed")
+                              for f, r in REOPENED_CHANGES])
+def test_a_change_after_reopening_and_posting_is_written_by_the_next_post(shop, tmp_path, plan_calls, change,
+                                                                          recompute):
+    # what the observer heard while the document was restored is counted at the first post; a change after that
+    # must still be heard: the saved plans, checked once at that post, are not taken again for the next one
+    doc, part, job, _tc = shop
+    op = tc._grooves(shop)
+    if change is _tool_bit_width:
+        _grooving_tool_controller(op, shop)
+        doc.recompute()
+    names, before = (part.Name, job.Name, op.Name), tc._post(op)
+    with reopened(doc, tmp_path / "a.FCStd") as doc2:
+        part2, job2, op2 = (doc2.getObject(name) for name in names)
+        calls = plan_calls[0]
+        assert tc._post(op2) == before
+        assert plan_calls[0] == calls  # the saved plans
+        change(op2, (doc2, part2, job2, op2.ToolController))
+        if recompute:
+            doc2.recompute()
+        assert op_error(op2) is None, op_error(op2)
+        text = tc._post(op2)
+        assert plan_calls[0] > calls
+        assert text != before
+        assert text == tc._fresh_post(op2)
+
+
+def test_opening_a_document_looks_up_each_restored_object_once_not_each_property(shop, tmp_path):
+    # opening signals every restored property (hundreds for one op); the observer only notes the object at
+    # each and finds its name once, when the changes are next counted (changes.py)
+    op = tc._grooves(shop)
+    name, before = op.Name, tc._post(op)
+    path = tmp_path / "a.FCStd"
+    shop[0].saveAs(str(path))
+    FreeCAD.closeDocument(shop[0].Name)
+    heard, keyed = changes.work["heard"], changes.work["keyed"]
+    doc2 = FreeCAD.openDocument(str(path))
+    try:
+        changes.last_change()  # counts what was heard
+        objects = len(doc2.Objects)
+        assert changes.work["heard"] - heard > 5 * objects
+        assert changes.work["keyed"] - keyed <= objects
+        assert tc._post(doc2.getObject(name)) == before
+    finally:
+        FreeCAD.closeDocument(doc2.Name)
