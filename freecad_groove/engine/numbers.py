@@ -100,7 +100,9 @@ def format_exact(value: Union[int, float]) -> str:
         return str(value)
     if not math.isfinite(value):
         return repr(float(value))
-    text = format(Decimal(repr(float(value))), "f")
+    text = repr(float(value))
+    if "e" in text:  # repr's exponent form (below 1e-4, from 1e16): the same digits written out
+        text = format(Decimal(text), "f")
     if "." in text:
         text = text.rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
