@@ -150,7 +150,10 @@ class Cycle93(Cycle):
         """The call as the control reads it: every value exactly (the shortest
         decimal that reads back as the same double, no exponent), so
         ``parse(emit(m)) == m``."""
-        return _call_text(self)
+        values = [getattr(self, name) for name in _FIELD_NAMES]
+        if values[-1] is None:
+            values = values[:-1]
+        return "CYCLE93(%s)" % ", ".join("" if v is None else format_exact(v) for v in values)
 
     @classmethod
     def parse(cls, text: str) -> "Cycle93":
@@ -272,14 +275,3 @@ _cached_geometry.cache_clear = _forget_geometries  # type: ignore[method-assign]
 
 # The call's parameters in order, read once: dataclasses.fields() on every emit() was a tenth of a post's time.
 _FIELD_NAMES = tuple(f.name for f in fields(Cycle93))
-
-
-# A post writes the call of each plan the op keeps, post after post: its text is written once (the model is
-# frozen; a few hundred calls kept, memory stays bounded). Not kept on the call itself: vars(call) keys the
-# shape caches (cycle93_shapes, cycle93_reach).
-@lru_cache(maxsize=1024)
-def _call_text(call: Cycle93) -> str:
-    values = [getattr(call, name) for name in _FIELD_NAMES]
-    if values[-1] is None:
-        values = values[:-1]
-    return "CYCLE93(%s)" % ", ".join("" if v is None else format_exact(v) for v in values)
