@@ -131,27 +131,28 @@ class MaterialTop:
             self._curves = list({id(c): c for c in self._pieces if c is not None}.values())
         return self._starts, self._pieces
 
-    def cuts(self, chain: List[Point], width: float, radius: float, floor: List[Point]) -> bool:
-        """Whether the blade swept along the convex ``chain`` of front
-        positions, never below the material top ``floor`` (the profile its
-        envelope keeps it on), stands under more than MATERIAL_MARGIN of the
-        field."""
-        verdict = self._verdict(chain, width, radius, floor)
+    def cuts(self, points: List[Point], width: float, radius: float, floor: List[Point]) -> bool:
+        """Whether the blade swept along the lower hull of the front positions
+        ``points`` (a stretch of a pass), never below the material top
+        ``floor`` (the profile its envelope keeps it on), stands under more
+        than MATERIAL_MARGIN of the field."""
+        verdict = self._verdict(points, width, radius, floor)
         if verdict is not None:
             return verdict
-        return self.exceeds(_sweep(chain, width, radius), floor, MATERIAL_MARGIN)
+        return self.exceeds(_sweep(lower_hull(points), width, radius), floor, MATERIAL_MARGIN)
 
     def _verdict(self, chain: List[Point], width: float, radius: float, floor: List[Point]) -> Optional[bool]:
-        """``cuts``' answer where it is plain without the sweep, else None.
+        """``cuts``' answer where it is plain without the sweep, else None
+        (``chain``: the stretch's points, the hull's or any above it).
         True: at a piece of the field (its middle, or by its ends) it stands
         more than MATERIAL_MARGIN over the floor and over the blade standing
-        on the chain there (``_over``, at least the outline), so exceeds,
+        on the chain there (``_over_blade``: at least the outline), so exceeds,
         exact, finds it too. False: the field's highest point over the swept
         columns stands at most MATERIAL_MARGIN over the chain's lowest point
         (the outline is nowhere lower). Both by VERDICT_EPS: their rounding
         and exceeds' own never part them."""
         starts, pieces = self._field()
-        a, b = chain[0][0] + SIDE_EPS, chain[-1][0] + width - SIDE_EPS
+        a, b = min(chain)[0] + SIDE_EPS, max(chain)[0] + width - SIDE_EPS  # the hull's first and last u
         inside_a, inside_b = a + WITNESS_INSET, b - WITNESS_INSET
         lowest = min(v for _u, v in chain)
         witness, high = MATERIAL_MARGIN + VERDICT_EPS, lowest + MATERIAL_MARGIN + VERDICT_EPS
@@ -177,7 +178,7 @@ class MaterialTop:
             x = 0.5 * (lo + hi)
             if top > high and inside_a < x < inside_b:
                 level = -value(piece, x)
-                if level > high and level - _over(x, chain, width, radius, floor) > witness:
+                if level > high and _over_blade(level, x, chain, width, radius, floor, witness):
                     return True
         if top - lowest <= MATERIAL_MARGIN - VERDICT_EPS:
             return False
@@ -185,7 +186,7 @@ class MaterialTop:
             for x in (lo + WITNESS_INSET, hi - WITNESS_INSET):
                 if lo < x < hi and inside_a < x < inside_b:
                     level = -value(piece, x)
-                    if level > high and level - _over(x, chain, width, radius, floor) > witness:
+                    if level > high and _over_blade(level, x, chain, width, radius, floor, witness):
                         return True
         return None
 
@@ -257,22 +258,28 @@ def _blade_level(x: float, u: float, v: float, w: float, r: float) -> float:
     return v + r - math.sqrt(max(r * r - d * d, 0.0)) if d > 0 else v
 
 
-def _over(x: float, chain: List[Point], w: float, r: float, floor: List[Point]) -> float:
-    """An upper bound of the outline swept along ``chain`` raised to the floor
-    less FLOOR_TOL at column x: the lowest blade standing on the chain (at
-    its points, and centred over x on its segments), or the floor's line
-    there if higher; inf where x is not strictly inside a floor piece
-    (exceeds does not look there)."""
+def _over_blade(level: float, x: float, chain: List[Point], w: float, r: float, floor: List[Point],
+                margin: float) -> bool:
+    """Whether ``level`` (the field's at column x) stands more than ``margin``
+    over the floor less FLOOR_TOL there and over a blade standing on
+    ``chain`` (centred over x on a segment, or at a point: all on or above
+    the chain's lower hull, so at least the outline swept along it). Never
+    where x is not strictly inside a floor piece: exceeds does not look
+    there."""
     i = bisect_right(floor, (x, math.inf)) - 1
     if i < 0 or i + 1 >= len(floor) or not floor[i][0] < x < floor[i + 1][0]:
-        return math.inf
+        return False
     (u0, v0), (u1, v1) = floor[i], floor[i + 1]
-    level = min(_blade_level(x, u, v, w, r) for u, v in chain)
+    if level - (v0 - FLOOR_TOL + (v1 - v0) / (u1 - u0) * (x - u0)) <= margin:
+        return False
     centre = x - 0.5 * w
     for (p0, q0), (p1, q1) in zip(chain, chain[1:]):
-        if p0 < centre < p1:
-            level = min(level, q0 + (q1 - q0) * (centre - p0) / (p1 - p0))
-    return max(level, v0 - FLOOR_TOL + (v1 - v0) / (u1 - u0) * (x - u0))
+        if (p0 < centre < p1 or p1 < centre < p0) and level - (q0 + (q1 - q0) * (centre - p0) / (p1 - p0)) > margin:
+            return True
+    for u, v in chain:
+        if x - w <= u <= x and level - _blade_level(x, u, v, w, r) > margin:  # a blade over x
+            return True
+    return False
 
 
 def _candidates(field: Curve, low: Curve, x0: float, x1: float) -> List[float]:
