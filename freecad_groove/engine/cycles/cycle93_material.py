@@ -167,22 +167,25 @@ class MaterialTop:
             k += 1
             if piece is None:
                 continue
-            spans.append((lo, hi, piece))
             _plo, _phi, kind, cu, cv, size = piece  # stored negated: a line or a cap (its ends hold the real tops)
             if kind == LINE:
-                top = max(top, -cv - size * (lo - cu), -cv - size * (hi - cu))
+                peak = max(-cv - size * (lo - cu), -cv - size * (hi - cu))
             else:
                 d = max(abs(lo - cu), abs(hi - cu))
-                top = max(top, -cv - math.sqrt(max(size * size - d * d, 0.0)))
+                peak = -cv - math.sqrt(max(size * size - d * d, 0.0))
+            top = max(top, peak)
             # The blade and the floor stand at least ``lowest``: only where the field stands higher is looked at.
+            if peak <= high:
+                continue
+            spans.append((lo, hi, piece))
             x = 0.5 * (lo + hi)
-            if top > high and inside_a < x < inside_b:
+            if inside_a < x < inside_b:
                 level = -value(piece, x)
                 if level > high and _over_blade(level, x, chain, width, radius, floor, witness):
                     return True
         if top - lowest <= MATERIAL_MARGIN - VERDICT_EPS:
             return False
-        for lo, hi, piece in spans:  # near the pieces' ends
+        for lo, hi, piece in spans:  # near the ends of the pieces standing higher
             for x in (lo + WITNESS_INSET, hi - WITNESS_INSET):
                 if lo < x < hi and inside_a < x < inside_b:
                     level = -value(piece, x)
