@@ -9,7 +9,7 @@ import random
 import numpy as np
 import pytest
 
-from freecad_groove.engine.cycles.cycle93_material import FLOOR_TOL, MaterialTop, _sweep, lower_hull
+from freecad_groove.engine.cycles.cycle93_material import FLOOR_TOL, MATERIAL_MARGIN, MaterialTop, _sweep, lower_hull
 
 COLUMNS = 40000
 TOL = 0.002  # mm: the grid misses a peak by up to its spacing times the slopes beside it
@@ -110,6 +110,36 @@ def test_the_closed_form_stand_matches_a_brute_force_one(seed):
     floor = _floor(rng, a, b)
     raised = np.maximum(swept, np.interp(xs, [p[0] for p in floor], [p[1] for p in floor]) - FLOOR_TOL)
     assert _bisected(material, outline, floor) == pytest.approx(float(np.max(field - raised)), abs=TOL)
+
+
+def test_a_stretch_cuts_exactly_when_the_swept_blade_stands_under_the_field_whether_or_not_the_shortcut_answers():
+    """cuts answers many stretches without the sweep (MaterialTop._verdict);
+    each answer is the sweep's (exceeds over the stretch's lower hull), on
+    stretches whose points come in either direction and above their hull,
+    slots cleared where the blade has stood and floors with a step."""
+    answered = {True: 0, False: 0}
+    for seed in range(400):
+        rng = random.Random(seed)
+        w, r, slope, slots, _chain = _case(rng)
+        material = MaterialTop(-30.0, 60.0, slope)
+        for u, bottom in slots:
+            material.clear_slot(u, u, bottom, w, r)
+        material.cuts([(0.0, 0.0)], w, r, [(-100.0, -1e9), (100.0, -1e9)])  # the field built: later slots lower it
+        for u, v in rng.sample(slots, rng.randint(0, len(slots))):
+            material.stand_blade(u + rng.uniform(-0.5, 0.5), v + rng.uniform(-1.0, 1.0), w, r)
+        u0 = rng.uniform(-0.5 * w, slots[-1][0])
+        points = [(u0 + k * rng.uniform(0.05, 0.8), rng.uniform(-6.0, 0.5)) for k in range(rng.randint(1, 6))]
+        if rng.random() < 0.5:
+            points.reverse()  # a pass from the far edge
+        a, b = min(points)[0], max(points)[0] + w
+        floor = _floor(rng, a, b) if rng.random() < 0.7 else [(-100.0, -1e9), (100.0, -1e9)]
+        verdict = material._verdict(points, w, r, floor)
+        swept = material.exceeds(_sweep(lower_hull(points), w, r), floor, MATERIAL_MARGIN)
+        assert material.cuts(points, w, r, floor) == swept, seed
+        assert verdict in (None, swept), seed
+        if verdict is not None:
+            answered[verdict] += 1
+    assert answered[True] > 20 and answered[False] > 20, answered  # both shortcuts were put to the test
 
 
 def test_the_flat_stand_is_the_field_s_highest_point_over_the_blade():

@@ -11,6 +11,7 @@ inside them, so that no chord dips below the boundary.
 """
 
 import math
+from math import sqrt as _sqrt
 from typing import List, NamedTuple, Optional, Sequence, Tuple
 
 Point = Tuple[float, float]
@@ -39,31 +40,35 @@ def value(curve: Optional[Curve], u: float) -> float:
     """The curve's level at u (-inf for no curve: no material under the blade)."""
     if curve is None:
         return -math.inf
-    if curve.kind == LINE:
-        return curve.cv + curve.size * (u - curve.cu)
-    d = u - curve.cu
-    h = curve.size * curve.size - d * d
-    root = math.sqrt(h) if h > 0 else 0.0
-    return curve.cv + root if curve.kind == CAP else curve.cv - root
+    _lo, _hi, kind, cu, cv, size = curve  # one unpacking: this runs for every point of every envelope
+    if kind == LINE:
+        return cv + size * (u - cu)
+    d = u - cu
+    h = size * size - d * d
+    root = _sqrt(h) if h > 0 else 0.0
+    return cv + root if kind == CAP else cv - root
 
 
 def _line_line(p: Curve, q: Curve) -> List[float]:
-    den = p.size - q.size
+    _plo, _phi, _pk, pu, pv, ps = p
+    _qlo, _qhi, _qk, qu, qv, qs = q
+    den = ps - qs
     if den == 0:
         return []
-    return [(q.cv - p.cv + p.size * p.cu - q.size * q.cu) / den]
+    return [(qv - pv + ps * pu - qs * qu) / den]
 
 
 def _line_circle(line: Curve, circle: Curve) -> List[float]:
     """u where the line meets the whole circle (a tangency counts once)."""
-    s = line.size
-    k = line.cv + s * (circle.cu - line.cu) - circle.cv  # line's height over the centre
+    _llo, _lhi, _lk, lu, lv, s = line
+    _clo, _chi, _ck, cu, cv, r = circle
+    k = lv + s * (cu - lu) - cv  # line's height over the centre
     a = 1 + s * s
-    disc = a * circle.size * circle.size - k * k
-    if disc < -1e-12 * a * circle.size * circle.size:
+    disc = a * r * r - k * k
+    if disc < -1e-12 * a * r * r:
         return []
-    root = math.sqrt(disc) if disc > 0 else 0.0
-    return [circle.cu + (-s * k - root) / a, circle.cu + (-s * k + root) / a]
+    root = _sqrt(disc) if disc > 0 else 0.0
+    return [cu + (-s * k - root) / a, cu + (-s * k + root) / a]
 
 
 def _circle_circle(p: Curve, q: Curve) -> List[float]:
@@ -85,22 +90,23 @@ def _circle_circle(p: Curve, q: Curve) -> List[float]:
 def crossings(p: Curve, q: Curve) -> List[float]:
     """u where the two curves may meet: where their lines or whole circles
     do (a superset of where the half circles do)."""
-    if p.kind == LINE:
-        return _line_line(p, q) if q.kind == LINE else _line_circle(p, q)
-    if q.kind == LINE:
+    if p[2] == LINE:  # p.kind
+        return _line_line(p, q) if q[2] == LINE else _line_circle(p, q)
+    if q[2] == LINE:
         return _line_circle(q, p)
     return _circle_circle(p, q)
 
 
 def slope(curve: Curve, u: float) -> float:
     """dv/du of the curve at u (infinite where a circle stands vertical)."""
-    if curve.kind == LINE:
-        return curve.size
-    d = u - curve.cu
-    h = curve.size * curve.size - d * d
+    _lo, _hi, kind, cu, _cv, size = curve
+    if kind == LINE:
+        return size
+    d = u - cu
+    h = size * size - d * d
     if h <= 0:
-        return -math.inf * d * curve.kind if d else 0.0
-    return -d / math.sqrt(h) * curve.kind
+        return -math.inf * d * kind if d else 0.0
+    return -d / _sqrt(h) * kind
 
 
 def _rises(p: Curve, q: Curve, u: float) -> bool:
@@ -119,9 +125,16 @@ def _winner(active: Sequence[Curve], u: float) -> Optional[Curve]:
     of those tied at u, the one rising above the others."""
     best, level = None, -math.inf
     for curve in active:
-        if not curve.lo <= u < curve.hi:
+        lo, hi, kind, cu, cv, size = curve
+        if not lo <= u < hi:
             continue
-        v = value(curve, u)
+        if kind == LINE:  # value(curve, u), written out
+            v = cv + size * (u - cu)
+        else:
+            d = u - cu
+            h = size * size - d * d
+            root = _sqrt(h) if h > 0 else 0.0
+            v = cv + root if kind == CAP else cv - root
         if v > level + TIE or (best is not None and v > level - TIE and _rises(curve, best, u)):
             best, level = curve, max(v, level)
     return best
@@ -132,19 +145,21 @@ def _next_event(curves: Sequence[Curve], start: int, active: Sequence[Curve], to
     """The first u after ``u`` (at most ``stop``) where another curve may rise
     above ``top``: where it starts at or above it, or crosses it rising."""
     for curve in active:
-        if curve is top or curve.hi <= u:
+        hi = curve[1]  # curve.hi
+        if curve is top or hi <= u:
             continue
         for x in crossings(curve, top):
-            if u < x < stop and x < curve.hi and _rises(curve, top, x):
+            if u < x < stop and x < hi and _rises(curve, top, x):
                 stop = x
     for index in range(start, len(curves)):
         curve = curves[index]
-        if curve.lo >= stop:
+        lo, hi = curve[0], curve[1]
+        if lo >= stop:
             break
-        if value(curve, curve.lo) >= value(top, curve.lo) - TIE:
-            return curve.lo  # the curves are sorted by start: none starts earlier
+        if value(curve, lo) >= value(top, lo) - TIE:
+            return lo  # the curves are sorted by start: none starts earlier
         for x in crossings(curve, top):
-            if curve.lo < x < stop and x < curve.hi and _rises(curve, top, x):
+            if lo < x < stop and x < hi and _rises(curve, top, x):
                 stop = x
     return stop
 
@@ -158,20 +173,21 @@ def upper_envelope(curves: List[Curve], lo: float, hi: float) -> Tuple[List[floa
     pieces: List[Optional[Curve]] = []
     active: List[Curve] = []
     k, u = 0, lo
-    budget = 100 * (len(curves) + 10) ** 2  # each pair of curves crosses at most twice
+    count = len(curves)
+    budget = 100 * (count + 10) ** 2  # each pair of curves crosses at most twice
     while u < hi:
         budget -= 1
         if budget < 0:
             raise RuntimeError("envelope: no progress at u=%r" % u)
-        while k < len(curves) and curves[k].lo <= u:
+        while k < count and curves[k][0] <= u:  # curves[k].lo
             active.append(curves[k])
             k += 1
-        active = [c for c in active if c.hi > u]
+        active = [c for c in active if c[1] > u]  # c.hi
         top = _winner(active, u)
         if top is None:
-            nxt = curves[k].lo if k < len(curves) else hi
+            nxt = curves[k][0] if k < count else hi
         else:
-            nxt = _next_event(curves, k, active, top, u, min(top.hi, hi))
+            nxt = _next_event(curves, k, active, top, u, min(top[1], hi))
         if not pieces or pieces[-1] is not top:
             starts.append(u)
             pieces.append(top)

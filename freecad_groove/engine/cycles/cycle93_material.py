@@ -52,6 +52,11 @@ MATERIAL_MARGIN = 0.0005
 FLOOR_TOL = PATH_TOLERANCE
 # A blade side within this of a wall only slides along it.
 SIDE_EPS = 1e-7
+# cuts' shortcut (MaterialTop._verdict) answers only this clear of MATERIAL_MARGIN: far over the rounding of
+# exceeds' evaluation (about 1e-13 at these sizes), so the two never part.
+VERDICT_EPS = 1e-9
+# How far in from a field piece's ends the shortcut looks for material standing over the blade.
+WITNESS_INSET = 1e-6
 
 
 class MaterialTop:
@@ -61,7 +66,7 @@ class MaterialTop:
 
     def __init__(self, lo: float, hi: float, slope: float) -> None:
         self.lo, self.hi = lo, hi
-        self._curves = [Curve(lo, hi, LINE, 0.0, 0.0, -slope)]
+        self._curves: Optional[List[Curve]] = [Curve(lo, hi, LINE, 0.0, 0.0, -slope)]
         self._starts: List[float] = []
         self._pieces: List[Optional[Curve]] = []
         self.passed: Optional[Tuple[Envelope, float, float]] = None  # see note_pass
@@ -80,7 +85,7 @@ class MaterialTop:
         if self._starts:
             self._lower(slot, max(a, self.lo), min(b + width, self.hi))
         else:
-            self._curves.extend(slot)
+            self._curve_list().extend(slot)
 
     def stand_blade(self, u: float, v: float, width: float, radius: float) -> None:
         """The blade has stood at (u, v): a slot there, unless one was cleared
@@ -102,34 +107,91 @@ class MaterialTop:
         sub_starts, sub_pieces = upper_envelope(local, a, b)
         head = k0 + 1 if starts[k0] < a else k0
         tail_starts, tail_pieces = ([b] + starts[kb + 1:], [pieces[kb]] + pieces[kb + 1:]) if b < self.hi else ([], [])
-        new_starts, new_pieces = [], []
-        for u, piece in zip(starts[:head] + sub_starts + tail_starts, pieces[:head] + sub_pieces + tail_pieces):
-            if new_pieces and new_pieces[-1] is piece:
-                continue
-            new_starts.append(u)
-            new_pieces.append(piece)
-        self._starts, self._pieces = new_starts, new_pieces
-        self._curves = list({id(c): c for c in new_pieces if c is not None}.values())
+        # No piece follows itself in any of the three parts: only where they join may one run on.
+        new_starts, new_pieces = _joined(starts[:head], pieces[:head], sub_starts, sub_pieces)
+        self._starts, self._pieces = _joined(new_starts, new_pieces, tail_starts, tail_pieces)
+        self._curves = None  # the pieces' curves, taken from them only if ever needed (_field)
 
     def note_pass(self, env: Envelope, lo: float, hi: float) -> None:
         """The roughing contour passes ran over blade positions [lo, hi] on
         ``env`` (``cycle93_passes.covered`` reads it)."""
         self.passed = (env, lo, hi)
 
+    def _curve_list(self) -> List[Curve]:
+        """The curves the field is the envelope of (after a lowering: its pieces' curves, taken when needed)."""
+        if self._curves is None:
+            self._curves = list({id(c): c for c in self._pieces if c is not None}.values())
+        return self._curves
+
     def _field(self) -> Tuple[List[float], List[Optional[Curve]]]:
         if not self._starts:
-            self._starts, self._pieces = upper_envelope(self._curves, self.lo, self.hi)
+            self._starts, self._pieces = upper_envelope(self._curve_list(), self.lo, self.hi)
             # A curve below the field everywhere stays so (slots only lower the material): drop it, so that
             # the next field is built from what stands, not from every slot and pass position so far.
             self._curves = list({id(c): c for c in self._pieces if c is not None}.values())
         return self._starts, self._pieces
 
-    def cuts(self, chain: List[Point], width: float, radius: float, floor: List[Point]) -> bool:
-        """Whether the blade swept along the convex ``chain`` of front
-        positions, never below the material top ``floor`` (the profile its
-        envelope keeps it on), stands under more than MATERIAL_MARGIN of the
-        field."""
-        return self.exceeds(_sweep(chain, width, radius), floor, MATERIAL_MARGIN)
+    def cuts(self, points: List[Point], width: float, radius: float, floor: List[Point]) -> bool:
+        """Whether the blade swept along the lower hull of the front positions
+        ``points`` (a stretch of a pass), never below the material top
+        ``floor`` (the profile its envelope keeps it on), stands under more
+        than MATERIAL_MARGIN of the field."""
+        verdict = self._verdict(points, width, radius, floor)
+        if verdict is not None:
+            return verdict
+        return self.exceeds(_sweep(lower_hull(points), width, radius), floor, MATERIAL_MARGIN)
+
+    def _verdict(self, chain: List[Point], width: float, radius: float, floor: List[Point]) -> Optional[bool]:
+        """``cuts``' answer where it is plain without the sweep, else None
+        (``chain``: the stretch's points, the hull's or any above it).
+        True: at a piece of the field (its middle, or by its ends) it stands
+        more than MATERIAL_MARGIN over the floor and over the blade standing
+        on the chain there (``_over_blade``: at least the outline), so exceeds,
+        exact, finds it too. False: the field's highest point over the swept
+        columns stands at most MATERIAL_MARGIN over the chain's lowest point
+        (the outline is nowhere lower). Both by VERDICT_EPS: their rounding
+        and exceeds' own never part them."""
+        starts, pieces = self._field()
+        a, b = min(chain)[0] + SIDE_EPS, max(chain)[0] + width - SIDE_EPS  # the hull's first and last u
+        inside_a, inside_b = a + WITNESS_INSET, b - WITNESS_INSET
+        lowest = min(v for _u, v in chain)
+        witness, high = MATERIAL_MARGIN + VERDICT_EPS, lowest + MATERIAL_MARGIN + VERDICT_EPS
+        k = max(bisect_right(starts, a) - 1, 0)
+        count, top, spans = len(pieces), -math.inf, []
+        while k < count:
+            lo = max(starts[k], a)
+            if lo >= b:
+                break
+            hi = min(starts[k + 1], b) if k + 1 < count else b
+            piece = pieces[k]
+            k += 1
+            if piece is None:
+                continue
+            _plo, _phi, kind, cu, cv, size = piece  # stored negated: a line or a cap (its ends hold the real tops)
+            if kind == LINE:
+                peak = max(-cv - size * (lo - cu), -cv - size * (hi - cu))
+            else:
+                d = max(abs(lo - cu), abs(hi - cu))
+                peak = -cv - math.sqrt(max(size * size - d * d, 0.0))
+            top = max(top, peak)
+            # The blade and the floor stand at least ``lowest``: only where the field stands higher is looked at.
+            if peak <= high:
+                continue
+            spans.append((lo, hi, piece))
+            x = 0.5 * (lo + hi)
+            if inside_a < x < inside_b:
+                level = -value(piece, x)
+                if level > high and _over_blade(level, x, chain, width, radius, floor, witness):
+                    return True
+        if top - lowest <= MATERIAL_MARGIN - VERDICT_EPS:
+            return False
+        for lo, hi, piece in spans:  # near the ends of the pieces standing higher
+            for x in (lo + WITNESS_INSET, hi - WITNESS_INSET):
+                if lo < x < hi and inside_a < x < inside_b:
+                    level = -value(piece, x)
+                    if level > high and _over_blade(level, x, chain, width, radius, floor, witness):
+                        return True
+        return None
 
     def stand(self, u: float, v: float, width: float) -> float:
         """Highest stand of the field above level v over the columns (u, u + w),
@@ -161,18 +223,66 @@ class MaterialTop:
         cuts = {x for piece in outline for x in piece[:2] if a < x < b}
         cuts.update(x for x in starts[bisect_right(starts, a):bisect_right(starts, b)] if x < b)
         xs = sorted(cuts.union((a, b)))
-        j = 0
+        j, last = 0, len(outline) - 1
+        k, count = 0, len(starts)
         for x0, x1 in zip(xs, xs[1:]):
             mid = 0.5 * (x0 + x1)
-            while outline[j][1] <= mid and j + 1 < len(outline):
+            while outline[j][1] <= mid and j < last:
                 j += 1
-            field, low = pieces[max(bisect_right(starts, mid) - 1, 0)], outline[j][2]
-            if field is None:
-                continue
-            top = max(-value(field, x) - value(low, x) for x in _candidates(field, low, x0, x1))
-            if top > limit and _floored(field, low, floor, x0, x1, limit):
+            while k + 1 < count and starts[k + 1] <= mid:  # the field's piece over mid (mid only grows)
+                k += 1
+            field = pieces[k]
+            if field is not None and _stands_over(field, outline[j][2], x0, x1, limit) \
+                    and _floored(field, outline[j][2], floor, x0, x1, limit):
                 return True
         return False
+
+
+def _joined(starts: List[float], pieces: List[Optional[Curve]], more_starts: List[float],
+            more_pieces: List[Optional[Curve]]) -> Tuple[List[float], List[Optional[Curve]]]:
+    """Two runs of field pieces one after the other, the second's first piece
+    dropped where it is the first's last (it runs on)."""
+    if pieces and more_pieces and pieces[-1] is more_pieces[0]:
+        more_starts, more_pieces = more_starts[1:], more_pieces[1:]
+    return starts + more_starts, pieces + more_pieces
+
+
+def _stands_over(field: Curve, low: Curve, x0: float, x1: float, limit: float) -> bool:
+    """Whether the field stands more than ``limit`` above the outline ``low``
+    at one of ``_candidates`` (where over (x0, x1) their difference peaks)."""
+    return any(-value(field, x) - value(low, x) > limit for x in _candidates(field, low, x0, x1))
+
+
+def _blade_level(x: float, u: float, v: float, w: float, r: float) -> float:
+    """Level of the front outline of the blade at (u, v) over column x (inf beside it)."""
+    if x < u or x > u + w:
+        return math.inf
+    d = u + r - x if x < u + r else x - (u + w - r) if x > u + w - r else 0.0
+    return v + r - math.sqrt(max(r * r - d * d, 0.0)) if d > 0 else v
+
+
+def _over_blade(level: float, x: float, chain: List[Point], w: float, r: float, floor: List[Point],
+                margin: float) -> bool:
+    """Whether ``level`` (the field's at column x) stands more than ``margin``
+    over the floor less FLOOR_TOL there and over a blade standing on
+    ``chain`` (centred over x on a segment, or at a point: all on or above
+    the chain's lower hull, so at least the outline swept along it). Never
+    where x is not strictly inside a floor piece: exceeds does not look
+    there."""
+    i = bisect_right(floor, (x, math.inf)) - 1
+    if i < 0 or i + 1 >= len(floor) or not floor[i][0] < x < floor[i + 1][0]:
+        return False
+    (u0, v0), (u1, v1) = floor[i], floor[i + 1]
+    if level - (v0 - FLOOR_TOL + (v1 - v0) / (u1 - u0) * (x - u0)) <= margin:
+        return False
+    centre = x - 0.5 * w
+    for (p0, q0), (p1, q1) in zip(chain, chain[1:]):
+        if (p0 < centre < p1 or p1 < centre < p0) and level - (q0 + (q1 - q0) * (centre - p0) / (p1 - p0)) > margin:
+            return True
+    for u, v in chain:
+        if x - w <= u <= x and level - _blade_level(x, u, v, w, r) > margin:  # a blade over x
+            return True
+    return False
 
 
 def _candidates(field: Curve, low: Curve, x0: float, x1: float) -> List[float]:

@@ -33,7 +33,7 @@ from typing import TYPE_CHECKING, Callable, Dict, List, Optional, Tuple
 
 from ..envelope import Envelope, PathPoint, on_circles, path_moves, writes_arcs
 from .cycle93_constants import PATH_TOLERANCE, REENTRY_CLEARANCE_INCH, REENTRY_CLEARANCE_MM
-from .cycle93_material import SIDE_EPS, MaterialTop, lower_hull
+from .cycle93_material import SIDE_EPS, MaterialTop
 from .cycle93_profile import split_at
 
 if TYPE_CHECKING:  # the geometry imports this module
@@ -153,7 +153,7 @@ def _stretches(pts: List[Point], groups: List[Tuple[int, int]], material: Materi
     """[first, last] point indexes of the runs of stretches that cut
     something, in pass order, and the level the blade may rapid down to over
     each run's first point (``entry``, taken before the run cuts). A stretch
-    is tested whole (the blade swept along its lower hull, below it) against
+    is tested whole (the blade swept along its lower hull, below it; MaterialTop.cuts) against
     what the plunges and the stretches fed before it left: the blade standing
     at the end of each fed stretch that ends at one of the path's vertices
     (u in ``corners``, sorted: the foot of a flank or a corner, where a pass
@@ -166,7 +166,7 @@ def _stretches(pts: List[Point], groups: List[Tuple[int, int]], material: Materi
     for first, last in groups:
         part = pts[first:last + 1]
         lo, hi = min(u for u, _v in part), max(u for u, _v in part)
-        if covered(material, env, lo, hi) or not material.cuts(lower_hull(part), width, radius, top):
+        if covered(material, env, lo, hi) or not material.cuts(part, width, radius, top):
             continue
         if runs and runs[-1][1] == first:
             runs[-1][1] = last
