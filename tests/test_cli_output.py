@@ -98,6 +98,13 @@ def test_a_broken_pipe_ends_quietly_with_status_1():
 # ---------------------------------------------------------------- signals
 
 
+def default_signals():
+    """In the child: the signals tested at their default disposition, whatever this process inherited (under
+    nohup SIGHUP is ignored, and the command line keeps a signal ignored at its start ignored)."""
+    for sig, _status in SIGNALS:
+        signal.signal(sig, signal.SIG_DFL)
+
+
 def wait_for(condition, child, what):
     deadline = time.monotonic() + 60
     while not condition():
@@ -109,7 +116,8 @@ def wait_for(condition, child, what):
 @pytest.mark.parametrize("sig, status", SIGNALS)
 def test_a_signal_while_reading_the_program(sig, status):
     child = subprocess.Popen([sys.executable, "-m", "freecad_groove", "expand", "-", "--dialect", "fanuc"], cwd=ROOT,
-                             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+                             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             preexec_fn=default_signals)
     try:
         # More than a pipe holds: written only once the command line reads the
         # program, with its handlers in place; stdin stays open, it waits for more.
@@ -121,6 +129,26 @@ def test_a_signal_while_reading_the_program(sig, status):
         if child.poll() is None:
             child.kill()
     assert (child.returncode, out, err) == (status, b"", b"<stdin>:0: interrupted\n")
+
+
+def test_a_hangup_ignored_from_the_start_stays_ignored_as_under_nohup():
+    def ignore_hangup():
+        default_signals()
+        signal.signal(signal.SIGHUP, signal.SIG_IGN)
+
+    child = subprocess.Popen([sys.executable, "-m", "freecad_groove", "expand", "-", "--dialect", "fanuc"], cwd=ROOT,
+                             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             preexec_fn=ignore_hangup)
+    try:
+        child.stdin.write(b"G21 G98\n" + b"(a comment line)\n" * 20000)
+        child.stdin.flush()
+        child.send_signal(signal.SIGHUP)
+        out, err = child.communicate(b"G0 X80. Z5.\nG1 X40. F100.\nM30\n", timeout=60)
+    finally:
+        if child.poll() is None:
+            child.kill()
+    assert child.returncode == 0, err
+    assert b"X40" in out and b"interrupted" not in err
 
 
 # The command line in a child whose file writes pause after the temporary file
@@ -154,7 +182,7 @@ def paused_writer(tmp_path, named):
     env = dict(os.environ, PAUSED=str(paused), NAMED="1" if named else "0")
     child = subprocess.Popen([sys.executable, "-c", PAUSED_WRITER, "expand", SEED, "--dialect", "sinumerik",
                               "--tool-width", "3", "-o", str(out)], cwd=ROOT, stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE, env=env)
+                             stderr=subprocess.PIPE, env=env, preexec_fn=default_signals)
     wait_for(paused.exists, child, "the paused write")
     return child, out
 
