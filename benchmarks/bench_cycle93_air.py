@@ -57,6 +57,9 @@ class FullPasses:
     def clear_slot(self, *args):
         pass
 
+    def stand_blade(self, *args):
+        pass
+
     def note_pass(self, *args):
         pass
 

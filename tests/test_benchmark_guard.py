@@ -185,3 +185,15 @@ def test_a_gui_benchmark_s_steps_each_run_in_a_freecad_gui_of_their_own_with_the
     (preview,) = guard_suite.select(["preview"], quick=False)
     guard_run.Runner("/ref", "python3").in_freecad(preview, "/checkout", "/share", {})
     assert " && " not in ran[0][ran[0].index("-c") + 1] and "bench/bench_preview.py" in ran[0][ran[0].index("-c") + 1]
+
+
+def test_the_material_tracking_benchmark_runs_with_its_stub_standing_in_for_material_top():
+    # bench_cycle93_air.py swaps MaterialTop for a stub that cuts every stretch; when MaterialTop gained
+    # stand_blade the stub did not, and the benchmark failed on every tree, unnoticed, until the guard said so.
+    import subprocess
+
+    proc = subprocess.run([sys.executable, os.path.join(ROOT, "benchmarks", "bench_cycle93_air.py"), "--calls", "1"],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    rows = [line.split() for line in proc.stdout.splitlines()[2:]]
+    assert [row[0] for row in rows] == ["rect", "R1", "flanks", "ANGC", "narrow", "deep", "all"], proc.stdout
