@@ -44,6 +44,23 @@ def made_by_qt(objects: list) -> list:
     return list(found.values())
 
 
+def made_by_python(objects: list) -> list:
+    """The wrappers of the children of ``objects`` (None allowed) that Python made: the error, warning and row
+    message labels, the "Groove from the model" box, a Python-made form's fields. A panel holds them until the
+    dialog is gone: FreeCAD 1.1 aborted twice inside shiboken's Object::destroy while Qt deleted such a widget
+    with the dialog (a wrapper freed in the middle of its own destroy: PySide records a widget inserted into a
+    layout the .ui file made as a child of the layout's wrapper, which comes and goes); one more reference keeps
+    the wrapper whole until shiboken has let go of the widget."""
+    found = {}
+    for obj in objects:
+        if obj is None or not shiboken.isValid(obj):
+            continue
+        for item in obj.findChildren(QtCore.QObject):
+            if shiboken.createdByPython(item):
+                found[id(item)] = item
+    return list(found.values())
+
+
 def list_items(objects: list) -> list:
     """The wrappers of the items of every list and table widget in ``objects`` (None allowed): items are no
     QObjects, so made_by_qt cannot find them, and a page that lives on in a reference cycle (CAM's base
@@ -81,10 +98,19 @@ def drop_stale(form: object) -> None:
         if not shiboken.createdByPython(item):
             shiboken.invalidate(item)
     # FreeCAD's loader set an attribute of the form for each named widget (form.width): wrappers taken the same
-    # way, now forgotten too, so each is taken again.
+    # way, now forgotten too, so each is taken again. One may be a stale wrapper of no QObject at all (a list
+    # item's: FreeCAD 1.0 handed form.chamferMeasure out as a QListWidgetItem), which findChildren cannot
+    # return: forgotten and taken again as well.
     for name, value in list(vars(form).items()):
-        if isinstance(value, QtCore.QObject) and not shiboken.isValid(value):
-            setattr(form, name, form.findChild(QtCore.QObject, name))
+        if not type(value).__module__.startswith(("PySide", "shiboken")):
+            continue  # not a wrapper: the form's own Python attributes
+        if isinstance(value, QtCore.QObject) and shiboken.isValid(value):
+            continue
+        if shiboken.isValid(value):
+            shiboken.invalidate(value)
+        found = form.findChild(QtCore.QObject, name)
+        if found is not None:
+            setattr(form, name, found)
 
 
 def collect_closed_panels() -> None:

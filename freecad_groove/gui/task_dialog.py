@@ -46,6 +46,8 @@ class AddonTaskPanel(qt_wrappers.ForgetsButtonBox, PathOpGui.TaskPanel):
         for page in self.featurePages:  # FreeCAD's own pages too, now filled (1.1's tool controller editor)
             fit_narrow_docks(page.form)
         self.op_page.add_message_rows()  # now: the fields show the op's values, a change is the user's
+        # Held by the panel, which FreeCAD's dialog keeps until its forms are deleted (qt_wrappers.py).
+        self.made_by_python = qt_wrappers.made_by_python([page.form for page in self.featurePages])
 
     @property
     def valid(self) -> bool:
