@@ -113,22 +113,28 @@ def wait_for(condition, child, what):
         time.sleep(0.01)
 
 
-@pytest.mark.parametrize("sig, status", SIGNALS)
-def test_a_signal_while_reading_the_program(sig, status):
+def signalled_while_reading(sig, preexec_fn, rest=None):
+    """(exit status, stdout, stderr) of the command line expanding stdin, sent ``sig`` while it reads the
+    program; ``rest``: more of the program, written after the signal (None: stdin stays open)."""
     child = subprocess.Popen([sys.executable, "-m", "freecad_groove", "expand", "-", "--dialect", "fanuc"], cwd=ROOT,
                              stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                             preexec_fn=default_signals)
+                             preexec_fn=preexec_fn)
     try:
         # More than a pipe holds: written only once the command line reads the
         # program, with its handlers in place; stdin stays open, it waits for more.
         child.stdin.write(b"G21 G98\n" + b"(a comment line)\n" * 20000)
         child.stdin.flush()
         child.send_signal(sig)
-        out, err = child.communicate(timeout=60)
+        out, err = child.communicate(rest, timeout=60)
     finally:
         if child.poll() is None:
             child.kill()
-    assert (child.returncode, out, err) == (status, b"", b"<stdin>:0: interrupted\n")
+    return child.returncode, out, err
+
+
+@pytest.mark.parametrize("sig, status", SIGNALS)
+def test_a_signal_while_reading_the_program(sig, status):
+    assert signalled_while_reading(sig, default_signals) == (status, b"", b"<stdin>:0: interrupted\n")
 
 
 def test_a_hangup_ignored_from_the_start_stays_ignored_as_under_nohup():
@@ -136,18 +142,8 @@ def test_a_hangup_ignored_from_the_start_stays_ignored_as_under_nohup():
         default_signals()
         signal.signal(signal.SIGHUP, signal.SIG_IGN)
 
-    child = subprocess.Popen([sys.executable, "-m", "freecad_groove", "expand", "-", "--dialect", "fanuc"], cwd=ROOT,
-                             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                             preexec_fn=ignore_hangup)
-    try:
-        child.stdin.write(b"G21 G98\n" + b"(a comment line)\n" * 20000)
-        child.stdin.flush()
-        child.send_signal(signal.SIGHUP)
-        out, err = child.communicate(b"G0 X80. Z5.\nG1 X40. F100.\nM30\n", timeout=60)
-    finally:
-        if child.poll() is None:
-            child.kill()
-    assert child.returncode == 0, err
+    status, out, err = signalled_while_reading(signal.SIGHUP, ignore_hangup, b"G0 X80. Z5.\nG1 X40. F100.\nM30\n")
+    assert status == 0, err
     assert b"X40" in out and b"interrupted" not in err
 
 

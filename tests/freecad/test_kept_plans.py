@@ -210,13 +210,16 @@ def test_a_recompute_reads_the_tool_bit_once_per_change(shop, monkeypatch):
     assert reads[0] == read
 
 
+def _change_ids(changes):
+    """The test ids of (change, recompute) pairs: "stock_shape-recomputed"."""
+    return ["%s-%s" % (f.__name__.lstrip("_"), "recomputed" if r else "not recomputed") for f, r in changes]
+
+
 SAVED_CHANGES = [(_op_width, False), (_stock_shape, True), (_stock_shape, False), (_tool_bit_width, False),
                  (_feed_from_the_tool_controller, False)]
 
 
-@pytest.mark.parametrize("change, recompute", SAVED_CHANGES,
-                         ids=["%s-%s" % (f.__name__.lstrip("_"), "recomputed" if r else "not recomputed")
-                              for f, r in SAVED_CHANGES])
+@pytest.mark.parametrize("change, recompute", SAVED_CHANGES, ids=_change_ids(SAVED_CHANGES))
 def test_a_document_saved_after_an_input_changed_reopens_with_the_change(shop, tmp_path, plan_calls, change,
                                                                           recompute):
     # the plans' fingerprint is taken when the document is saved: never of inputs changed since they were planned
@@ -253,9 +256,7 @@ REOPENED_CHANGES = [(_model_shape, False), (_part_shape, True), (_stock_shape, F
                     (_tool_bit_width, False)]
 
 
-@pytest.mark.parametrize("change, recompute", REOPENED_CHANGES,
-                         ids=["%s-%s" % (f.__name__.lstrip("_"), "recomputed" if r else "not recomputed")
-                              for f, r in REOPENED_CHANGES])
+@pytest.mark.parametrize("change, recompute", REOPENED_CHANGES, ids=_change_ids(REOPENED_CHANGES))
 def test_a_change_after_reopening_and_posting_is_written_by_the_next_post(shop, tmp_path, plan_calls, change,
                                                                           recompute):
     # what the observer heard while the document was restored is counted at the first post; a change after that
