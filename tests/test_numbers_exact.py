@@ -38,3 +38,36 @@ def test_every_double_is_written_out_as_its_shortest_exact_decimal(value):
 def test_plain_values_as_a_programmer_writes_them():
     assert [format_exact(v) for v in (35.0, 0.1, 1e-07, -0.0, -2.5, 1e16, 3, math.inf)] == [
         "35", "0.1", "0.0000001", "0", "-2.5", "10000000000000000", "3", "inf"]
+
+
+# A CYCLE93 call's text (Cycle93.emit) keeps the texts of the values it met: every parameter is still
+# written out exactly, whatever was met before and when the kept texts are dropped.
+_PARAMETER = st.floats(allow_nan=False, allow_infinity=False, min_value=-1e20, max_value=1e20) | st.sampled_from(
+    [0.0, -0.0, 5.0, 0.1, 1e-07])
+
+
+@given(st.lists(st.tuples(_PARAMETER, _PARAMETER, _PARAMETER), min_size=1, max_size=6), st.integers(1, 4))
+def test_a_call_is_written_out_exactly_whatever_calls_came_before(calls, kept):
+    from freecad_groove.engine.cycles import cycle93
+
+    saved = cycle93.EXACT_TEXTS_KEPT
+    cycle93.EXACT_TEXTS_KEPT = kept  # drop the kept texts often
+    try:
+        for axfa, axsa, rco1 in calls:
+            call = cycle93.Cycle93(axfa=axfa, axsa=axsa, widg=10.0, depg=6.0, rco1=rco1, typ=5, vrt=1.0)
+            # AXFA, AXSA, WIDG, DEPG, ANGC..ANG2 not given, RCO1, RCO2..DWT not given, TYP, VRT
+            parameters = [written_out(axfa), written_out(axsa), "10", "6"] + [""] * 3 + [written_out(rco1)] + \
+                [""] * 7 + ["5", "1"]
+            assert call.emit() == "CYCLE93(%s)" % ", ".join(parameters)
+    finally:
+        cycle93.EXACT_TEXTS_KEPT = saved
+
+
+def test_zero_and_minus_zero_and_whole_numbers_read_the_same_in_a_call():
+    from freecad_groove.engine.cycles.cycle93 import Cycle93
+
+    texts = [Cycle93(axfa=a, axsa=b, widg=w, depg=6, typ=5, vrt=1).emit()
+             for a, b, w in ((0.0, 5, 10.0), (-0.0, 5.0, 10), (0, 5.5, 10.0))]
+    unset = ", " * 12  # ANGC to DWT (11) not given
+    assert texts == ["CYCLE93(0, 5, 10, 6" + unset + "5, 1)", "CYCLE93(0, 5, 10, 6" + unset + "5, 1)",
+                     "CYCLE93(0, 5.5, 10, 6" + unset + "5, 1)"]

@@ -4,8 +4,11 @@ hand, number format, modal word dropping, errors, speed, and LinuxCNC's rs274
 reading what the LinuxCNC writer writes."""
 
 import math
+import re
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from freecad_groove.engine.errors import ProgramError
 from freecad_groove.engine.moves import FEED, RAPID, MachineState, Move, dwell, feed, rapid
@@ -170,6 +173,30 @@ def test_writer_state_kept_after_an_error():
     with pytest.raises(ProgramError):
         writer.write([rapid(40, 60), rapid(math.nan, 0)])
     assert writer.z_text == "60." and writer.motion == RAPID
+
+
+# Straight moves to rounded places, either axis left out (None: it does not move), rapids and feeds.
+_AXIS = st.one_of(st.none(), st.integers(-400, 400).map(lambda k: k / 8.0))
+_STRAIGHT = st.tuples(st.sampled_from([RAPID, FEED]), _AXIS, _AXIS, st.sampled_from([None, 0.1, 0.2]))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(_STRAIGHT, max_size=12), st.sampled_from(["linuxcnc", "fanuc", "sinumerik", "ab9"]),
+       st.booleans())
+def test_moves_written_in_one_go_are_the_moves_written_one_at_a_time(steps, target, known):
+    # the posts write a groove's link and retreat rapids in one write(); a rapid at a time (move()) is the
+    # reference: the same lines, the same modal state after
+    state = AT_START if known else MachineState(x=None, z=None, feed=0.2)
+    together, alone = Writer.from_state(state, target), Writer.from_state(state, target)
+    moves = [Move(kind, x, z, f) for kind, x, z, f in steps if x is not None or z is not None]
+    try:
+        lines = [line for move in moves for line in alone.move(move.kind, move.x, move.z, move.f)]
+    except ProgramError as exc:  # a feed with no F in force: refused the same way
+        with pytest.raises(ProgramError, match=re.escape(str(exc))):
+            together.write(moves)
+        return
+    assert together.write(moves) == lines
+    assert together._modal() == alone._modal()
 
 
 def test_unknown_target():

@@ -62,6 +62,7 @@ same double, without an exponent (Siemens writes exponents as EX).
 """
 
 import math
+import operator
 import re
 from dataclasses import dataclass, fields
 from functools import lru_cache
@@ -150,10 +151,11 @@ class Cycle93(Cycle):
         """The call as the control reads it: every value exactly (the shortest
         decimal that reads back as the same double, no exponent), so
         ``parse(emit(m)) == m``."""
-        values = [getattr(self, name) for name in _FIELD_NAMES]
+        values = _fields_of(self)
         if values[-1] is None:
             values = values[:-1]
-        return "CYCLE93(%s)" % ", ".join("" if v is None else format_exact(v) for v in values)
+        texts = _EXACT_TEXTS
+        return "CYCLE93(%s)" % ", ".join("" if v is None else texts.get(v) or _exact_text(v) for v in values)
 
     @classmethod
     def parse(cls, text: str) -> "Cycle93":
@@ -275,3 +277,18 @@ _cached_geometry.cache_clear = _forget_geometries  # type: ignore[method-assign]
 
 # The call's parameters in order, read once: dataclasses.fields() on every emit() was a tenth of a post's time.
 _FIELD_NAMES = tuple(f.name for f in fields(Cycle93))
+_fields_of = operator.attrgetter(*_FIELD_NAMES)  # the parameters in the call's order, in one call
+
+# format_exact's text of the parameter values met (a post writes each groove's call as a comment: the
+# values repeat from call to call). A value is its own key: 5 and 5.0 are equal and written alike ("5"),
+# as are 0.0 and -0.0 ("0"); NaN never reaches a call (validate) and would never be found.
+_EXACT_TEXTS: dict = {}
+EXACT_TEXTS_KEPT = 4096
+
+
+def _exact_text(value: float) -> str:
+    text = format_exact(value)
+    if len(_EXACT_TEXTS) >= EXACT_TEXTS_KEPT:
+        _EXACT_TEXTS.clear()
+    _EXACT_TEXTS[value] = text
+    return text

@@ -28,7 +28,7 @@ from dataclasses import replace
 from typing import Any, Dict, List, NamedTuple, Optional, Sequence
 
 from ..cycles.cycle93 import WIDTH_STEP_FACTOR
-from ..moves import RAPID, REFERENCE_PLUS, MachineState, Move
+from ..moves import ARCS, FEED, RAPID, REFERENCE_PLUS, MachineState, Move
 from ..numbers import format_decimal
 from ..output.syntax import Target
 from ..output.writer import Writer
@@ -76,6 +76,20 @@ def shifted(move: Move, shift: Shift, f: Optional[float]) -> Move:
     """``move`` measured from the other corner: its end and an arc's centre shifted, its feed ``f``."""
     centre = None if move.centre is None else (move.centre[0] + shift.dx, move.centre[1] + shift.dz)
     return Move(move.kind, move.x + shift.dx, move.z + shift.dz, f, move.p, centre=centre, radius=move.radius)
+
+
+def shifted_moves(moves: List[Move], shift: Shift, feed: float) -> List[Move]:
+    """Every move as ``shifted`` gives it, a FEED move and an arc fed at ``feed``, the others with no F: a
+    post's groove (500 of them in a Job). Without a shift a move that stays as it is is not copied."""
+    if shift.dx != 0.0 or shift.dz != 0.0:
+        return [shifted(m, shift, feed if m.kind == FEED or m.kind in ARCS else None) for m in moves]
+    out = []
+    for m in moves:
+        kind = m.kind
+        f = feed if kind == FEED or kind in ARCS else None
+        out.append(m if m.f == f and m.y is None and m.c is None else
+                   Move(kind, m.x, m.z, f, m.p, None, None, m.centre, m.radius))
+    return out
 
 
 def corner_settings(groove: Any, reference: Optional[str]) -> Settings:

@@ -10,10 +10,10 @@ here they get the post's output, and an error names the op property at fault
 from __future__ import annotations
 
 from dataclasses import replace
-from typing import TYPE_CHECKING, Any, Callable, List, Optional
+from typing import TYPE_CHECKING, Any, Callable, List, Optional, Tuple
 
-from ...engine import DWELL, FEED, CycleError, ProgramError
-from ...engine.moves import ARCS
+from ...engine import DWELL, CycleError, ProgramError
+from ...engine.moves import RAPID, Move
 from ...engine.native import NotNative
 from ...engine.native.cycle93_pecking import (
     PeckingCall,
@@ -21,7 +21,7 @@ from ...engine.native.cycle93_pecking import (
     corner_shift,
     pecking_calls,
     retract_note,
-    shifted,
+    shifted_moves,
 )
 from ...engine.numbers import MM_PER_INCH
 from ...ops.groove.cutting import CuttingData, cutting_data
@@ -110,20 +110,28 @@ class GrooveOutput:
         leaves out is known to be at the start point already)."""
         shift = corner_shift(plan, self.program.options.reference)
         moves = [(None if x is None else x + shift.dx, None if z is None else z + shift.dz) for x, z in plan.link]
-        target = (plan.start.x + shift.dx, plan.start.z + shift.dz)
-        for k, (x, z) in enumerate(moves):
-            last = k == len(moves) - 1
-            here = (self.program.x if x is None else x, self.program.z if z is None else z)
-            if last and not to_start and here == target:
-                return
-            self.program.rapid(x, z)
+        if moves and not to_start and self._reached(moves) == (plan.start.x + shift.dx, plan.start.z + shift.dz):
+            moves.pop()
+        self.rapids(moves)
+
+    def _reached(self, points: List[Tuple[Optional[float], Optional[float]]]) -> Tuple[Any, Any]:
+        """Where the tool is after rapids to ``points`` (x, z; None: that axis does not move)."""
+        return (next((x for x, _z in reversed(points) if x is not None), self.program.x),
+                next((z for _x, z in reversed(points) if z is not None), self.program.z))
 
     def retreat(self, plan: Any) -> None:
         """The op's rapids back to its safe start point after ``plan`` (its
         last groove, which every writer leaves at that groove's start point)."""
         shift = corner_shift(plan, self.program.options.reference)
-        for x, z in plan.retreat:
-            self.program.rapid(x + shift.dx, z + shift.dz)
+        self.rapids([(x + shift.dx, z + shift.dz) for x, z in plan.retreat])
+
+    def rapids(self, points: List[Tuple[Optional[float], Optional[float]]]) -> None:
+        """Rapids to ``points`` (x, z; None: that axis does not move), written in one go: what a rapid at a
+        time writes (the writer's modal words, test_post_rapids), the tool where the last of each axis
+        leaves it."""
+        program = self.program
+        program.add(program.writer.write([Move(RAPID, x, z) for x, z in points]))
+        program.moved(*self._reached(points))
 
     def rapid_to(self, plan: Any, point: Any, force: bool = False) -> None:
         """A rapid to ``point`` (anything with x and z, model coordinates of the plan)."""
@@ -143,7 +151,7 @@ class GrooveOutput:
             program.note("expanded: " + why)
         self.link(plan)
         shift = corner_shift(plan, program.options.reference)
-        moves = [shifted(m, shift, self.feed if m.kind == FEED or m.kind in ARCS else None) for m in plan.moves]
+        moves = shifted_moves(plan.moves, shift, self.feed)
         if program.x is None or program.z is None:  # the link always ends at the start point; this is a guard
             self.rapid_to(plan, plan.start, force=True)
         try:

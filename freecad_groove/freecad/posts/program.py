@@ -3,7 +3,7 @@ coolant, and every object of the post's list handed to the writer it needs
 (a Groove op to :class:`~.grooves.GrooveOutput`, any other Path to
 :class:`~.path_commands.PathCommands`)."""
 
-from typing import Any, NamedTuple, Optional
+from typing import Any, Callable, NamedTuple, Optional
 
 from ... import __version__
 from ...engine import CycleError, ProgramError
@@ -12,7 +12,15 @@ from ...engine.output.program import ProgramBuilder, Spindle
 from ...engine.output.writer import Writer
 from .grooves import GrooveOutput, groove_cutting
 from .lathe_posts import LathePost
-from .objects import groove_op_of, is_fixture_block, is_job, is_tool_controller, label_of, op_property
+from .objects import (
+    groove_op_of,
+    is_fixture_block,
+    is_job,
+    is_tool_controller,
+    label_of,
+    op_property,
+    own_groove_op,
+)
 from .options import Options
 from .path_commands import PathCommands
 from .post_error import PostError, cycle_post_error
@@ -104,6 +112,10 @@ class Program(ProgramBuilder):
     # -- objects
     def item(self, obj: Any) -> None:
         """One object of the post's list: a Job, a tool controller or an op (see the package notes)."""
+        if own_groove_op(obj):  # what the probes below find of a Groove op, known at once
+            if getattr(obj, "Active", True):
+                self._op_item(obj, label_of(obj), obj, False, getattr)
+            return
         if is_job(obj):
             for op in obj.Operations.Group:
                 self.item(op)
@@ -117,40 +129,44 @@ class Program(ProgramBuilder):
         label = label_of(obj)
         if not hasattr(obj, "Path"):
             raise PostError("is not a Path object (pick operations, tool controllers or a Job)", op=label)
+        self._op_item(obj, label, groove_op_of(obj), is_slot_op(obj), op_property)
+
+    def _op_item(self, obj: Any, label: str, groove: Any, slot: bool, read: Callable[..., Any]) -> None:
+        """An op of the post's list: its tool, spindle, comments and coolant around its moves; ``groove``: the
+        Groove op it is or wraps (None: none), ``slot``: a Cylinder slot, ``read``: how to read a property
+        of the op (op_property, or getattr for an op that is no dressup)."""
         # a Cylinder slot's speed is the live tool's (live_tool.py), not the main spindle's
-        slot = is_slot_op(obj)
         if self.pending_spindle is not None and not is_fixture_block(obj):
             if not slot:
                 self.tool_spindle(self.pending_spindle)
             self.pending_spindle = None
-        self.tool_controller(op_property(obj, "ToolController"), spindle=not slot)
+        self.tool_controller(read(obj, "ToolController", None), spindle=not slot)
         if not is_fixture_block(obj):
             self.note(label)
-            extra = op_property(obj, "Comment", "")
+            extra = read(obj, "Comment", "")
             if extra:
                 self.note(str(extra))
-        coolant = COOLANT_CODES.get(str(op_property(obj, "CoolantMode", "None") or "None"))
+        coolant = COOLANT_CODES.get(str(read(obj, "CoolantMode", "None") or "None"))
         if coolant is not None:
             self.m_code(coolant)
-        self._op(obj, label)
+        self._op(obj, label, groove, slot)
         if coolant is not None:
             self.m_code(COOLANT_OFF)
 
-    def _op(self, obj: Any, label: str) -> None:
-        """An op's moves: its grooves (a Groove op, or a dressup of one with native
+    def _op(self, obj: Any, label: str, groove: Any, slot: bool) -> None:
+        """An op's moves: its grooves (``groove``: the Groove op it is, or a dressup wraps, written with native
         cycles) or its Path; any error becomes a PostError naming the op."""
-        groove = groove_op_of(obj)
         try:
             if groove is not None:
                 self.groove_spindle(groove_cutting(groove), label)
-            elif self.tool_state is not None and op_property(obj, "ToolController") is not None and not is_slot_op(obj):
+            elif self.tool_state is not None and op_property(obj, "ToolController") is not None and not slot:
                 self.tool_spindle(op_property(obj, "ToolController"))  # after a groove's own spindle
             if groove is not None and (obj is groove or self.options.native):
                 if obj is not groove:
                     self.note("%s: native cycles from %s; the dressup's changes are not in them"
                               % (label, label_of(groove)))
                 GrooveOutput(self, groove).write()
-            elif is_slot_op(obj):
+            elif slot:
                 SlotOutput(self, obj).write()
             else:
                 PathCommands(self, label).write(obj.Path.Commands)

@@ -115,6 +115,7 @@ class ObjectGroove(KeptPlans, AddonOp):
     """Proxy of a Groove operation (Path::FeaturePython)."""
 
     DECLARED_PROPERTIES = PROPERTIES
+    POSTED_AS = "groove"  # what the posts recognise it by in one lookup (posts/objects.py: own_groove_op)
 
     # -- FreeCAD op API ---------------------------------------------------------
     def opOnChanged(self, obj: object, prop: str) -> None:
