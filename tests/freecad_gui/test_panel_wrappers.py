@@ -14,9 +14,10 @@ import FreeCADGui
 import pytest
 from gui_helpers import close_shop, make_gui_shop, open_panel, process, task_button, wait_for
 from parts import face_name
-from PySide import QtGui
+from PySide import QtCore, QtGui
 
 from freecad_groove import make_groove
+from freecad_groove.gui import qt_wrappers
 from freecad_groove.gui.qt_wrappers import shiboken
 
 Ok, Cancel = QtGui.QDialogButtonBox.Ok, QtGui.QDialogButtonBox.Cancel
@@ -109,3 +110,54 @@ def test_a_new_panel_frees_the_closed_panels_first(shop):
         wait_for(lambda: not FreeCADGui.Control.activeDialog(), what="the panel to close")
     finally:
         gc.enable()
+
+
+LIST_FORM = """<?xml version="1.0" encoding="UTF-8"?>
+<ui version="4.0"><class>Form</class>
+ <widget class="QWidget" name="Form"><layout class="QVBoxLayout" name="layout">
+  <item><widget class="QListWidget" name="offsets">
+   <item><property name="text"><string>G54</string></property></item>
+   <item><property name="text"><string>G55</string></property></item>
+  </widget></item>
+  <item><widget class="QTableWidget" name="tools"><property name="rowCount"><number>1</number></property>
+   <property name="columnCount"><number>2</number></property></widget></item>
+ </layout></widget></ui>
+"""
+
+
+def made_by_qt_form(tmp_path, name):
+    """A form Qt builds from a .ui file (a list of two items, a table of one row), as CAM's panels are."""
+    path = tmp_path / (name + ".ui")
+    path.write_text(LIST_FORM)
+    form = FreeCADGui.PySideUic.loadUi(str(path))
+    table = form.findChild(QtGui.QTableWidget, "tools")
+    table.setItem(0, 0, QtGui.QTableWidgetItem("T1"))
+    return form
+
+
+def delete_in_qt(widget):
+    """Qt deletes ``widget`` (as FreeCAD deletes a closed dialog): shiboken does not hear of it."""
+    widget.deleteLater()
+    QtCore.QCoreApplication.sendPostedEvents(None, QtCore.QEvent.DeferredDelete)
+
+
+def test_a_new_panel_forgets_the_items_of_list_widgets_freecad_deleted(tmp_path):
+    # CAM's Job panel (FreeCAD 1.0) reads its work offset list and tool table item by item and lives on after
+    # FreeCAD deleted its dialog: the item wrappers, which PySide 2's wrapper of the list keeps, stayed mapped
+    # to freed addresses, and a later panel's widgets were handed them (the Apply button as a
+    # QListWidgetItem). A new panel forgets them first. (PySide 6's list keeps no item wrapper: none is left.)
+    closed, kept = made_by_qt_form(tmp_path, "closed"), made_by_qt_form(tmp_path, "kept")
+    closed_list, kept_list = closed.findChild(QtGui.QListWidget), kept.findChild(QtGui.QListWidget)
+    items = [weakref.ref(closed_list.item(row)) for row in range(2)]  # taken as CAM takes them, not held
+    table_item = weakref.ref(closed.findChild(QtGui.QTableWidget).item(0, 0))
+    kept_items = [kept_list.item(0), kept.findChild(QtGui.QTableWidget).item(0, 0)]
+    delete_in_qt(closed)
+    qt_wrappers.collect_closed_panels()
+    left = sum(1 for ref in items + [table_item] if ref() is not None and shiboken.isValid(ref()))
+    left += shiboken.isValid(closed_list)
+    kept_valid = all(shiboken.isValid(w) for w in [kept_list] + kept_items)
+    texts = [kept_list.item(0).text(), kept_items[1].text()]
+    delete_in_qt(kept)
+    qt_wrappers.collect_closed_panels()
+    assert left == 0, "%d wrappers of the closed form's list, items and table item are still mapped" % left
+    assert kept_valid and texts == ["G54", "T1"]
