@@ -117,6 +117,17 @@ def test_inch_digits():
     assert write_moves(moves, "fanuc", state) == ["G00 X0.2469 Z-0.1235"]
 
 
+def test_a_writer_switched_to_inch_writes_the_values_it_met_in_mm_with_the_inch_digits():
+    # write() keeps the text of each value met from call to call (a post writes each groove with a call):
+    # kept for the units' digits only
+    writer = Writer("linuxcnc")
+    assert writer.write([rapid(0.123456, -0.123456)]) == ["G0 X0.2469 Z-0.1235"]
+    writer.set_units(False)
+    assert writer.write([rapid(0.123456, -0.123456)]) == ["X0.24691 Z-0.12346"]
+    writer.set_units(True)
+    assert writer.write([rapid(0.123456, -0.123456), rapid(1.0, -0.123456)]) == ["X0.2469 Z-0.1235", "X2."]
+
+
 def test_metric_digits_fanuc_is_three_decimals():
     state = MachineState(x=1.0, z=0.0)
     assert write_moves([rapid(10.12345, -1.00049)], "fanuc", state) == ["G00 X20.247 Z-1."]

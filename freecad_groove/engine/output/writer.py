@@ -42,7 +42,7 @@ Choices (the manuals leave them open):
 """
 
 import math
-from typing import Iterable, List, Optional, Union
+from typing import Iterable, List, Optional, Tuple, Union
 
 from ..errors import ProgramError
 from ..moves import ARCS, DRESS, DWELL, FEED, RAPID, MachineState, Move
@@ -100,6 +100,9 @@ class Writer(MachineWords):
         self.metric = bool(metric)
         self.digits = self.target.digits(self.metric) if self.fixed_digits is None else self.fixed_digits
         self.x_text = self.y_text = self.z_text = self.f_text = self.c_text = None
+        # write()'s texts of the X, Y, Z, C and F values met (value -> text), kept from call to call (a post
+        # writes each groove with a call of its own): valid for these digits only
+        self.texts: Tuple[dict, dict, dict, dict, dict] = ({}, {}, {}, {}, {})
 
     def sync(self, x: Optional[float] = None, z: Optional[float] = None, feed: Optional[float] = None,
              motion: Optional[str] = None, y: Optional[float] = None, c: Optional[float] = None) -> None:
@@ -287,14 +290,15 @@ class Writer(MachineWords):
     def write(self, moves: Iterable[Move], prefix: str = "") -> List[str]:
         """Lines for ``moves`` (moves.Move); updates the modal state; ``prefix`` before every line (``"/"``:
         block delete). Straight moves are written inline, the words ``_move_lines`` writes, each axis's text
-        formatted once per value (``xs``...: value -> text); the rest goes the general way (``_general``)."""
+        formatted once per value (``texts``: value -> text, kept while the units are); the rest goes the
+        general way (``_general``)."""
         if self.scale != 1.0:
             return [prefix + line for move in moves for line in self._move_lines(move, False)]
         out: List[str] = []
         append, codes, target = out.append, self.target.motion_codes, self.target
         fmt, f_fmt, x_factor = "%%.%df" % self.digits, "%%.%df" % target.feed_digits, self.x_factor
         y_ok, c_ok, c_composite = target.mill, target.c_feed is not None, target.c_feed == C_FEED_COMPOSITE
-        xs, ys, zs, cs, fs, (x_text, y_text, z_text, c_text, f_text, motion) = {}, {}, {}, {}, {}, self._modal()
+        (xs, ys, zs, cs, fs), (x_text, y_text, z_text, c_text, f_text, motion) = self.texts, self._modal()
         fast = True
         try:
             for move in moves:
