@@ -161,7 +161,6 @@ class ForgetsButtonBox:
     FreeCAD made and deletes, leaves no wrapper behind when the panel closes."""
 
     def modifyStandardButtons(self, buttonBox):
-        drop_stale(buttonBox)  # FreeCAD's new box: any wrapper at its buttons' addresses is a deleted object's
         super().modifyStandardButtons(buttonBox)
         # Taken now: when the panel is cleaned up FreeCAD may have deleted the box already (a closed document).
         self.made_by_qt = made_by_qt([buttonBox])

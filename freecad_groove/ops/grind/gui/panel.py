@@ -27,7 +27,6 @@ import PathScripts.PathUtils as PathUtils
 from PySide import QtCore, QtGui
 
 from ....freecad.addon_op import WithValues
-from ....gui import qt_wrappers
 from ....gui.geometry_page import FacesPage
 from ....gui.live_page import LivePage
 from ....gui.widgets import (
@@ -119,7 +118,6 @@ class PlungeGrindPage(LivePage):
             field.setToolTip(translate("App::Property", tooltip))
             grid.addRow(translate(CONTEXT, label_text(name)), field)
         outer.addStretch(1)
-        qt_wrappers.drop_stale(form)  # before anything reads the widgets Qt made in it (addRow's labels)
         fit_narrow_docks(form)
         return form
 

@@ -67,7 +67,6 @@ class SlotBaseGeometryPage(PathOpGui.TaskPanelBaseGeometryPage):
 
     def getForm(self):
         form = super().getForm()
-        qt_wrappers.drop_stale(form)  # before anything reads the widgets Qt made from CAM's .ui file
         add_error_label(form)
         fit_narrow_docks(form)
         return form
@@ -127,7 +126,6 @@ def build_form() -> object:
         label.setWordWrap(True)
         layout.addWidget(label, layout.rowCount(), 0, 1, 2)
     layout.setRowStretch(layout.rowCount(), 1)  # the page's spare height below everything, not between rows
-    qt_wrappers.drop_stale(form)  # before anything reads the widgets Qt made in it (the fields' inner editors)
     fit_narrow_docks(form)
     return form
 
