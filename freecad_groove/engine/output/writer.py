@@ -455,7 +455,7 @@ class Writer(MachineWords):
 
 
 
-CACHED_TEXTS = 32768  # the texts of this many values of an axis are kept while writing
+CACHED_TEXTS = 1024  # the texts of this many values of an axis are kept (Writer.texts), then dropped
 
 
 def _axis_text(cache: dict, value: float, letter: str, scaled: float, fmt: str) -> str:
