@@ -161,3 +161,21 @@ def test_a_new_panel_forgets_the_items_of_list_widgets_freecad_deleted(tmp_path)
     qt_wrappers.collect_closed_panels()
     assert left == 0, "%d wrappers of the closed form's list, items and table item are still mapped" % left
     assert kept_valid and texts == ["G54", "T1"]
+
+
+def test_a_window_whose_wrapper_says_it_is_gone_makes_the_new_panel_forget_nothing(monkeypatch, tmp_path):
+    # FreeCAD 1.0 handed out, among its windows, a wrapper that said its object was gone (test_saved_documents):
+    # reading its children raised and the panel did not open. Its views cannot be told from closed ones then.
+    gone = QtGui.QWidget()
+    shiboken.delete(gone)
+    form = made_by_qt_form(tmp_path, "closed")
+    held = weakref.ref(form.findChild(QtGui.QListWidget).item(0))
+    delete_in_qt(form)
+    real = QtGui.QApplication.topLevelWidgets
+    monkeypatch.setattr(QtGui.QApplication, "topLevelWidgets", staticmethod(lambda: [gone] + list(real())))
+    forgotten = qt_wrappers.forget_closed_views()
+    qt_wrappers.collect_closed_panels()  # and the panel opens: no error
+    monkeypatch.undo()
+    qt_wrappers.collect_closed_panels()
+    assert forgotten == 0
+    assert held() is None or not shiboken.isValid(held()), "forgotten once the windows can be read again"
