@@ -127,8 +127,8 @@ class GrooveOutput:
 
     def rapids(self, points: List[Tuple[Optional[float], Optional[float]]]) -> None:
         """Rapids to ``points`` (x, z; None: that axis does not move), written in one go: what a rapid at a
-        time writes (the writer's modal words, test_post_rapids), the tool where the last of each axis
-        leaves it."""
+        time writes (the writer's modal words: test_writer.py, one go against one at a time), the tool where
+        the last of each axis leaves it."""
         program = self.program
         program.add(program.writer.write([Move(RAPID, x, z) for x, z in points]))
         program.moved(*self._reached(points))
