@@ -450,9 +450,9 @@ class GrooveGeometry:
         # lowest over the edge: each is fed only if it cuts (out there mostly air).
         steps = sorted(set(steps).union((left - w + r, right - r), self.pass_range(env, top, flat=True)))
         for start in self.pass_range(env, top):
-            chorded, exact = env.traces(start, mid, PATH_TOLERANCE)
+            chorded, vertices, written = env.trace_and_path(start, mid, PATH_TOLERANCE)  # one walk: both
+            exact = vertices if written else None
             pts = split_at(chorded, steps)
-            vertices = exact if exact is not None else env.traces(start, mid, None)[1]
             feed_where_material(self, pts, go, material, steps, top, env, top is self.rough_top, exact, vertices)
 
     def _leg_clear(self, u_from, u_to, level):

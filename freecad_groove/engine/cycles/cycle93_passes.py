@@ -56,14 +56,43 @@ def _groups(pts: List[Point], steps: List[float]) -> List[Tuple[int, int]]:
     """(first, last) point indexes of the stretches between the plunge
     positions ``steps`` (ascending): the trace is split there (``split_at``),
     so each stretch takes at most one tooth. One point is one stretch."""
-    bounds = [0]
-    for k in range(1, len(pts) - 1):
-        u = pts[k][0]
-        i = bisect_left(steps, u - STEP_EPS)
-        if i < len(steps) and steps[i] <= u + STEP_EPS:
-            bounds.append(k)
-    bounds.append(len(pts) - 1)
+    inner = _at_steps(pts, steps)
+    if inner is None:
+        inner = []
+        for k in range(1, len(pts) - 1):
+            u = pts[k][0]
+            i = bisect_left(steps, u - STEP_EPS)
+            if i < len(steps) and steps[i] <= u + STEP_EPS:
+                inner.append(k)
+    bounds = [0] + inner + [len(pts) - 1]
     return list(zip(bounds, bounds[1:])) if len(pts) > 1 else [(0, 0)]
+
+
+def _at_steps(pts: List[Point], steps: List[float]) -> Optional[List[int]]:
+    """The inner point indexes (not the first, not the last) within STEP_EPS
+    of one of ``steps``, ascending, for a trace whose u never turns back (a
+    pass), found by step (a bisection each, then each point near it tested as
+    ``_groups`` does); None for another trace."""
+    us = [p[0] for p in pts]
+    last = len(us) - 1
+    if us == sorted(us):
+        ordered, flip = us, False
+    elif us == sorted(us, reverse=True):
+        ordered, flip = us[::-1], True
+    else:
+        return None
+    found = set()
+    count = len(steps)
+    for s in steps:
+        near = 1e-6 + abs(s) * 1e-12  # far wider than STEP_EPS and its rounding: each point in it is tested
+        for j in range(bisect_left(ordered, s - near), bisect_right(ordered, s + near)):
+            k = last - j if flip else j
+            if 0 < k < last and k not in found:
+                u = us[k]
+                i = bisect_left(steps, u - STEP_EPS)
+                if i < count and steps[i] <= u + STEP_EPS:
+                    found.add(k)
+    return sorted(found)
 
 
 def _bounds(groups: List[Tuple[int, int]]) -> List[int]:

@@ -6,7 +6,7 @@ plunge positions.
 
 import math
 from bisect import bisect_left, bisect_right
-from typing import List, Optional, Sequence, Tuple
+from typing import Dict, List, Optional, Sequence, Tuple
 
 from ..envelope import Arc, PathPoint, arc_points
 from ..envelope_curves import value
@@ -99,6 +99,57 @@ def split_at(pts: Sequence[Point], positions: List[float]) -> List[Point]:
     leaving a tooth at most one width step wide), and the pass takes the
     teeth one move per step, never more than a width step across."""
     positions = sorted(positions)
+    crossed = _crossed_monotone(pts, positions)
+    if crossed is None:
+        return _split_each(pts, positions)
+    exact = isinstance(pts[0], PathPoint)
+    out: List[Point] = []
+    done = 0
+    for i in sorted(crossed):
+        out.extend(pts[done:i + 1])
+        out.extend(_points_on(pts[i], pts[i + 1], crossed[i], exact))
+        done = i + 1
+    out.extend(pts[done:])
+    return out
+
+
+def _crossed_monotone(pts: Sequence[Point], positions: List[float]) -> Optional[Dict[int, List[float]]]:
+    """For a trace whose u never turns back (a pass: the usual case), the
+    positions (ascending) each move i (pts[i] to pts[i + 1]) crosses, as
+    ``_split_each`` finds them (strictly inside the move by 1e-9), found by
+    position, not by move: one bisection each. None for another trace."""
+    us = [p[0] for p in pts]
+    if us == sorted(us):
+        ascending = True
+    elif us == sorted(us, reverse=True):
+        ascending, us = False, us[::-1]
+    else:
+        return None
+    crossed: Dict[int, List[float]] = {}
+    last = len(us) - 1
+    for c in positions:
+        j = bisect_left(us, c)  # us[j - 1] < c <= us[j]: only that move may hold c strictly inside
+        if 0 < j <= last and us[j] > c and us[j - 1] + 1e-9 < c < us[j] - 1e-9:
+            crossed.setdefault(j - 1 if ascending else last - j, []).append(c)
+    if not ascending:
+        for inside in crossed.values():
+            inside.reverse()
+    return crossed
+
+
+def _points_on(start: Point, end: Point, inside: List[float], exact: bool) -> List[Point]:
+    """The points at u in ``inside`` on the move from start to end (its line, or with ``exact`` its circle:
+    end.arc), PathPoints with ``exact``."""
+    (u0, v0), (u1, v1) = start, end
+    if not exact:
+        return [(c, v0 + (v1 - v0) * (c - u0) / (u1 - u0)) for c in inside]
+    arc = end.arc
+    return [PathPoint(c, v0 + (v1 - v0) * (c - u0) / (u1 - u0) if arc is None else value(arc, c), arc)
+            for c in inside]
+
+
+def _split_each(pts: Sequence[Point], positions: List[float]) -> List[Point]:
+    """split_at move by move (any trace; ``positions`` ascending)."""
     exact = isinstance(pts[0], PathPoint)
     out = [pts[0]]
     for (u0, v0), end in zip(pts, pts[1:]):
