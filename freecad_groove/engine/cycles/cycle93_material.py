@@ -33,6 +33,7 @@ envelope (``note_pass``).
 
 import math
 from bisect import bisect_left, bisect_right
+from operator import itemgetter
 from typing import List, Optional, Set, Tuple
 
 from ..envelope import Envelope
@@ -57,6 +58,8 @@ SIDE_EPS = 1e-7
 VERDICT_EPS = 1e-9
 # How far in from a field piece's ends the shortcut looks for material standing over the blade.
 WITNESS_INSET = 1e-6
+_INF = math.inf
+_LEVEL = itemgetter(1)
 
 
 class MaterialTop:
@@ -154,26 +157,33 @@ class MaterialTop:
         starts, pieces = self._field()
         a, b = min(chain)[0] + SIDE_EPS, max(chain)[0] + width - SIDE_EPS  # the hull's first and last u
         inside_a, inside_b = a + WITNESS_INSET, b - WITNESS_INSET
-        lowest = min(v for _u, v in chain)
+        lowest = min(chain, key=_LEVEL)[1]
         witness, high = MATERIAL_MARGIN + VERDICT_EPS, lowest + MATERIAL_MARGIN + VERDICT_EPS
         k = max(bisect_right(starts, a) - 1, 0)
         count, top, spans = len(pieces), -math.inf, []
+        sqrt, axis = math.sqrt, _axis(chain)
         while k < count:
-            lo = max(starts[k], a)
+            # lo, hi: max(starts[k], a), min(starts[k + 1], b), written out (this loop runs for every stretch)
+            lo = starts[k]
+            lo = a if a > lo else lo
             if lo >= b:
                 break
-            hi = min(starts[k + 1], b) if k + 1 < count else b
+            hi = starts[k + 1] if k + 1 < count else b
+            hi = b if b < hi else hi
             piece = pieces[k]
             k += 1
             if piece is None:
                 continue
             _plo, _phi, kind, cu, cv, size = piece  # stored negated: a line or a cap (its ends hold the real tops)
             if kind == LINE:
-                peak = max(-cv - size * (lo - cu), -cv - size * (hi - cu))
+                peak, other = -cv - size * (lo - cu), -cv - size * (hi - cu)
             else:
-                d = max(abs(lo - cu), abs(hi - cu))
-                peak = -cv - math.sqrt(max(size * size - d * d, 0.0))
-            top = max(top, peak)
+                d, other = abs(lo - cu), abs(hi - cu)
+                d = other if other > d else d
+                h = size * size - d * d
+                peak, other = -cv - sqrt(0.0 if 0.0 > h else h), -math.inf
+            peak = other if other > peak else peak
+            top = peak if peak > top else top
             # The blade and the floor stand at least ``lowest``: only where the field stands higher is looked at.
             if peak <= high:
                 continue
@@ -181,7 +191,7 @@ class MaterialTop:
             x = 0.5 * (lo + hi)
             if inside_a < x < inside_b:
                 level = -value(piece, x)
-                if level > high and _over_blade(level, x, chain, width, radius, floor, witness):
+                if level > high and _over_blade(level, x, chain, width, radius, floor, witness, axis):
                     return True
         if top - lowest <= MATERIAL_MARGIN - VERDICT_EPS:
             return False
@@ -189,7 +199,7 @@ class MaterialTop:
             for x in (lo + WITNESS_INSET, hi - WITNESS_INSET):
                 if lo < x < hi and inside_a < x < inside_b:
                     level = -value(piece, x)
-                    if level > high and _over_blade(level, x, chain, width, radius, floor, witness):
+                    if level > high and _over_blade(level, x, chain, width, radius, floor, witness, axis):
                         return True
         return None
 
@@ -262,25 +272,63 @@ def _blade_level(x: float, u: float, v: float, w: float, r: float) -> float:
 
 
 def _over_blade(level: float, x: float, chain: List[Point], w: float, r: float, floor: List[Point],
-                margin: float) -> bool:
+                margin: float, axis: Optional[Tuple[List[float], bool]] = None) -> bool:
     """Whether ``level`` (the field's at column x) stands more than ``margin``
     over the floor less FLOOR_TOL there and over a blade standing on
     ``chain`` (centred over x on a segment, or at a point: all on or above
     the chain's lower hull, so at least the outline swept along it). Never
     where x is not strictly inside a floor piece: exceeds does not look
-    there."""
-    i = bisect_right(floor, (x, math.inf)) - 1
-    if i < 0 or i + 1 >= len(floor) or not floor[i][0] < x < floor[i + 1][0]:
+    there. ``axis``: the chain's u ascending (``_axis``), to find the
+    segment and the points over x by bisection."""
+    i = bisect_right(floor, (x, _INF)) - 1
+    if i < 0 or i + 1 >= len(floor):
         return False
     (u0, v0), (u1, v1) = floor[i], floor[i + 1]
-    if level - (v0 - FLOOR_TOL + (v1 - v0) / (u1 - u0) * (x - u0)) <= margin:
+    if not u0 < x < u1 or level - (v0 - FLOOR_TOL + (v1 - v0) / (u1 - u0) * (x - u0)) <= margin:
         return False
-    centre = x - 0.5 * w
-    for (p0, q0), (p1, q1) in zip(chain, chain[1:]):
+    centre, left = x - 0.5 * w, x - w
+    if axis is not None:
+        return _over_blade_by_axis(level, x, centre, left, chain, axis, w, r, margin)
+    p0, q0 = chain[0]
+    for p1, q1 in chain[1:]:
         if (p0 < centre < p1 or p1 < centre < p0) and level - (q0 + (q1 - q0) * (centre - p0) / (p1 - p0)) > margin:
             return True
+        p0, q0 = p1, q1
     for u, v in chain:
-        if x - w <= u <= x and level - _blade_level(x, u, v, w, r) > margin:  # a blade over x
+        if left <= u <= x and level - _blade_level(x, u, v, w, r) > margin:  # a blade over x
+            return True
+    return False
+
+
+def _axis(chain: List[Point]) -> Optional[Tuple[List[float], bool]]:
+    """For a long chain whose u never turns back (a stretch over an arc's
+    chords): its u ascending, and whether the chain runs by decreasing u;
+    None for a short chain (looked through whole) or one that turns back."""
+    if len(chain) <= 8:
+        return None
+    us = list(map(itemgetter(0), chain))
+    if us == sorted(us):
+        return us, False
+    if us == sorted(us, reverse=True):
+        return us[::-1], True
+    return None
+
+
+def _over_blade_by_axis(level: float, x: float, centre: float, left: float, chain: List[Point],
+                        axis: Tuple[List[float], bool], w: float, r: float, margin: float) -> bool:
+    """_over_blade's blades on the chain, found by bisection of its u: the one
+    segment strictly about ``centre`` (u never turns back), and the points
+    over x (u in [left, x]); the same tests on them."""
+    us, flip = axis
+    last = len(us) - 1
+    j = bisect_right(us, centre)  # us[j - 1] <= centre < us[j]
+    if 0 < j <= last and us[j - 1] < centre:
+        (p0, q0), (p1, q1) = (chain[j - 1], chain[j]) if not flip else (chain[last - j], chain[last - j + 1])
+        if level - (q0 + (q1 - q0) * (centre - p0) / (p1 - p0)) > margin:
+            return True
+    for k in range(bisect_left(us, left), bisect_right(us, x)):
+        u, v = chain[last - k] if flip else chain[k]
+        if level - _blade_level(x, u, v, w, r) > margin:  # a blade over x
             return True
     return False
 

@@ -6,6 +6,7 @@ plunge positions.
 
 import math
 from bisect import bisect_left, bisect_right
+from operator import itemgetter
 from typing import Dict, List, Optional, Sequence, Tuple
 
 from ..envelope import Arc, PathPoint, arc_points
@@ -82,6 +83,9 @@ def intersect(p: Point, d: Point, q: Point, e: Point) -> Optional[Point]:
 def without_float_folds(pts: List[Point]) -> List[Point]:
     """The points with u never stepping back by rounding: an arc's end computed
     from a large radius may lie FOLD_TOLERANCE behind the next point."""
+    us = list(map(itemgetter(0), pts))
+    if us == sorted(us) and set(map(type, pts)) == {tuple}:
+        return list(pts)  # u never steps back: the points as they are
     out = [pts[0]]
     for u, v in pts[1:]:
         back = out[-1][0]
@@ -99,7 +103,8 @@ def split_at(pts: Sequence[Point], positions: List[float]) -> List[Point]:
     leaving a tooth at most one width step wide), and the pass takes the
     teeth one move per step, never more than a width step across."""
     positions = sorted(positions)
-    crossed = _crossed_monotone(pts, positions)
+    # By position where the moves outnumber the positions (a pass over an arc's chords), else move by move.
+    crossed = _crossed_monotone(pts, positions) if len(pts) > 2 * len(positions) else None
     if crossed is None:
         return _split_each(pts, positions)
     exact = isinstance(pts[0], PathPoint)
@@ -118,7 +123,7 @@ def _crossed_monotone(pts: Sequence[Point], positions: List[float]) -> Optional[
     positions (ascending) each move i (pts[i] to pts[i + 1]) crosses, as
     ``_split_each`` finds them (strictly inside the move by 1e-9), found by
     position, not by move: one bisection each. None for another trace."""
-    us = [p[0] for p in pts]
+    us = list(map(itemgetter(0), pts))
     if us == sorted(us):
         ascending = True
     elif us == sorted(us, reverse=True):
