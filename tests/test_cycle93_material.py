@@ -9,7 +9,15 @@ import random
 import numpy as np
 import pytest
 
-from freecad_groove.engine.cycles.cycle93_material import FLOOR_TOL, MATERIAL_MARGIN, MaterialTop, _sweep, lower_hull
+from freecad_groove.engine.cycles.cycle93_material import (
+    FLOOR_TOL,
+    MATERIAL_MARGIN,
+    MaterialTop,
+    _axis,
+    _over_blade,
+    _sweep,
+    lower_hull,
+)
 
 COLUMNS = 40000
 TOL = 0.002  # mm: the grid misses a peak by up to its spacing times the slopes beside it
@@ -151,3 +159,35 @@ def test_the_flat_stand_is_the_field_s_highest_point_over_the_blade():
     tip = -4.0 + 0.4 - math.sqrt(0.16 - 0.0225)
     assert material.stand(1.0, -4.0, 3.0) == pytest.approx(tip + 4.0, abs=1e-12)
     assert material.stand(-2.0, -4.0, 1.5) == pytest.approx(4.0, abs=1e-12)  # the contour beside the slot
+
+
+def test_on_a_long_stretch_the_blades_over_a_column_found_by_bisection_are_those_a_walk_finds():
+    """A stretch over an arc's chords has tens of points: the shortcut finds
+    the blades over a column by bisecting their u (``_axis``). Its answers
+    are the walk's on random long chains either way round, at random columns
+    and levels, and cuts still answers as the sweep does on them."""
+    checked = {True: 0, False: 0}
+    for seed in range(300):
+        rng = random.Random(seed)
+        w, r, slope, slots, _chain = _case(rng)
+        u0 = rng.uniform(-0.5 * w, slots[-1][0])
+        chain = [(u0 + k * rng.choice([0.0, rng.uniform(0.01, 0.4)]), rng.uniform(-6.0, 0.5)) for k in range(30)]
+        chain = sorted(chain)[:rng.randint(9, 30)]
+        if rng.random() < 0.5:
+            chain.reverse()
+        a, b = min(chain)[0], max(chain)[0] + w
+        floor = _floor(rng, a, b) if rng.random() < 0.7 else [(-100.0, -1e9), (100.0, -1e9)]
+        axis = _axis(chain)
+        assert axis is not None
+        for _ in range(20):
+            x, level = rng.uniform(a - 0.5, b + 0.5), rng.uniform(-7.0, 1.0)
+            walked = _over_blade(level, x, chain, w, r, floor, MATERIAL_MARGIN)
+            assert _over_blade(level, x, chain, w, r, floor, MATERIAL_MARGIN, axis) == walked, seed
+            checked[walked] += 1
+        material = MaterialTop(-30.0, 60.0, slope)
+        for u, bottom in slots:
+            material.clear_slot(u, u, bottom, w, r)
+        swept = material.exceeds(_sweep(lower_hull(chain), w, r), floor, MATERIAL_MARGIN)
+        assert material.cuts(chain, w, r, floor) == swept, seed
+    assert checked[True] > 200 and checked[False] > 200, checked
+    assert _axis(chain[:8]) is None and _axis([(0.0, 0.0), (1.0, 0.0), (0.5, 0.0)] * 3) is None
