@@ -126,7 +126,7 @@ def test_a_stretch_cuts_exactly_when_the_swept_blade_stands_under_the_field_whet
     stretches whose points come in either direction and above their hull,
     slots cleared where the blade has stood and floors with a step."""
     answered = {True: 0, False: 0}
-    for seed in range(400):
+    for seed in range(1500):
         rng = random.Random(seed)
         w, r, slope, slots, _chain = _case(rng)
         material = MaterialTop(-30.0, 60.0, slope)
@@ -147,7 +147,7 @@ def test_a_stretch_cuts_exactly_when_the_swept_blade_stands_under_the_field_whet
         assert verdict in (None, swept), seed
         if verdict is not None:
             answered[verdict] += 1
-    assert answered[True] > 20 and answered[False] > 20, answered  # both shortcuts were put to the test
+    assert answered[True] > 80 and answered[False] > 80, answered  # both shortcuts were put to the test
 
 
 def test_the_flat_stand_is_the_field_s_highest_point_over_the_blade():
@@ -191,3 +191,34 @@ def test_on_a_long_stretch_the_blades_over_a_column_found_by_bisection_are_those
         assert material.cuts(chain, w, r, floor) == swept, seed
     assert checked[True] > 200 and checked[False] > 200, checked
     assert _axis(chain[:8]) is None and _axis([(0.0, 0.0), (1.0, 0.0), (0.5, 0.0)] * 3) is None
+
+
+def test_by_the_opening_s_edges_the_shortcut_answers_as_the_sweep_where_the_field_is_the_profile_itself():
+    """Beside the opening the field is the contour, the profile the pass
+    follows (the floor), not cut: the shortcut's False there (the field no
+    higher than the floor, ``_under_floor``) and its True are the sweep's,
+    with the blade's positions near the edge, either way round."""
+    beside = 0
+    for seed in range(1500):
+        rng = random.Random(seed)
+        w, r, slope, slots, _chain = _case(rng)
+        material = MaterialTop(-30.0, 60.0, slope)
+        for u, bottom in slots:
+            material.clear_slot(u, u, bottom, w, r)
+        right = slots[-1][0] + w  # the opening: [0, right], its base below every slot
+        floor = [(-100.0, -100.0 * slope), (0.0, 0.0), (0.0, -7.0), (right, -7.0 + rng.uniform(-0.5, 0.5)),
+                 (right, right * slope), (100.0, 100.0 * slope)]
+        edge = rng.choice([0.0, right - w])
+        u0 = edge + rng.uniform(-0.6 * w, 0.3 * w)
+        points = [(u0 + k * rng.uniform(0.02, 0.3), slope * u0 + rng.uniform(-0.3, 0.05))
+                  for k in range(rng.randint(1, 4))]
+        if rng.random() < 0.5:
+            points.reverse()
+        verdict = material._verdict(points, w, r, floor)
+        swept = material.exceeds(_sweep(lower_hull(points), w, r), floor, MATERIAL_MARGIN)
+        assert verdict in (None, swept), seed
+        assert material.cuts(points, w, r, floor) == swept, seed
+        lowest = min(v for _u, v in points)
+        if verdict is False and material.stand(min(points)[0], lowest, max(points)[0] + w - min(points)[0]) > 0.01:
+            beside += 1  # the field stands over the stretch's lowest point: the floor said no
+    assert beside > 80, beside

@@ -150,17 +150,18 @@ class MaterialTop:
         True: at a piece of the field (its middle, or by its ends) it stands
         more than MATERIAL_MARGIN over the floor and over the blade standing
         on the chain there (``_over_blade``: at least the outline), so exceeds,
-        exact, finds it too. False: the field's highest point over the swept
-        columns stands at most MATERIAL_MARGIN over the chain's lowest point
-        (the outline is nowhere lower). Both by VERDICT_EPS: their rounding
-        and exceeds' own never part them."""
+        exact, finds it too. False: wherever the field stands more than
+        MATERIAL_MARGIN over the chain's lowest point (the outline is nowhere
+        lower) over the swept columns, it stands no more than that over the
+        floor (``_under_floor``). Both by VERDICT_EPS: their rounding and
+        exceeds' own never part them."""
         starts, pieces = self._field()
         a, b = min(chain)[0] + SIDE_EPS, max(chain)[0] + width - SIDE_EPS  # the hull's first and last u
         inside_a, inside_b = a + WITNESS_INSET, b - WITNESS_INSET
         lowest = min(chain, key=_LEVEL)[1]
         witness, high = MATERIAL_MARGIN + VERDICT_EPS, lowest + MATERIAL_MARGIN + VERDICT_EPS
-        k = max(bisect_right(starts, a) - 1, 0)
-        count, top, spans = len(pieces), -math.inf, []
+        k, fall = max(bisect_right(starts, a) - 1, 0), lowest + MATERIAL_MARGIN - VERDICT_EPS
+        count, spans, tall = len(pieces), [], []  # pieces standing over high; over fall, not high
         sqrt, axis = math.sqrt, _axis(chain)
         while k < count:
             # lo, hi: max(starts[k], a), min(starts[k + 1], b), written out (this loop runs for every stretch)
@@ -183,9 +184,10 @@ class MaterialTop:
                 h = size * size - d * d
                 peak, other = -cv - sqrt(0.0 if 0.0 > h else h), -math.inf
             peak = other if other > peak else peak
-            top = peak if peak > top else top
             # The blade and the floor stand at least ``lowest``: only where the field stands higher is looked at.
             if peak <= high:
+                if peak > fall:
+                    tall.append((lo, hi, piece))
                 continue
             spans.append((lo, hi, piece))
             x = 0.5 * (lo + hi)
@@ -193,15 +195,9 @@ class MaterialTop:
                 level = -value(piece, x)
                 if level > high and _over_blade(level, x, chain, width, radius, floor, witness, axis):
                     return True
-        if top - lowest <= MATERIAL_MARGIN - VERDICT_EPS:
+        if all(_under_floor(piece, lo, hi, floor) for lo, hi, piece in spans + tall):
             return False
-        for lo, hi, piece in spans:  # near the ends of the pieces standing higher
-            for x in (lo + WITNESS_INSET, hi - WITNESS_INSET):
-                if lo < x < hi and inside_a < x < inside_b:
-                    level = -value(piece, x)
-                    if level > high and _over_blade(level, x, chain, width, radius, floor, witness, axis):
-                        return True
-        return None
+        return _by_ends(spans, chain, width, radius, floor, axis, (inside_a, inside_b, high, witness))
 
     def stand(self, u: float, v: float, width: float) -> float:
         """Highest stand of the field above level v over the columns (u, u + w),
@@ -234,7 +230,7 @@ class MaterialTop:
         cuts.update(x for x in starts[bisect_right(starts, a):bisect_right(starts, b)] if x < b)
         xs = sorted(cuts.union((a, b)))
         j, last = 0, len(outline) - 1
-        k, count = 0, len(starts)
+        k, count = max(bisect_right(starts, a) - 1, 0), len(starts)  # the field's piece over a: the walk starts there
         for x0, x1 in zip(xs, xs[1:]):
             mid = 0.5 * (x0 + x1)
             while outline[j][1] <= mid and j < last:
@@ -260,7 +256,10 @@ def _joined(starts: List[float], pieces: List[Optional[Curve]], more_starts: Lis
 def _stands_over(field: Curve, low: Curve, x0: float, x1: float, limit: float) -> bool:
     """Whether the field stands more than ``limit`` above the outline ``low``
     at one of ``_candidates`` (where over (x0, x1) their difference peaks)."""
-    return any(-value(field, x) - value(low, x) > limit for x in _candidates(field, low, x0, x1))
+    for x in _candidates(field, low, x0, x1):
+        if -value(field, x) - value(low, x) > limit:
+            return True
+    return False
 
 
 def _blade_level(x: float, u: float, v: float, w: float, r: float) -> float:
@@ -275,25 +274,28 @@ def _over_blade(level: float, x: float, chain: List[Point], w: float, r: float, 
                 margin: float, axis: Optional[Tuple[List[float], bool]] = None) -> bool:
     """Whether ``level`` (the field's at column x) stands more than ``margin``
     over the floor less FLOOR_TOL there and over a blade standing on
-    ``chain`` (centred over x on a segment, or at a point: all on or above
+    ``chain`` (at a point, or on a segment where its flat front covers x:
+    at the ends of those places, where a segment is lowest; all on or above
     the chain's lower hull, so at least the outline swept along it). Never
     where x is not strictly inside a floor piece: exceeds does not look
     there. ``axis``: the chain's u ascending (``_axis``), to find the
-    segment and the points over x by bisection."""
+    segments and the points over x by bisection."""
     i = bisect_right(floor, (x, _INF)) - 1
     if i < 0 or i + 1 >= len(floor):
         return False
     (u0, v0), (u1, v1) = floor[i], floor[i + 1]
     if not u0 < x < u1 or level - (v0 - FLOOR_TOL + (v1 - v0) / (u1 - u0) * (x - u0)) <= margin:
         return False
-    centre, left = x - 0.5 * w, x - w
+    flat = (x - w + r, x - r)  # the blade positions whose flat front covers x
     if axis is not None:
-        return _over_blade_by_axis(level, x, centre, left, chain, axis, w, r, margin)
+        return _over_blade_by_axis(level, x, flat, chain, axis, w, r, margin)
     p0, q0 = chain[0]
     for p1, q1 in chain[1:]:
-        if (p0 < centre < p1 or p1 < centre < p0) and level - (q0 + (q1 - q0) * (centre - p0) / (p1 - p0)) > margin:
-            return True
+        for c in flat:
+            if (p0 < c < p1 or p1 < c < p0) and level - (q0 + (q1 - q0) * (c - p0) / (p1 - p0)) > margin:
+                return True
         p0, q0 = p1, q1
+    left = x - w
     for u, v in chain:
         if left <= u <= x and level - _blade_level(x, u, v, w, r) > margin:  # a blade over x
             return True
@@ -314,22 +316,63 @@ def _axis(chain: List[Point]) -> Optional[Tuple[List[float], bool]]:
     return None
 
 
-def _over_blade_by_axis(level: float, x: float, centre: float, left: float, chain: List[Point],
+def _over_blade_by_axis(level: float, x: float, flat: Tuple[float, float], chain: List[Point],
                         axis: Tuple[List[float], bool], w: float, r: float, margin: float) -> bool:
-    """_over_blade's blades on the chain, found by bisection of its u: the one
-    segment strictly about ``centre`` (u never turns back), and the points
-    over x (u in [left, x]); the same tests on them."""
+    """_over_blade's blades on the chain, found by bisection of its u: the
+    segment strictly about each end of ``flat`` (u never turns back: one),
+    and the points over x; the same tests on them."""
     us, flip = axis
     last = len(us) - 1
-    j = bisect_right(us, centre)  # us[j - 1] <= centre < us[j]
-    if 0 < j <= last and us[j - 1] < centre:
-        (p0, q0), (p1, q1) = (chain[j - 1], chain[j]) if not flip else (chain[last - j], chain[last - j + 1])
-        if level - (q0 + (q1 - q0) * (centre - p0) / (p1 - p0)) > margin:
-            return True
-    for k in range(bisect_left(us, left), bisect_right(us, x)):
+    for c in flat:
+        j = bisect_right(us, c)  # us[j - 1] <= c < us[j]
+        if 0 < j <= last and us[j - 1] < c:
+            (p0, q0), (p1, q1) = (chain[j - 1], chain[j]) if not flip else (chain[last - j], chain[last - j + 1])
+            if level - (q0 + (q1 - q0) * (c - p0) / (p1 - p0)) > margin:
+                return True
+    for k in range(bisect_left(us, x - w), bisect_right(us, x)):
         u, v = chain[last - k] if flip else chain[k]
         if level - _blade_level(x, u, v, w, r) > margin:  # a blade over x
             return True
+    return False
+
+
+def _by_ends(spans: List[Piece], chain: List[Point], w: float, r: float, floor: List[Point],
+             axis: Optional[Tuple[List[float], bool]], bounds: Tuple[float, float, float, float]) -> Optional[bool]:
+    """_verdict's True near the ends of the pieces standing higher than the
+    chain (``spans``), else None: ``bounds`` are its (inside_a, inside_b,
+    high, witness)."""
+    inside_a, inside_b, high, witness = bounds
+    for lo, hi, piece in spans:
+        for x in (lo + WITNESS_INSET, hi - WITNESS_INSET):
+            if lo < x < hi and inside_a < x < inside_b:
+                level = -value(piece, x)
+                if level > high and _over_blade(level, x, chain, w, r, floor, witness, axis):
+                    return True
+    return None
+
+
+def _under_floor(piece: Curve, lo: float, hi: float, floor: List[Point]) -> bool:
+    """Whether the field ``piece`` stands nowhere over [lo, hi] more than
+    MATERIAL_MARGIN less VERDICT_EPS above the floor less FLOOR_TOL, the
+    floor straight between its points there (no vertical step inside): the
+    field's real level is a line or a cup, so its height over a straight
+    piece of floor peaks at one of that piece's ends (exceeds raises the
+    outline to that floor: no material there)."""
+    if piece.kind not in (LINE, CAP):
+        return False
+    limit = MATERIAL_MARGIN - VERDICT_EPS
+    i = bisect_right(floor, (lo, _INF)) - 1
+    while 0 <= i < len(floor) - 1:
+        (u0, v0), (u1, v1) = floor[i], floor[i + 1]
+        if not u0 < u1:
+            return False
+        rate = (v1 - v0) / (u1 - u0)
+        for y in (u0 if u0 > lo else lo, u1 if u1 < hi else hi):
+            if -value(piece, y) - (v0 - FLOOR_TOL + rate * (y - u0)) > limit:
+                return False
+        if u1 >= hi:
+            return True
+        i += 1
     return False
 
 
