@@ -222,3 +222,33 @@ def test_by_the_opening_s_edges_the_shortcut_answers_as_the_sweep_where_the_fiel
         if verdict is False and material.stand(min(points)[0], lowest, max(points)[0] + w - min(points)[0]) > 0.01:
             beside += 1  # the field stands over the stretch's lowest point: the floor said no
     assert beside > 80, beside
+
+
+def test_a_stretch_from_or_to_a_blade_s_own_slot_is_answered_as_the_sweep_answers_it():
+    """A stretch starting (or ending) where a blade stood, at the bottom of
+    its slot: the slot's corner arc is the swept outline's there when the
+    stretch does not fall from that point (rise to it), and the shortcut's
+    False by that (``_in_end_corners``) is the sweep's, as its other
+    answers; stretches that fall away from the slot too."""
+    own = 0
+    for seed in range(1500):
+        rng = random.Random(seed)
+        w, r, slope, slots, _chain = _case(rng)
+        if r == 0:
+            r = 0.4 * rng.uniform(0.1, 1.0) * w
+        material = MaterialTop(-30.0, 60.0, slope)
+        for u, bottom in slots:
+            material.clear_slot(u, u, bottom, w, r)
+        u, bottom = rng.choice(slots)
+        steps = [(k * rng.uniform(0.1, 0.9), rng.choice([0.0, 0.0, rng.uniform(-0.3, 0.6)])) for k in range(1, 4)]
+        points = [(u, bottom)] + [(u + du, bottom + dv) for du, dv in steps[:rng.randint(0, 3)]]
+        if rng.random() < 0.5:  # ending at the slot, from the left
+            points = [(2 * u - p, q) for p, q in reversed(points)]
+        floor = [(-100.0, -1e9), (100.0, -1e9)]
+        verdict = material._verdict(points, w, r, floor)
+        swept = material.exceeds(_sweep(lower_hull(points), w, r), floor, MATERIAL_MARGIN)
+        assert verdict in (None, swept), seed
+        assert material.cuts(points, w, r, floor) == swept, seed
+        if verdict is False and material.stand(min(points)[0], bottom, max(points)[0] + w - min(points)[0]) > 0.01:
+            own += 1  # a corner stands over the lowest point: the slot's own corners said no
+    assert own > 80, own

@@ -195,7 +195,8 @@ class MaterialTop:
                 level = -value(piece, x)
                 if level > high and _over_blade(level, x, chain, width, radius, floor, witness, axis):
                     return True
-        if all(_under_floor(piece, lo, hi, floor) for lo, hi, piece in spans + tall):
+        left = [(lo, hi, piece) for lo, hi, piece in spans + tall if not _under_floor(piece, lo, hi, floor)]
+        if not left or (radius > 0 and _in_end_corners(left, lower_hull(chain), width, radius)):
             return False
         return _by_ends(spans, chain, width, radius, floor, axis, (inside_a, inside_b, high, witness))
 
@@ -349,6 +350,30 @@ def _by_ends(spans: List[Piece], chain: List[Point], w: float, r: float, floor: 
                 if level > high and _over_blade(level, x, chain, w, r, floor, witness, axis):
                     return True
     return None
+
+
+def _in_end_corners(spans: List[Piece], hull: List[Point], w: float, r: float) -> bool:
+    """Whether every piece of ``spans`` is the corner arc of the blade at an
+    end of the ``hull`` (the slot a blade stood in there), within the
+    columns of that corner, where the swept outline is that blade's own
+    front: left of the first point's corner end when the hull does not fall
+    from it (a blade further on stands no lower and its corner higher), the
+    mirror at the last point; the field minus the outline is 0 there."""
+    (u0, v0), (u1, v1) = hull[0], hull[-1]
+    first = len(hull) == 1 or hull[1][1] >= v0
+    last = len(hull) == 1 or hull[-2][1] >= v1
+    for lo, hi, piece in spans:
+        if not (first and _same_circle(piece, u0 + r, v0 + r, r) and u0 <= lo and hi <= u0 + r
+                or last and _same_circle(piece, u1 + w - r, v1 + r, r) and u1 + w - r <= lo and hi <= u1 + w):
+            return False
+    return True
+
+
+def _same_circle(piece: Curve, cu: float, cv: float, r: float) -> bool:
+    """Whether the field piece is the lower half circle of centre (cu, cv) and radius r (stored negated),
+    but for float noise far below MATERIAL_MARGIN even where the circle stands vertical."""
+    return piece.kind == CAP and abs(piece.cu - cu) <= 1e-12 and abs(piece.cv + cv) <= 1e-12 \
+        and abs(piece.size - r) <= 1e-12
 
 
 def _under_floor(piece: Curve, lo: float, hi: float, floor: List[Point]) -> bool:
