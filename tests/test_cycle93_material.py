@@ -9,15 +9,8 @@ import random
 import numpy as np
 import pytest
 
-from freecad_groove.engine.cycles.cycle93_material import (
-    FLOOR_TOL,
-    MATERIAL_MARGIN,
-    MaterialTop,
-    _axis,
-    _over_blade,
-    _sweep,
-    lower_hull,
-)
+from freecad_groove.engine.cycles.cycle93_material import FLOOR_TOL, MATERIAL_MARGIN, MaterialTop, _sweep, lower_hull
+from freecad_groove.engine.cycles.cycle93_witness import _axis, _over_blade
 
 COLUMNS = 40000
 TOL = 0.002  # mm: the grid misses a peak by up to its spacing times the slopes beside it
