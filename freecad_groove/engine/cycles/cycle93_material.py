@@ -75,11 +75,13 @@ class MaterialTop:
         a, b = min(u_from, u_to), max(u_from, u_to)
         self._placed.update(((u_from, bottom), (u_to, bottom)))
         r, top = radius, -(bottom + radius)
-        slot = [curve for lo, hi, curve in (
-            (a, a + r, Curve(a, a + r, CAP, a + r, top, r)),
-            (a + r, b + width - r, Curve(a + r, b + width - r, LINE, a, -bottom, 0.0)),
-            (b + width - r, b + width, Curve(b + width - r, b + width, CAP, b + width - r, top, r)),
-        ) if hi > lo]
+        new, slot = tuple.__new__, []  # Curve(...) without its __new__'s frame: a slot per plunge and blade stood
+        if a + r > a:
+            slot.append(new(Curve, (a, a + r, CAP, a + r, top, r)))
+        if b + width - r > a + r:
+            slot.append(new(Curve, (a + r, b + width - r, LINE, a, -bottom, 0.0)))
+        if b + width > b + width - r:
+            slot.append(new(Curve, (b + width - r, b + width, CAP, b + width - r, top, r)))
         if self._starts:
             self._lower(slot, max(a, self.lo), min(b + width, self.hi))
         else:
