@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from freecad_groove.engine.cycles.cycle93_material import FLOOR_TOL, MATERIAL_MARGIN, MaterialTop, _sweep, lower_hull
+from freecad_groove.engine.cycles.cycle93_witness import _axis, _over_blade
 
 COLUMNS = 40000
 TOL = 0.002  # mm: the grid misses a peak by up to its spacing times the slopes beside it
@@ -118,7 +119,7 @@ def test_a_stretch_cuts_exactly_when_the_swept_blade_stands_under_the_field_whet
     stretches whose points come in either direction and above their hull,
     slots cleared where the blade has stood and floors with a step."""
     answered = {True: 0, False: 0}
-    for seed in range(400):
+    for seed in range(1500):
         rng = random.Random(seed)
         w, r, slope, slots, _chain = _case(rng)
         material = MaterialTop(-30.0, 60.0, slope)
@@ -139,7 +140,7 @@ def test_a_stretch_cuts_exactly_when_the_swept_blade_stands_under_the_field_whet
         assert verdict in (None, swept), seed
         if verdict is not None:
             answered[verdict] += 1
-    assert answered[True] > 20 and answered[False] > 20, answered  # both shortcuts were put to the test
+    assert answered[True] > 80 and answered[False] > 80, answered  # both shortcuts were put to the test
 
 
 def test_the_flat_stand_is_the_field_s_highest_point_over_the_blade():
@@ -151,3 +152,96 @@ def test_the_flat_stand_is_the_field_s_highest_point_over_the_blade():
     tip = -4.0 + 0.4 - math.sqrt(0.16 - 0.0225)
     assert material.stand(1.0, -4.0, 3.0) == pytest.approx(tip + 4.0, abs=1e-12)
     assert material.stand(-2.0, -4.0, 1.5) == pytest.approx(4.0, abs=1e-12)  # the contour beside the slot
+
+
+def test_on_a_long_stretch_the_blades_over_a_column_found_by_bisection_are_those_a_walk_finds():
+    """A stretch over an arc's chords has tens of points: the shortcut finds
+    the blades over a column by bisecting their u (``_axis``). Its answers
+    are the walk's on random long chains either way round, at random columns
+    and levels, and cuts still answers as the sweep does on them."""
+    checked = {True: 0, False: 0}
+    for seed in range(300):
+        rng = random.Random(seed)
+        w, r, slope, slots, _chain = _case(rng)
+        u0 = rng.uniform(-0.5 * w, slots[-1][0])
+        chain = [(u0 + k * rng.choice([0.0, rng.uniform(0.01, 0.4)]), rng.uniform(-6.0, 0.5)) for k in range(30)]
+        chain = sorted(chain)[:rng.randint(9, 30)]
+        if rng.random() < 0.5:
+            chain.reverse()
+        a, b = min(chain)[0], max(chain)[0] + w
+        floor = _floor(rng, a, b) if rng.random() < 0.7 else [(-100.0, -1e9), (100.0, -1e9)]
+        axis = _axis(chain)
+        assert axis is not None
+        for _ in range(20):
+            x, level = rng.uniform(a - 0.5, b + 0.5), rng.uniform(-7.0, 1.0)
+            walked = _over_blade(level, x, chain, w, r, floor, MATERIAL_MARGIN)
+            assert _over_blade(level, x, chain, w, r, floor, MATERIAL_MARGIN, axis) == walked, seed
+            checked[walked] += 1
+        material = MaterialTop(-30.0, 60.0, slope)
+        for u, bottom in slots:
+            material.clear_slot(u, u, bottom, w, r)
+        swept = material.exceeds(_sweep(lower_hull(chain), w, r), floor, MATERIAL_MARGIN)
+        assert material.cuts(chain, w, r, floor) == swept, seed
+    assert checked[True] > 200 and checked[False] > 200, checked
+    assert _axis(chain[:8]) is None and _axis([(0.0, 0.0), (1.0, 0.0), (0.5, 0.0)] * 3) is None
+
+
+def test_by_the_opening_s_edges_the_shortcut_answers_as_the_sweep_where_the_field_is_the_profile_itself():
+    """Beside the opening the field is the contour, the profile the pass
+    follows (the floor), not cut: the shortcut's False there (the field no
+    higher than the floor, ``_under_floor``) and its True are the sweep's,
+    with the blade's positions near the edge, either way round."""
+    beside = 0
+    for seed in range(1500):
+        rng = random.Random(seed)
+        w, r, slope, slots, _chain = _case(rng)
+        material = MaterialTop(-30.0, 60.0, slope)
+        for u, bottom in slots:
+            material.clear_slot(u, u, bottom, w, r)
+        right = slots[-1][0] + w  # the opening: [0, right], its base below every slot
+        floor = [(-100.0, -100.0 * slope), (0.0, 0.0), (0.0, -7.0), (right, -7.0 + rng.uniform(-0.5, 0.5)),
+                 (right, right * slope), (100.0, 100.0 * slope)]
+        edge = rng.choice([0.0, right - w])
+        u0 = edge + rng.uniform(-0.6 * w, 0.3 * w)
+        points = [(u0 + k * rng.uniform(0.02, 0.3), slope * u0 + rng.uniform(-0.3, 0.05))
+                  for k in range(rng.randint(1, 4))]
+        if rng.random() < 0.5:
+            points.reverse()
+        verdict = material._verdict(points, w, r, floor)
+        swept = material.exceeds(_sweep(lower_hull(points), w, r), floor, MATERIAL_MARGIN)
+        assert verdict in (None, swept), seed
+        assert material.cuts(points, w, r, floor) == swept, seed
+        lowest = min(v for _u, v in points)
+        if verdict is False and material.stand(min(points)[0], lowest, max(points)[0] + w - min(points)[0]) > 0.01:
+            beside += 1  # the field stands over the stretch's lowest point: the floor said no
+    assert beside > 80, beside
+
+
+def test_a_stretch_from_or_to_a_blade_s_own_slot_is_answered_as_the_sweep_answers_it():
+    """A stretch starting (or ending) where a blade stood, at the bottom of
+    its slot: the slot's corner arc is the swept outline's there when the
+    stretch does not fall from that point (rise to it), and the shortcut's
+    False by that (``_in_end_corners``) is the sweep's, as its other
+    answers; stretches that fall away from the slot too."""
+    own = 0
+    for seed in range(1500):
+        rng = random.Random(seed)
+        w, r, slope, slots, _chain = _case(rng)
+        if r == 0:
+            r = 0.4 * rng.uniform(0.1, 1.0) * w
+        material = MaterialTop(-30.0, 60.0, slope)
+        for u, bottom in slots:
+            material.clear_slot(u, u, bottom, w, r)
+        u, bottom = rng.choice(slots)
+        steps = [(k * rng.uniform(0.1, 0.9), rng.choice([0.0, 0.0, rng.uniform(-0.3, 0.6)])) for k in range(1, 4)]
+        points = [(u, bottom)] + [(u + du, bottom + dv) for du, dv in steps[:rng.randint(0, 3)]]
+        if rng.random() < 0.5:  # ending at the slot, from the left
+            points = [(2 * u - p, q) for p, q in reversed(points)]
+        floor = [(-100.0, -1e9), (100.0, -1e9)]
+        verdict = material._verdict(points, w, r, floor)
+        swept = material.exceeds(_sweep(lower_hull(points), w, r), floor, MATERIAL_MARGIN)
+        assert verdict in (None, swept), seed
+        assert material.cuts(points, w, r, floor) == swept, seed
+        if verdict is False and material.stand(min(points)[0], bottom, max(points)[0] + w - min(points)[0]) > 0.01:
+            own += 1  # a corner stands over the lowest point: the slot's own corners said no
+    assert own > 80, own

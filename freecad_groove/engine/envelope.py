@@ -128,9 +128,17 @@ class Envelope:
         when none of its arcs is written as one (``path_moves``: all within
         ``tol`` of their chords or shorter than MIN_ARC_CHORD), the chords
         being what it writes."""
+        chorded, exact, worth = self.trace_and_path(lo, hi, tol, keep=False)
+        return chorded, exact if worth else None
+
+    def trace_and_path(self, lo: float, hi: float, tol: Optional[float],
+                       keep: bool = True) -> Tuple[List[Point], List[PathPoint], bool]:
+        """(``trace``, ``path``, whether ``traces`` gives that path: one of its
+        arcs is written as one, or ``tol`` is None), in one walk; without
+        ``keep`` the path is left empty where ``traces`` would not give it."""
         if hi < lo:
-            chorded, exact = self.traces(hi, lo, tol)
-            return [(u, v) for u, v in reversed(chorded)], exact and reversed_path(exact)
+            chorded, exact, worth = self.trace_and_path(hi, lo, tol, keep)
+            return [(u, v) for u, v in reversed(chorded)], exact and reversed_path(exact), worth
         start = self.lowest(lo)
         chorded, ends = [(lo, start)], [(lo, start, None)]
         worth = tol is None
@@ -150,9 +158,9 @@ class Envelope:
             chorded.append((hi, end))
             ends.append((hi, end, None))
         chorded = _drop_collinear(_without_slivers(chorded)) if tol is not None else []
-        if not worth:
-            return chorded, None
-        return chorded, _drop_collinear(_without_slivers([PathPoint(*point) for point in ends]))
+        if not (worth or keep):
+            return chorded, [], False
+        return chorded, _drop_collinear(_without_slivers([PathPoint(*point) for point in ends])), worth
 
     def deepest(self, start: float, end: float, gain: float = 0.0) -> float:
         """The blade position between ``start`` and ``end`` (either way round)
@@ -214,14 +222,16 @@ def _without_slivers(pts: List[Point]) -> List[Point]:
     those less than SAME_U from it both ways dropped; the trace still ends
     exactly where asked (the last run along a wall moves there)."""
     out = [pts[0]]
+    pu, pv = pts[0]  # the last point kept
     for point in pts[1:]:
         u, v = point
-        pu, pv = out[-1]
         if abs(u - pu) < SAME_U:
             if abs(v - pv) < SAME_U:
                 continue
             point = _moved(point, pu, v)
+            u = pu
         out.append(point)
+        pu, pv = u, v
     end = pts[-1]
     run = out[-1][0]
     if len(out) > 1 and run != end[0] and abs(run - end[0]) < SAME_U:
@@ -241,10 +251,27 @@ def _drop_collinear(pts: List[Point], eps: float = 1e-9) -> List[Point]:
     point an arc reaches or leaves stays."""
     if len(pts) < 3:
         return pts
-    exact = isinstance(pts[0], PathPoint)
+    if isinstance(pts[0], PathPoint):
+        return _drop_collinear_path(pts, eps)
+    out = [pts[0]]
+    u0, v0 = pts[0]
+    for point, after in zip(pts[1:-1], pts[2:]):  # the chorded trace: one pass, the kept point in locals
+        u1, v1 = point
+        u2, v2 = after
+        du, dv = u1 - u0, v1 - v0
+        if abs(du * (v2 - v0) - dv * (u2 - u0)) > eps * (abs(u2 - u0) + abs(v2 - v0)) \
+                or du * (u2 - u1) + dv * (v2 - v1) < 0:  # off the line, or turning back
+            out.append(point)
+            u0, v0 = u1, v1
+    out.append(pts[-1])
+    return out
+
+
+def _drop_collinear_path(pts: List[PathPoint], eps: float) -> List[PathPoint]:
+    """_drop_collinear of an exact path."""
     out = [pts[0]]
     for i in range(1, len(pts) - 1):
-        if exact and (pts[i].arc is not None or pts[i + 1].arc is not None):
+        if pts[i].arc is not None or pts[i + 1].arc is not None:
             out.append(pts[i])
             continue
         (u0, v0), (u1, v1), (u2, v2) = out[-1], pts[i], pts[i + 1]

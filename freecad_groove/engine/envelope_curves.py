@@ -72,18 +72,20 @@ def _line_circle(line: Curve, circle: Curve) -> List[float]:
 
 
 def _circle_circle(p: Curve, q: Curve) -> List[float]:
-    du, dv = q.cu - p.cu, q.cv - p.cv
+    _plo, _phi, _pk, pu, pv, pr = p
+    _qlo, _qhi, _qk, qu, qv, qr = q
+    du, dv = qu - pu, qv - pv
     d2 = du * du + dv * dv
     if d2 < 1e-24:
         return []
-    d = math.sqrt(d2)
-    a = (d2 + p.size * p.size - q.size * q.size) / (2 * d)
-    h2 = p.size * p.size - a * a
-    if h2 < -1e-12 * max(p.size, q.size) ** 2:
+    d = _sqrt(d2)
+    a = (d2 + pr * pr - qr * qr) / (2 * d)
+    h2 = pr * pr - a * a
+    if h2 < -1e-12 * max(pr, qr) ** 2:
         return []
-    h = math.sqrt(h2) if h2 > 0 else 0.0
+    h = _sqrt(h2) if h2 > 0 else 0.0
     eu, ev = du / d, dv / d
-    mid = p.cu + a * eu
+    mid = pu + a * eu
     return [mid - h * ev, mid + h * ev]
 
 
@@ -136,7 +138,7 @@ def _winner(active: Sequence[Curve], u: float) -> Optional[Curve]:
             root = _sqrt(h) if h > 0 else 0.0
             v = cv + root if kind == CAP else cv - root
         if v > level + TIE or (best is not None and v > level - TIE and _rises(curve, best, u)):
-            best, level = curve, max(v, level)
+            best, level = curve, level if level > v else v  # max(v, level)
     return best
 
 
@@ -144,11 +146,16 @@ def _next_event(curves: Sequence[Curve], start: int, active: Sequence[Curve], to
                 u: float, stop: float) -> float:
     """The first u after ``u`` (at most ``stop``) where another curve may rise
     above ``top``: where it starts at or above it, or crosses it rising."""
+    top_line = top[2] == LINE
     for curve in active:
         hi = curve[1]  # curve.hi
         if curve is top or hi <= u:
             continue
-        for x in crossings(curve, top):
+        if curve[2] == LINE:  # crossings(curve, top), its dispatch written out (this runs for every pair)
+            xs = _line_line(curve, top) if top_line else _line_circle(curve, top)
+        else:
+            xs = _line_circle(top, curve) if top_line else _circle_circle(curve, top)
+        for x in xs:
             if u < x < stop and x < hi and _rises(curve, top, x):
                 stop = x
     for index in range(start, len(curves)):
@@ -187,11 +194,12 @@ def upper_envelope(curves: List[Curve], lo: float, hi: float) -> Tuple[List[floa
         if top is None:
             nxt = curves[k][0] if k < count else hi
         else:
-            nxt = _next_event(curves, k, active, top, u, min(top[1], hi))
+            end = top[1]
+            nxt = _next_event(curves, k, active, top, u, hi if hi < end else end)  # min(top.hi, hi)
         if not pieces or pieces[-1] is not top:
             starts.append(u)
             pieces.append(top)
-        u = min(nxt, hi)
+        u = hi if hi < nxt else nxt  # min(nxt, hi)
     return starts, pieces
 
 

@@ -8,6 +8,7 @@ steps as moves of the blade's reference corner. The module notes of
 """
 
 import math
+from operator import itemgetter
 from typing import TYPE_CHECKING, List, Optional, Tuple
 
 from ..envelope import Envelope, Turn
@@ -40,6 +41,9 @@ if TYPE_CHECKING:  # the model imports this module
 Point = Tuple[float, float]
 
 __all__ = ["Frame", "GrooveGeometry", "split_at"]
+
+_new_move = tuple.__new__
+_MOVE_DEFAULTS = tuple(Move._field_defaults[name] for name in Move._fields[3:])  # f, p, y, c, centre, radius
 
 
 class GrooveGeometry:
@@ -220,7 +224,8 @@ class GrooveGeometry:
         self.final_top = self._material_top(final)
         self.rough_top = self._material_top(self.rough_corners)
         for top in (self.final_top, self.rough_top):
-            if any(b[0] < a[0] - FOLD_TOLERANCE for a, b in zip(top, top[1:])):
+            us = list(map(itemgetter(0), top))  # u never stepping back: no fold, nothing to test point by point
+            if us != sorted(us) and any(b[0] < a[0] - FOLD_TOLERANCE for a, b in zip(top, top[1:])):
                 raise cycle93_error("call", None, "groove form wrong: the profile folds back on itself", ALARM_FORM)
         self.final_env = self._envelope(final, self.final_top)
         self.rough_env = self._envelope(self.rough_corners, self.rough_top)
@@ -403,8 +408,8 @@ class GrooveGeometry:
             """A rapid ("r") or feed ("f") of the blade to (u, v); a feed along a
             circle of the groove frame with ``turn`` (its centre, counter-clockwise)."""
             x, z = blade(u, v)
-            if turn is None:
-                move = Move(RAPID if kind == "r" else FEED, x, z)
+            if turn is None:  # Move(RAPID or FEED, x, z), without its __new__'s frame (a move per point of a pass)
+                move = _new_move(Move, (RAPID if kind == "r" else FEED, x, z) + _MOVE_DEFAULTS)
             else:
                 move = arc(frame.clockwise(turn[2]), x, z, blade(turn[0], turn[1]))
             if not out or out[-1] != move:
@@ -450,9 +455,9 @@ class GrooveGeometry:
         # lowest over the edge: each is fed only if it cuts (out there mostly air).
         steps = sorted(set(steps).union((left - w + r, right - r), self.pass_range(env, top, flat=True)))
         for start in self.pass_range(env, top):
-            chorded, exact = env.traces(start, mid, PATH_TOLERANCE)
+            chorded, vertices, written = env.trace_and_path(start, mid, PATH_TOLERANCE)  # one walk: both
+            exact = vertices if written else None
             pts = split_at(chorded, steps)
-            vertices = exact if exact is not None else env.traces(start, mid, None)[1]
             feed_where_material(self, pts, go, material, steps, top, env, top is self.rough_top, exact, vertices)
 
     def _leg_clear(self, u_from, u_to, level):

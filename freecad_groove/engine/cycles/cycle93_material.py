@@ -33,30 +33,28 @@ envelope (``note_pass``).
 
 import math
 from bisect import bisect_left, bisect_right
+from operator import itemgetter
 from typing import List, Optional, Set, Tuple
 
 from ..envelope import Envelope
 from ..envelope_curves import CAP, CUP, LINE, Curve, crossings, upper_envelope, value
-from .cycle93_constants import PATH_TOLERANCE
+from .cycle93_witness import (  # noqa: F401 - the margins stay importable from here
+    FLOOR_TOL,
+    MATERIAL_MARGIN,
+    SIDE_EPS,
+    VERDICT_EPS,
+    WITNESS_INSET,
+    _axis,
+    _by_ends,
+    _in_end_corners,
+    _over_blade,
+    _under_floor,
+)
 
 Point = Tuple[float, float]
 Piece = Tuple[float, float, Curve]  # x from, x to, the curve (real levels, not negated)
 
-# Material thinner than this (mm or in) under a stretch of a pass counts as
-# already cut: a little over the passes' own path tolerance (PATH_TOLERANCE)
-# and half the 0.001 a program writes; it also absorbs the float noise
-# between the plunges' bottoms and the passes' points (different computations).
-MATERIAL_MARGIN = 0.0005
-# How far the profile's polyline (its arcs chorded toward more material) may
-# stand above the profile the envelope keeps the blade on.
-FLOOR_TOL = PATH_TOLERANCE
-# A blade side within this of a wall only slides along it.
-SIDE_EPS = 1e-7
-# cuts' shortcut (MaterialTop._verdict) answers only this clear of MATERIAL_MARGIN: far over the rounding of
-# exceeds' evaluation (about 1e-13 at these sizes), so the two never part.
-VERDICT_EPS = 1e-9
-# How far in from a field piece's ends the shortcut looks for material standing over the blade.
-WITNESS_INSET = 1e-6
+_LEVEL = itemgetter(1)
 
 
 class MaterialTop:
@@ -77,11 +75,13 @@ class MaterialTop:
         a, b = min(u_from, u_to), max(u_from, u_to)
         self._placed.update(((u_from, bottom), (u_to, bottom)))
         r, top = radius, -(bottom + radius)
-        slot = [curve for lo, hi, curve in (
-            (a, a + r, Curve(a, a + r, CAP, a + r, top, r)),
-            (a + r, b + width - r, Curve(a + r, b + width - r, LINE, a, -bottom, 0.0)),
-            (b + width - r, b + width, Curve(b + width - r, b + width, CAP, b + width - r, top, r)),
-        ) if hi > lo]
+        new, slot = tuple.__new__, []  # Curve(...) without its __new__'s frame: a slot per plunge and blade stood
+        if a + r > a:
+            slot.append(new(Curve, (a, a + r, CAP, a + r, top, r)))
+        if b + width - r > a + r:
+            slot.append(new(Curve, (a + r, b + width - r, LINE, a, -bottom, 0.0)))
+        if b + width > b + width - r:
+            slot.append(new(Curve, (b + width - r, b + width, CAP, b + width - r, top, r)))
         if self._starts:
             self._lower(slot, max(a, self.lo), min(b + width, self.hi))
         else:
@@ -147,51 +147,55 @@ class MaterialTop:
         True: at a piece of the field (its middle, or by its ends) it stands
         more than MATERIAL_MARGIN over the floor and over the blade standing
         on the chain there (``_over_blade``: at least the outline), so exceeds,
-        exact, finds it too. False: the field's highest point over the swept
-        columns stands at most MATERIAL_MARGIN over the chain's lowest point
-        (the outline is nowhere lower). Both by VERDICT_EPS: their rounding
-        and exceeds' own never part them."""
+        exact, finds it too. False: wherever the field stands more than
+        MATERIAL_MARGIN over the chain's lowest point (the outline is nowhere
+        lower) over the swept columns, it stands no more than that over the
+        floor (``_under_floor``). Both by VERDICT_EPS: their rounding and
+        exceeds' own never part them."""
         starts, pieces = self._field()
         a, b = min(chain)[0] + SIDE_EPS, max(chain)[0] + width - SIDE_EPS  # the hull's first and last u
         inside_a, inside_b = a + WITNESS_INSET, b - WITNESS_INSET
-        lowest = min(v for _u, v in chain)
+        lowest = min(chain, key=_LEVEL)[1]
         witness, high = MATERIAL_MARGIN + VERDICT_EPS, lowest + MATERIAL_MARGIN + VERDICT_EPS
-        k = max(bisect_right(starts, a) - 1, 0)
-        count, top, spans = len(pieces), -math.inf, []
+        k, fall = max(bisect_right(starts, a) - 1, 0), lowest + MATERIAL_MARGIN - VERDICT_EPS
+        count, spans, tall = len(pieces), [], []  # pieces standing over high; over fall, not high
+        sqrt, axis = math.sqrt, _axis(chain)
         while k < count:
-            lo = max(starts[k], a)
+            # lo, hi: max(starts[k], a), min(starts[k + 1], b), written out (this loop runs for every stretch)
+            lo = starts[k]
+            lo = a if a > lo else lo
             if lo >= b:
                 break
-            hi = min(starts[k + 1], b) if k + 1 < count else b
+            hi = starts[k + 1] if k + 1 < count else b
+            hi = b if b < hi else hi
             piece = pieces[k]
             k += 1
             if piece is None:
                 continue
             _plo, _phi, kind, cu, cv, size = piece  # stored negated: a line or a cap (its ends hold the real tops)
             if kind == LINE:
-                peak = max(-cv - size * (lo - cu), -cv - size * (hi - cu))
+                peak, other = -cv - size * (lo - cu), -cv - size * (hi - cu)
             else:
-                d = max(abs(lo - cu), abs(hi - cu))
-                peak = -cv - math.sqrt(max(size * size - d * d, 0.0))
-            top = max(top, peak)
+                d, other = abs(lo - cu), abs(hi - cu)
+                d = other if other > d else d
+                h = size * size - d * d
+                peak, other = -cv - sqrt(0.0 if 0.0 > h else h), -math.inf
+            peak = other if other > peak else peak
             # The blade and the floor stand at least ``lowest``: only where the field stands higher is looked at.
             if peak <= high:
+                if peak > fall:
+                    tall.append((lo, hi, piece))
                 continue
             spans.append((lo, hi, piece))
             x = 0.5 * (lo + hi)
             if inside_a < x < inside_b:
                 level = -value(piece, x)
-                if level > high and _over_blade(level, x, chain, width, radius, floor, witness):
+                if level > high and _over_blade(level, x, chain, width, radius, floor, witness, axis):
                     return True
-        if top - lowest <= MATERIAL_MARGIN - VERDICT_EPS:
+        left = [(lo, hi, piece) for lo, hi, piece in spans + tall if not _under_floor(piece, lo, hi, floor)]
+        if not left or (radius > 0 and _in_end_corners(left, lower_hull(chain), width, radius)):
             return False
-        for lo, hi, piece in spans:  # near the ends of the pieces standing higher
-            for x in (lo + WITNESS_INSET, hi - WITNESS_INSET):
-                if lo < x < hi and inside_a < x < inside_b:
-                    level = -value(piece, x)
-                    if level > high and _over_blade(level, x, chain, width, radius, floor, witness):
-                        return True
-        return None
+        return _by_ends(spans, chain, width, radius, floor, axis, (inside_a, inside_b, high, witness))
 
     def stand(self, u: float, v: float, width: float) -> float:
         """Highest stand of the field above level v over the columns (u, u + w),
@@ -224,7 +228,7 @@ class MaterialTop:
         cuts.update(x for x in starts[bisect_right(starts, a):bisect_right(starts, b)] if x < b)
         xs = sorted(cuts.union((a, b)))
         j, last = 0, len(outline) - 1
-        k, count = 0, len(starts)
+        k, count = max(bisect_right(starts, a) - 1, 0), len(starts)  # the field's piece over a: the walk starts there
         for x0, x1 in zip(xs, xs[1:]):
             mid = 0.5 * (x0 + x1)
             while outline[j][1] <= mid and j < last:
@@ -250,37 +254,8 @@ def _joined(starts: List[float], pieces: List[Optional[Curve]], more_starts: Lis
 def _stands_over(field: Curve, low: Curve, x0: float, x1: float, limit: float) -> bool:
     """Whether the field stands more than ``limit`` above the outline ``low``
     at one of ``_candidates`` (where over (x0, x1) their difference peaks)."""
-    return any(-value(field, x) - value(low, x) > limit for x in _candidates(field, low, x0, x1))
-
-
-def _blade_level(x: float, u: float, v: float, w: float, r: float) -> float:
-    """Level of the front outline of the blade at (u, v) over column x (inf beside it)."""
-    if x < u or x > u + w:
-        return math.inf
-    d = u + r - x if x < u + r else x - (u + w - r) if x > u + w - r else 0.0
-    return v + r - math.sqrt(max(r * r - d * d, 0.0)) if d > 0 else v
-
-
-def _over_blade(level: float, x: float, chain: List[Point], w: float, r: float, floor: List[Point],
-                margin: float) -> bool:
-    """Whether ``level`` (the field's at column x) stands more than ``margin``
-    over the floor less FLOOR_TOL there and over a blade standing on
-    ``chain`` (centred over x on a segment, or at a point: all on or above
-    the chain's lower hull, so at least the outline swept along it). Never
-    where x is not strictly inside a floor piece: exceeds does not look
-    there."""
-    i = bisect_right(floor, (x, math.inf)) - 1
-    if i < 0 or i + 1 >= len(floor) or not floor[i][0] < x < floor[i + 1][0]:
-        return False
-    (u0, v0), (u1, v1) = floor[i], floor[i + 1]
-    if level - (v0 - FLOOR_TOL + (v1 - v0) / (u1 - u0) * (x - u0)) <= margin:
-        return False
-    centre = x - 0.5 * w
-    for (p0, q0), (p1, q1) in zip(chain, chain[1:]):
-        if (p0 < centre < p1 or p1 < centre < p0) and level - (q0 + (q1 - q0) * (centre - p0) / (p1 - p0)) > margin:
-            return True
-    for u, v in chain:
-        if x - w <= u <= x and level - _blade_level(x, u, v, w, r) > margin:  # a blade over x
+    for x in _candidates(field, low, x0, x1):
+        if -value(field, x) - value(low, x) > limit:
             return True
     return False
 

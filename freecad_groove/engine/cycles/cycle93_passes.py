@@ -29,6 +29,7 @@ the same stretch bounds the chorded trace has (``_Written``).
 
 import math
 from bisect import bisect_left, bisect_right
+from operator import itemgetter
 from typing import TYPE_CHECKING, Callable, Dict, List, Optional, Tuple
 
 from ..envelope import Envelope, PathPoint, on_circles, path_moves, writes_arcs
@@ -56,14 +57,43 @@ def _groups(pts: List[Point], steps: List[float]) -> List[Tuple[int, int]]:
     """(first, last) point indexes of the stretches between the plunge
     positions ``steps`` (ascending): the trace is split there (``split_at``),
     so each stretch takes at most one tooth. One point is one stretch."""
-    bounds = [0]
-    for k in range(1, len(pts) - 1):
-        u = pts[k][0]
-        i = bisect_left(steps, u - STEP_EPS)
-        if i < len(steps) and steps[i] <= u + STEP_EPS:
-            bounds.append(k)
-    bounds.append(len(pts) - 1)
+    inner = _at_steps(pts, steps) if len(pts) > 3 * len(steps) else None  # by step where the points outnumber them
+    if inner is None:
+        inner = []
+        for k in range(1, len(pts) - 1):
+            u = pts[k][0]
+            i = bisect_left(steps, u - STEP_EPS)
+            if i < len(steps) and steps[i] <= u + STEP_EPS:
+                inner.append(k)
+    bounds = [0] + inner + [len(pts) - 1]
     return list(zip(bounds, bounds[1:])) if len(pts) > 1 else [(0, 0)]
+
+
+def _at_steps(pts: List[Point], steps: List[float]) -> Optional[List[int]]:
+    """The inner point indexes (not the first, not the last) within STEP_EPS
+    of one of ``steps``, ascending, for a trace whose u never turns back (a
+    pass), found by step (a bisection each, then each point near it tested as
+    ``_groups`` does); None for another trace."""
+    us = list(map(itemgetter(0), pts))
+    last = len(us) - 1
+    if us == sorted(us):
+        ordered, flip = us, False
+    elif us == sorted(us, reverse=True):
+        ordered, flip = us[::-1], True
+    else:
+        return None
+    found = set()
+    count = len(steps)
+    for s in steps:
+        near = 1e-6 + abs(s) * 1e-12  # far wider than STEP_EPS and its rounding: each point in it is tested
+        for j in range(bisect_left(ordered, s - near), bisect_right(ordered, s + near)):
+            k = last - j if flip else j
+            if 0 < k < last and k not in found:
+                u = us[k]
+                i = bisect_left(steps, u - STEP_EPS)
+                if i < count and steps[i] <= u + STEP_EPS:
+                    found.add(k)
+    return sorted(found)
 
 
 def _bounds(groups: List[Tuple[int, int]]) -> List[int]:
@@ -165,7 +195,7 @@ def _stretches(pts: List[Point], groups: List[Tuple[int, int]], material: Materi
     entries: List[float] = []
     for first, last in groups:
         part = pts[first:last + 1]
-        lo, hi = min(u for u, _v in part), max(u for u, _v in part)
+        lo, hi = min(part)[0], max(part)[0]  # the least and greatest u (points compare by u first)
         if covered(material, env, lo, hi) or not material.cuts(part, width, radius, top):
             continue
         if runs and runs[-1][1] == first:
@@ -218,7 +248,7 @@ def feed_where_material(geo: "GrooveGeometry", pts: List[Point], go: Go, materia
     runs, entries = _stretches(pts, groups, material, w, r, top, env, lambda at: _entry(geo, material, at), corners)
     written = _Written(pts, groups, exact, steps, runs)
     if rough:
-        us = [u for u, _v in pts] + ([material.passed[1], material.passed[2]] if material.passed else [])
+        us = [min(pts)[0], max(pts)[0]] + ([material.passed[1], material.passed[2]] if material.passed else [])
         material.note_pass(env, min(us), max(us))
     here = None  # the point the blade stands on, None at the clearance
     for (first, last), entry in zip(runs, entries):

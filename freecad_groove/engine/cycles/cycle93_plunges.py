@@ -76,7 +76,7 @@ def plunges(geo: "GrooveGeometry", positions: List[float], go: Go, out: List[Mov
     vrt, idep, dwt = p["VRT"], p["IDEP"], p["DWT"]
     reentry = min(vrt, REENTRY_CLEARANCE_MM if geo.metric else REENTRY_CLEARANCE_INCH)
     bottoms = [geo.rough_env.lowest(u) for u in positions]
-    base = base_envelope(geo)
+    base = base_envelope(geo) if dwt > 0 else None  # only a dwell asks where the base is
     previous = None
     for u, bottom in zip(positions, bottoms):
         top = geo.contour_top(u)
@@ -92,7 +92,7 @@ def plunges(geo: "GrooveGeometry", positions: List[float], go: Go, out: List[Mov
             if k < n:
                 go("r", u, level + vrt)
                 go("r", u, level + reentry)  # only through the slot just cut
-        if dwt > 0 and bottom <= base.lowest(u) + BASE_TOLERANCE:
+        if base is not None and bottom <= base.lowest(u) + BASE_TOLERANCE:
             x, z = geo.frame.blade(u, bottom)
             out.append(dwell(x, z, dwt))
         freed = free_off(geo, u, bottom, previous)

@@ -6,7 +6,8 @@ plunge positions.
 
 import math
 from bisect import bisect_left, bisect_right
-from typing import List, Optional, Sequence, Tuple
+from operator import itemgetter
+from typing import Dict, List, Optional, Sequence, Tuple
 
 from ..envelope import Arc, PathPoint, arc_points
 from ..envelope_curves import value
@@ -82,6 +83,9 @@ def intersect(p: Point, d: Point, q: Point, e: Point) -> Optional[Point]:
 def without_float_folds(pts: List[Point]) -> List[Point]:
     """The points with u never stepping back by rounding: an arc's end computed
     from a large radius may lie FOLD_TOLERANCE behind the next point."""
+    us = list(map(itemgetter(0), pts))
+    if us == sorted(us) and set(map(type, pts)) == {tuple}:
+        return list(pts)  # u never steps back: the points as they are
     out = [pts[0]]
     for u, v in pts[1:]:
         back = out[-1][0]
@@ -99,6 +103,58 @@ def split_at(pts: Sequence[Point], positions: List[float]) -> List[Point]:
     leaving a tooth at most one width step wide), and the pass takes the
     teeth one move per step, never more than a width step across."""
     positions = sorted(positions)
+    # By position where the moves outnumber the positions (a pass over an arc's chords), else move by move.
+    crossed = _crossed_monotone(pts, positions) if len(pts) > 2 * len(positions) else None
+    if crossed is None:
+        return _split_each(pts, positions)
+    exact = isinstance(pts[0], PathPoint)
+    out: List[Point] = []
+    done = 0
+    for i in sorted(crossed):
+        out.extend(pts[done:i + 1])
+        out.extend(_points_on(pts[i], pts[i + 1], crossed[i], exact))
+        done = i + 1
+    out.extend(pts[done:])
+    return out
+
+
+def _crossed_monotone(pts: Sequence[Point], positions: List[float]) -> Optional[Dict[int, List[float]]]:
+    """For a trace whose u never turns back (a pass: the usual case), the
+    positions (ascending) each move i (pts[i] to pts[i + 1]) crosses, as
+    ``_split_each`` finds them (strictly inside the move by 1e-9), found by
+    position, not by move: one bisection each. None for another trace."""
+    us = list(map(itemgetter(0), pts))
+    if us == sorted(us):
+        ascending = True
+    elif us == sorted(us, reverse=True):
+        ascending, us = False, us[::-1]
+    else:
+        return None
+    crossed: Dict[int, List[float]] = {}
+    last = len(us) - 1
+    for c in positions:
+        j = bisect_left(us, c)  # us[j - 1] < c <= us[j]: only that move may hold c strictly inside
+        if 0 < j <= last and us[j] > c and us[j - 1] + 1e-9 < c < us[j] - 1e-9:
+            crossed.setdefault(j - 1 if ascending else last - j, []).append(c)
+    if not ascending:
+        for inside in crossed.values():
+            inside.reverse()
+    return crossed
+
+
+def _points_on(start: Point, end: Point, inside: List[float], exact: bool) -> List[Point]:
+    """The points at u in ``inside`` on the move from start to end (its line, or with ``exact`` its circle:
+    end.arc), PathPoints with ``exact``."""
+    (u0, v0), (u1, v1) = start, end
+    if not exact:
+        return [(c, v0 + (v1 - v0) * (c - u0) / (u1 - u0)) for c in inside]
+    arc = end.arc
+    return [PathPoint(c, v0 + (v1 - v0) * (c - u0) / (u1 - u0) if arc is None else value(arc, c), arc)
+            for c in inside]
+
+
+def _split_each(pts: Sequence[Point], positions: List[float]) -> List[Point]:
+    """split_at move by move (any trace; ``positions`` ascending)."""
     exact = isinstance(pts[0], PathPoint)
     out = [pts[0]]
     for (u0, v0), end in zip(pts, pts[1:]):
