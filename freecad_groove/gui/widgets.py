@@ -135,8 +135,12 @@ def choose_form_rows(layout: object) -> None:
     # could hand back a stale wrapper left at its address by a deleted item (qt_wrappers).
     labels = fields = 0
     parent = layout.parentWidget()
+    # The parent's own children only (a layout's widgets are; their inner editors are not), and only wrappers
+    # that still claim a widget: FreeCAD 1.0 once handed out, for a child of a new form, a wrapper saying its
+    # object was gone (RuntimeError building the Plunge grind form), and 1.1 crashed at the same place.
+    children = parent.children() if parent is not None else []
     places = [(layout.getWidgetPosition(widget), widget.sizeHint().width(), _least_width(widget))
-              for widget in (parent.findChildren(QtGui.QWidget) if parent is not None else [])]
+              for widget in children if isinstance(widget, QtGui.QWidget) and qt_wrappers.shiboken.isValid(widget)]
     places += [(layout.getLayoutPosition(inner), inner.sizeHint().width(), inner.minimumSize().width())
                for inner in layout.findChildren(QtGui.QLayout)]
     for (row, role), hint, least in places:

@@ -179,3 +179,26 @@ def test_a_window_whose_wrapper_says_it_is_gone_makes_the_new_panel_forget_nothi
     qt_wrappers.collect_closed_panels()
     assert forgotten == 0
     assert held() is None or not shiboken.isValid(held()), "forgotten once the windows can be read again"
+
+
+def test_form_rows_are_chosen_past_a_wrapper_that_says_its_widget_is_gone():
+    # FreeCAD 1.0 once handed out, for a child of the Plunge grind form being built, a wrapper saying its object
+    # was gone: choose_form_rows raised RuntimeError and the panel did not open (1.1 crashed at the same place).
+    from freecad_groove.gui.widgets import FORM_ROW, choose_form_rows
+
+    form = QtGui.QWidget()
+    layout = QtGui.QFormLayout(form)
+    layout.addRow(QtGui.QLabel("Wheel width", form), QtGui.QLineEdit(form))
+    gone = QtGui.QLabel("gone")
+    shiboken.delete(gone)
+    real = form.children
+    form.children = lambda: [gone] + list(real())
+    choose_form_rows(layout)
+    assert layout.rowWrapPolicy() == QtGui.QFormLayout.DontWrapRows  # a short label and a field fit FORM_ROW
+    assert FORM_ROW >= 100
+    # a label wider than a row: every label above its field, the same walk
+    holder = QtGui.QWidget()
+    wide = QtGui.QFormLayout(holder)
+    wide.addRow(QtGui.QLabel("W" * 60, holder), QtGui.QLineEdit(holder))
+    choose_form_rows(wide)
+    assert wide.rowWrapPolicy() == QtGui.QFormLayout.WrapAllRows
