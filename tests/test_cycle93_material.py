@@ -75,6 +75,15 @@ def _case(rng):
     return w, r, slope, slots, lower_hull(points)
 
 
+def _cleared(slope, slots, w, r):
+    """The field over a bar of ``slope`` after plunges of a w-wide, r-cornered blade to each (u, bottom) of
+    ``slots``."""
+    material = MaterialTop(-30.0, 60.0, slope)
+    for u, bottom in slots:
+        material.clear_slot(u, u, bottom, w, r)
+    return material
+
+
 def _bisected(material, outline, floor):
     """The closed form's stand: the limit ``exceeds`` switches at, bisected."""
     lo, hi = -20.0, 20.0
@@ -99,9 +108,7 @@ def test_the_closed_form_stand_matches_a_brute_force_one(seed):
     raised to a floor (the profile) less FLOOR_TOL."""
     rng = random.Random(seed)
     w, r, slope, slots, chain = _case(rng)
-    material = MaterialTop(-30.0, 60.0, slope)
-    for u, bottom in slots:
-        material.clear_slot(u, u, bottom, w, r)
+    material = _cleared(slope, slots, w, r)
     outline = _sweep(chain, w, r)
     a, b = outline[0][0], outline[-1][1]
     xs = np.linspace(a + 1e-6, b - 1e-6, COLUMNS)
@@ -122,9 +129,7 @@ def test_a_stretch_cuts_exactly_when_the_swept_blade_stands_under_the_field_whet
     for seed in range(1500):
         rng = random.Random(seed)
         w, r, slope, slots, _chain = _case(rng)
-        material = MaterialTop(-30.0, 60.0, slope)
-        for u, bottom in slots:
-            material.clear_slot(u, u, bottom, w, r)
+        material = _cleared(slope, slots, w, r)
         material.cuts([(0.0, 0.0)], w, r, [(-100.0, -1e9), (100.0, -1e9)])  # the field built: later slots lower it
         for u, v in rng.sample(slots, rng.randint(0, len(slots))):
             material.stand_blade(u + rng.uniform(-0.5, 0.5), v + rng.uniform(-1.0, 1.0), w, r)
@@ -177,9 +182,7 @@ def test_on_a_long_stretch_the_blades_over_a_column_found_by_bisection_are_those
             walked = _over_blade(level, x, chain, w, r, floor, MATERIAL_MARGIN)
             assert _over_blade(level, x, chain, w, r, floor, MATERIAL_MARGIN, axis) == walked, seed
             checked[walked] += 1
-        material = MaterialTop(-30.0, 60.0, slope)
-        for u, bottom in slots:
-            material.clear_slot(u, u, bottom, w, r)
+        material = _cleared(slope, slots, w, r)
         swept = material.exceeds(_sweep(lower_hull(chain), w, r), floor, MATERIAL_MARGIN)
         assert material.cuts(chain, w, r, floor) == swept, seed
     assert checked[True] > 200 and checked[False] > 200, checked
@@ -195,9 +198,7 @@ def test_by_the_opening_s_edges_the_shortcut_answers_as_the_sweep_where_the_fiel
     for seed in range(1500):
         rng = random.Random(seed)
         w, r, slope, slots, _chain = _case(rng)
-        material = MaterialTop(-30.0, 60.0, slope)
-        for u, bottom in slots:
-            material.clear_slot(u, u, bottom, w, r)
+        material = _cleared(slope, slots, w, r)
         right = slots[-1][0] + w  # the opening: [0, right], its base below every slot
         floor = [(-100.0, -100.0 * slope), (0.0, 0.0), (0.0, -7.0), (right, -7.0 + rng.uniform(-0.5, 0.5)),
                  (right, right * slope), (100.0, 100.0 * slope)]
@@ -229,9 +230,7 @@ def test_a_stretch_from_or_to_a_blade_s_own_slot_is_answered_as_the_sweep_answer
         w, r, slope, slots, _chain = _case(rng)
         if r == 0:
             r = 0.4 * rng.uniform(0.1, 1.0) * w
-        material = MaterialTop(-30.0, 60.0, slope)
-        for u, bottom in slots:
-            material.clear_slot(u, u, bottom, w, r)
+        material = _cleared(slope, slots, w, r)
         u, bottom = rng.choice(slots)
         steps = [(k * rng.uniform(0.1, 0.9), rng.choice([0.0, 0.0, rng.uniform(-0.3, 0.6)])) for k in range(1, 4)]
         points = [(u, bottom)] + [(u + du, bottom + dv) for du, dv in steps[:rng.randint(0, 3)]]
