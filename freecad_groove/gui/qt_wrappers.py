@@ -30,6 +30,11 @@ except ImportError:  # FreeCAD 1.0: Qt 5
     import shiboken2 as shiboken
 
 
+# The base class of every wrapper (shiboken's Object): what shiboken's isValid and invalidate may be handed. A
+# signal's SignalInstance, which PySide keeps in a widget's __dict__, is none (invalidating one segfaulted).
+WRAPPER = next(cls for cls in QtCore.QObject.__mro__ if cls.__name__ == "Object")
+
+
 def made_by_qt(objects: list) -> list:
     """The wrappers of ``objects`` (None allowed) and of their children that C++ made: those whose deletion
     shiboken does not hear of. Call it while the objects are surely alive (it reads their children), and
@@ -102,8 +107,8 @@ def drop_stale(form: object) -> None:
     # item's: FreeCAD 1.0 handed form.chamferMeasure out as a QListWidgetItem), which findChildren cannot
     # return: forgotten and taken again as well.
     for name, value in list(vars(form).items()):
-        if not type(value).__module__.startswith(("PySide", "shiboken")):
-            continue  # not a wrapper: the form's own Python attributes
+        if not isinstance(value, WRAPPER):
+            continue  # not a wrapper: the form's own Python attributes, or a signal PySide keeps there
         if isinstance(value, QtCore.QObject) and shiboken.isValid(value):
             continue
         if shiboken.isValid(value):
@@ -168,6 +173,9 @@ class ForgetsButtonBox:
     FreeCAD made and deletes, leaves no wrapper behind when the panel closes."""
 
     def modifyStandardButtons(self, buttonBox):
+        # FreeCAD has just made the box and its buttons: any wrapper PySide holds for them is one of a deleted
+        # object once at the same address (FreeCAD 1.0 segfaulted enabling the OK button handed out that way).
+        drop_stale(buttonBox)
         super().modifyStandardButtons(buttonBox)
         # Taken now: when the panel is cleaned up FreeCAD may have deleted the box already (a closed document).
         self.made_by_qt = made_by_qt([buttonBox])

@@ -200,8 +200,13 @@ class ScaledPicture(QtCore.QObject):
         self.draw(width)
 
     def eventFilter(self, watched: object, event: object) -> bool:
+        if not isinstance(event, QtCore.QEvent):
+            # PySide handed the event out through a wrapper of a deleted object once at its address (FreeCAD 1.0
+            # segfaulted reading its type): read nothing of it, and forget the wrapper so the next one is right
+            qt_wrappers.forget([event])
+            return False
         if event.type() == QtCore.QEvent.Resize:
-            self.draw(watched.width())
+            self.draw(self.label.width())  # the label this filter watches, through the wrapper it holds
         return False
 
     def draw(self, available: int) -> None:

@@ -8,6 +8,7 @@ next panel's widgets built there (a spin box read as a QDialogButtonBox in
 """
 
 import gc
+import os
 import weakref
 
 import FreeCADGui
@@ -17,7 +18,7 @@ from parts import face_name
 from PySide import QtCore, QtGui
 
 from freecad_groove import make_groove
-from freecad_groove.gui import qt_wrappers
+from freecad_groove.gui import PANELS, qt_wrappers
 from freecad_groove.gui.qt_wrappers import shiboken
 
 Ok, Cancel = QtGui.QDialogButtonBox.Ok, QtGui.QDialogButtonBox.Cancel
@@ -202,3 +203,56 @@ def test_form_rows_are_chosen_past_a_wrapper_that_says_its_widget_is_gone():
     wide.addRow(QtGui.QLabel("W" * 60, holder), QtGui.QLineEdit(holder))
     choose_form_rows(wide)
     assert wide.rowWrapPolicy() == QtGui.QFormLayout.WrapAllRows
+
+
+def test_the_buttons_freecad_makes_are_read_past_wrappers_of_deleted_objects_at_their_addresses():
+    # FreeCAD 1.0 segfaulted enabling the OK button in modifyStandardButtons: PySide handed the new button out
+    # through a wrapper of another type still mapped to its address. Such a wrapper is made here by hand.
+    class Base:
+        def modifyStandardButtons(self, box):
+            self.read = [box.button(b) for b in (Ok, Cancel)]
+
+    class Panel(qt_wrappers.ForgetsButtonBox, Base):
+        pass
+
+    box = QtGui.QDialogButtonBox(Ok | Cancel)  # its buttons are made in C++, as FreeCAD's are
+    box.accepted.connect(lambda: None)  # PySide keeps the signal in the box's __dict__: no wrapper to forget
+    addresses = []
+    for b in (Ok, Cancel):
+        button = box.button(b)
+        addresses.append(shiboken.getCppPointer(button)[0])
+        shiboken.invalidate(button)  # the button's own wrapper no longer mapped: as if never taken
+    stale = [shiboken.wrapInstance(address, QtGui.QLabel) for address in addresses]
+    assert isinstance(box.button(Ok), QtGui.QLabel)  # what PySide hands out now, without the panel's care
+    panel = Panel()
+    panel.modifyStandardButtons(box)
+    read_right = [isinstance(button, QtGui.QPushButton) for button in panel.read]
+    qt_wrappers.forget(stale)
+    assert read_right == [True, True], "a button was handed out through another object's wrapper"
+
+
+def test_the_picture_reads_nothing_of_an_event_handed_out_through_another_objects_wrapper():
+    # FreeCAD 1.0 segfaulted in ScaledPicture.eventFilter reading the type of an event handed out that way.
+    from freecad_groove.gui.widgets import ScaledPicture
+
+    read = []
+
+    class Item(QtGui.QListWidgetItem):  # stands for a deleted list item's wrapper at the event's address
+        def type(self):
+            read.append("type")
+            return 0
+
+    label = QtGui.QLabel()
+    svg = os.path.join(PANELS, "groove_section.svg")
+    picture = ScaledPicture(label, svg, 200, 100)
+    item = Item()
+    filtered = picture.eventFilter(label, item)
+    assert read == [] and filtered is False
+    views = QtGui.QListWidget()
+    views.addItems(["G54"])  # an item Qt makes: its wrapper is one PySide may hand out stale
+    made_by_qt = views.item(0)
+    picture.eventFilter(label, made_by_qt)
+    assert not shiboken.isValid(made_by_qt), "forgotten: the next event at that address gets its own wrapper"
+    label.resize(80, 60)
+    picture.eventFilter(label, QtGui.QResizeEvent(QtCore.QSize(80, 60), QtCore.QSize(200, 100)))
+    assert picture.drawn == 80
