@@ -51,8 +51,8 @@ def program(n: int, call: str = CALL) -> str:
     return "\n".join(lines) + "\n"
 
 
-def run_child(path: str, out: str, to_stdout: bool, root: str) -> tuple:
-    """Peak memory (MiB) and seconds of one ``expand`` child."""
+def run_child(path: str, out: str, to_stdout: bool, root: str, env: dict) -> tuple:
+    """Peak memory (MiB) and seconds of one ``expand`` child (``env``: figures.child_env)."""
     argv = [sys.executable, "-c",
             "import resource, sys; sys.argv[0] = 'freecad_groove'; "
             "from freecad_groove import cli; code = cli.main(sys.argv[1:]); "
@@ -63,7 +63,7 @@ def run_child(path: str, out: str, to_stdout: bool, root: str) -> tuple:
         argv += ["-o", out]
     with open(os.devnull, "wb") as null:
         t0 = time.perf_counter()
-        proc = subprocess.run(argv, cwd=root, stdout=null, stderr=subprocess.PIPE, check=False)
+        proc = subprocess.run(argv, cwd=root, env=env, stdout=null, stderr=subprocess.PIPE, check=False)
         seconds = time.perf_counter() - t0
     err = proc.stderr.decode()
     if proc.returncode != 0:
@@ -86,12 +86,17 @@ def main() -> None:
     print("freecad-groove command-line memory (Python %s): expand N %s CYCLE93 calls %s"
           % (sys.version.split()[0], kind, "to stdout" if args.stdout else "-o OUT"))
     with tempfile.TemporaryDirectory() as tmp:
+        env = figures.child_env(tmp)
+        warm_up = os.path.join(tmp, "warm_up.mpf")
+        with open(warm_up, "w") as f:
+            f.write(program(1, PLAIN_CALL if args.plain else CALL))
+        run_child(warm_up, os.path.join(tmp, "warm_up.ngc"), args.stdout, args.root, env)  # writes the bytecode
         for n in args.calls:
             path = os.path.join(tmp, "prog%d.mpf" % n)
             with open(path, "w") as f:
                 f.write(program(n, PLAIN_CALL if args.plain else CALL))
             out = os.path.join(tmp, "out%d.ngc" % n)
-            peak, seconds = run_child(path, out, args.stdout, args.root)
+            peak, seconds = run_child(path, out, args.stdout, args.root, env)
             size = os.path.getsize(out) if not args.stdout else None
             print("  %6d calls: program %6.1f MiB, output %s, peak memory %7.1f MiB, %6.1f s (%.2f ms a call)"
                   % (n, os.path.getsize(path) / 2**20,

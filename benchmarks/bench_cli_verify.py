@@ -28,12 +28,12 @@ CHILD = ("import resource, sys; sys.argv[0] = 'freecad_groove'; "
          "sys.exit(code)")
 
 
-def run_child(path: str, root: str) -> tuple:
-    """(seconds, peak MiB, exit status, report) of one ``verify`` child."""
+def run_child(path: str, root: str, env: dict) -> tuple:
+    """(seconds, peak MiB, exit status, report) of one ``verify`` child (``env``: figures.child_env)."""
     argv = [sys.executable, "-c", CHILD, "verify", path, "--dialect", "sinumerik", "--tool-width", "3",
             "--tool-radius", "0.4"]
     t0 = time.perf_counter()
-    proc = subprocess.run(argv, cwd=root, capture_output=True, check=False)
+    proc = subprocess.run(argv, cwd=root, env=env, capture_output=True, check=False)
     seconds = time.perf_counter() - t0
     err = proc.stderr.decode()
     if proc.returncode not in (0, 1):
@@ -51,11 +51,16 @@ def main() -> None:
     figures.start(args)
     print("%7s %9s %9s %6s %s" % ("calls", "seconds", "peak MiB", "exit", "total line"))
     with tempfile.TemporaryDirectory() as folder:
+        env = figures.child_env(folder)
+        warm_up = os.path.join(folder, "warm_up.mpf")
+        with open(warm_up, "w") as f:
+            f.write(program(1))
+        run_child(warm_up, args.root, env)  # writes the bytecode
         for calls in args.calls:
             path = os.path.join(folder, "calls%d.mpf" % calls)
             with open(path, "w") as f:
                 f.write(program(calls))
-            seconds, mib, status, report = run_child(path, args.root)
+            seconds, mib, status, report = run_child(path, args.root, env)
             total = [line for line in report.splitlines() if ": total: " in line]
             print("%7d %9.2f %9.1f %6d %s" % (calls, seconds, mib, status,
                                                total[0].split(": total: ")[1][:90] if total else "-"))

@@ -487,6 +487,9 @@ def _run(args, name):
     except BrokenPipeError:
         quiet_stdout()
         return 1
+    except MemoryError:
+        report(name, 0, "out of memory: the run needs more memory than this machine gives it (verify and plot hold "
+                        "the whole program's moves)")
     except Exception as exc:  # never a traceback: one line, status 2
         report(name, 0, "internal error (%s: %s)" % (type(exc).__name__, exc))
     finally:

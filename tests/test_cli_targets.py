@@ -2,6 +2,9 @@
 target cannot take (one line naming the option or the word, status 2, nothing
 on stdout), never an internal error or a program the control would reject."""
 
+import io
+import sys
+
 import pytest
 from test_cli import run_inline
 
@@ -99,6 +102,54 @@ def test_a_tool_table_longer_than_the_bound_is_refused(tmp_path, monkeypatch):
     status, out, err = run_inline(["expand", "examples/fanuc_g75.nc", "--dialect", "fanuc", "--tool-width", "3",
                                    "--tool-table", str(path)])
     assert (status, out, err) == (2, "", "%s:0: the tool table is longer than 100 bytes\n" % path)
+
+
+@pytest.mark.parametrize("source", ["file", "stdin"])
+def test_a_short_program_read_whole_reserves_no_memory_for_the_bound(tmp_path, monkeypatch, source):
+    # read(limit + 1) reserved the bound (1 GiB) before reading a byte: verify of a five-line program stopped
+    # with "internal error (MemoryError)" under a 700 MB address-space limit.
+    import tracemalloc
+
+    from freecad_groove import cli_io
+
+    path = tmp_path / "part.nc"
+    path.write_text("G21 G98\nG0 X40. Z2.\nM30\n")
+    if source == "stdin":
+        stdin = io.TextIOWrapper(open(path, "rb"))  # a real file's buffer, as a pipe's; closed below
+        monkeypatch.setattr(sys, "stdin", stdin)
+    tracemalloc.start()
+    try:
+        name, text = cli_io.read_text(str(path) if source == "file" else "-", "the program", cli_io.MAX_PROGRAM_BYTES)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    if source == "stdin":
+        stdin.close()
+    assert text == path.read_text()
+    assert peak < 4 * cli_io.CHUNK, "%d bytes at the peak reading a 26-byte program" % peak
+
+
+def test_a_program_longer_than_the_bound_read_whole_is_refused_naming_the_bound(tmp_path, monkeypatch):
+    from freecad_groove import cli_io
+
+    monkeypatch.setattr(cli_io, "MAX_PROGRAM_BYTES", 100)
+    path = tmp_path / "long.nc"
+    path.write_text("G0 X40. Z2.\n" * 20)
+    status, out, err = run_inline(["verify", str(path), "--dialect", "fanuc", "--tool-width", "3"])
+    assert (status, out, err) == (2, "", "%s:0: the program is longer than 100 bytes\n" % path)
+
+
+def test_running_out_of_memory_is_said_in_one_line(monkeypatch):
+    from freecad_groove import cli_verify
+
+    def exhausted(*_args):
+        raise MemoryError()
+
+    monkeypatch.setattr(cli_verify, "_check", exhausted)
+    status, out, err = run_inline(["verify", "examples/fanuc_g75.nc", "--dialect", "fanuc", "--tool-width", "3"])
+    assert (status, out) == (2, "")
+    assert err == ("examples/fanuc_g75.nc:0: out of memory: the run needs more memory than this machine gives it "
+                   "(verify and plot hold the whole program's moves)\n")
 
 
 # ---------------------------------------------------------------- words that once made internal errors
