@@ -93,8 +93,9 @@ def parse_figures(text: str) -> list:
 class Runner:
     """Runs one benchmark on one side and returns (figures, failure or None)."""
 
-    def __init__(self, ref_root: str, python: str, label: str = LABEL):
+    def __init__(self, ref_root: str, python: str, label: str = LABEL, tree_scripts: bool = False):
         self.roots = {guard.REF: ref_root, guard.TREE: TREE}
+        self.tree_scripts = tree_scripts  # both sides measured by the tree's benchmark code
         self.python = python
         self.label = label
         self.code = {}  # (bench name, side) -> the checkout whose benchmark code measures it
@@ -106,6 +107,8 @@ class Runner:
         if (bench.name, side) in self.code:
             return [self.code[bench.name, side]]
         root = self.roots[side]
+        if self.tree_scripts:
+            return [TREE]
         return [root, TREE] if root != TREE and speaks_json(root, bench.script) else [TREE]
 
     def __call__(self, bench, side: str) -> tuple:
@@ -254,6 +257,9 @@ def parse(argv: list) -> argparse.Namespace:
     parser.add_argument("--python", default=venv if os.path.exists(venv) else sys.executable,
                         help="the Python that runs the host benchmarks (default: the tree's .venv, which "
                              "scripts/test makes, else this one; verify needs shapely)")
+    parser.add_argument("--tree-scripts", action="store_true",
+                        help="measure the ref with the tree's benchmark scripts too, not its own (when the way a "
+                             "benchmark measures has changed since the ref)")
     parser.add_argument("--noise", type=float, default=guard.NOISE, help="a ratio this close to 1 is \"same\" "
                                                                          "(default 0.03)")
     args = parser.parse_args(argv)
@@ -299,13 +305,14 @@ def main(argv: list | None = None) -> int:
             sys.stderr.write("benchmarks/run: --against %s: not a commit here (%s)\n" % (ref, last_words(e.stderr)))
             return 2
         said = header(args, ref, commit, benches, version)  # the tree and the load as the run starts
-        runner = Runner(ref_root, args.python)
+        runner = Runner(ref_root, args.python, tree_scripts=args.tree_scripts)
         progress, run = progress_runner(runner, ref)
         results = guard.measure(benches, args.rounds, run, progress)
         for bench, taken in results:
             if runner.code.get((bench.name, guard.REF)) == TREE:
-                taken.notes.append("%s measured with the tree's %s on %s's package (its own prints no figures)"
-                                   % (ref, bench.script, ref))
+                taken.notes.append("%s measured with the tree's %s on %s's package (%s)"
+                                   % (ref, bench.script, ref, "--tree-scripts" if args.tree_scripts
+                                      else "its own prints no figures"))
     print("\n".join(said))
     print()
     print(guard.table(results, ref, args.noise))

@@ -197,3 +197,17 @@ def test_the_material_tracking_benchmark_runs_with_its_stub_standing_in_for_mate
     assert proc.returncode == 0, proc.stderr[-2000:]
     rows = [line.split() for line in proc.stdout.splitlines()[2:]]
     assert [row[0] for row in rows] == ["rect", "R1", "flanks", "ANGC", "narrow", "deep", "all"], proc.stdout
+
+
+def test_tree_scripts_measure_the_ref_with_the_tree_s_benchmark_code(tmp_path):
+    # A ref whose own script prints figures is measured with it, unless the way the benchmark measures changed
+    # since (the command-line children's warm-up): --tree-scripts measures both sides with the tree's.
+    ref = tmp_path / "ref"
+    (ref / "benchmarks").mkdir(parents=True)
+    (ref / "benchmarks" / "figures.py").write_text("")
+    (ref / "benchmarks" / "bench_fake.py").write_text("figures.record('x', 1, 'ms', 'lower')\n")
+    bench = FakeBench("fake")
+    assert guard_run.Runner(str(ref), "python3").code_roots(bench, guard.REF) == [str(ref), guard_run.TREE]
+    assert guard_run.Runner(str(ref), "python3", tree_scripts=True).code_roots(bench, guard.REF) == [guard_run.TREE]
+    assert guard_run.Runner(str(ref), "python3", tree_scripts=True).code_roots(bench, guard.TREE) == [guard_run.TREE]
+    assert guard_run.parse(["--tree-scripts"]).tree_scripts and not guard_run.parse([]).tree_scripts
