@@ -123,7 +123,13 @@ ITEM_VIEWS = (QtGui.QListWidget, QtGui.QTableWidget, QtGui.QTreeWidget)
 VIEW_ITEMS = (QtGui.QListWidgetItem, QtGui.QTableWidgetItem, QtGui.QTreeWidgetItem)
 
 
-def forget_closed_views() -> int:
+def wrappers_alive() -> list:
+    """Every PySide wrapper Python's collector knows of (one walk over its objects: the panels' opening pays it
+    once)."""
+    return [obj for obj in gc.get_objects() if isinstance(obj, WRAPPER)]
+
+
+def forget_closed_views(alive: list | None = None) -> int:
     """Forget the wrappers of list, table and tree widgets that no window has any more, and of their items; the
     number forgotten. CAM's Job panel (FreeCAD 1.0) reads its work offset list and tool controller table item
     by item, and lives on after FreeCAD deleted its dialog: the item wrappers it took (19 for a Job of one
@@ -140,7 +146,8 @@ def forget_closed_views() -> int:
         live.add(id(top))
         live.update(id(view) for view in top.findChildren(QtGui.QAbstractItemView))
     # a view shiboken knows is deleted (PySide hears of a QObject's deletion) or one no window has
-    closed = [obj for obj in gc.get_objects() if isinstance(obj, ITEM_VIEWS) and id(obj) not in live
+    closed = [obj for obj in (wrappers_alive() if alive is None else alive)
+              if isinstance(obj, ITEM_VIEWS) and id(obj) not in live
               and (not shiboken.isValid(obj) or not shiboken.createdByPython(obj))]
     forgotten = 0
     for view in closed:
@@ -162,10 +169,68 @@ def collect_closed_panels() -> None:
     combo box as a QListWidgetItem, and the panel did not open). Then forget what CAM's panels left of their
     list and table widgets (forget_closed_views)."""
     gc.collect()
+    alive = wrappers_alive()
     try:
-        forget_closed_views()
+        forget_closed_views(alive)
     except RuntimeError:  # a wrapper that says its object is gone: forget nothing rather than fail the panel
         pass
+    try:
+        forget_deleted_widgets(alive)
+    except RuntimeError:  # the same: never a reason for a panel not to open
+        pass
+
+
+def address(wrapper: object) -> int:
+    """The C++ address ``wrapper`` stands for (shiboken's record: nothing of the object is read)."""
+    return shiboken.getCppPointer(wrapper)[0]
+
+
+def _wrappers_kept_by(wrapper: object) -> list:
+    """The wrappers ``wrapper`` keeps, and those they keep (shiboken reports a wrapper's children to Python's
+    collector): what invalidating ``wrapper`` invalidates with it."""
+    found, todo, seen = [], [wrapper], {id(wrapper)}
+    while todo:
+        for kept in gc.get_referents(todo.pop()):
+            if isinstance(kept, WRAPPER) and id(kept) not in seen:
+                seen.add(id(kept))
+                found.append(kept)
+                todo.append(kept)
+    return found
+
+
+def forget_deleted_widgets(alive: list | None = None) -> int:
+    """Forget the wrappers of widgets Qt made and has deleted, still held in Python; the number forgotten.
+    Qt knows every widget alive (QApplication.allWidgets), so a Qt-made widget's wrapper whose address is not
+    among them is one of a deleted widget: held on, it is handed out for the next widget built at that address.
+    CAM's Job panel (FreeCAD 1.0 and 1.1) leaves 18 such wrappers each time it closes (its form, its tab widget
+    and the forms of the 16 setup sheet op editors), and CAM's own panels built later were handed them: the
+    next Job panel's setup sheet raised "Internal C++ object (QTableView) already deleted" or segfaulted, an op
+    panel's tool controller editor segfaulted in installEventFilter. A wrapper that keeps a wrapper of a live
+    object (a wrapper handed out again for a widget built since, in use) is left alone: invalidating it would
+    invalidate that one too. Only shiboken's flags and records are read and changed."""
+    app = QtGui.QApplication.instance()
+    if app is None:
+        return 0
+    widgets = {address(widget) for widget in QtGui.QApplication.allWidgets()}
+    deleted = [obj for obj in (wrappers_alive() if alive is None else alive)
+               if isinstance(obj, QtGui.QWidget) and shiboken.isValid(obj)
+               and not shiboken.createdByPython(obj) and address(obj) not in widgets]
+    if not deleted:
+        return 0
+    objects = set(widgets) | {address(app)}
+    for top in QtGui.QApplication.topLevelWidgets():
+        if not shiboken.isValid(top):
+            return 0  # a window whose wrapper says it is gone (forget_closed_views): the live set is not whole
+        objects.update(address(child) for child in top.findChildren(QtCore.QObject))
+    forgotten = 0
+    for wrapper in deleted:
+        if not shiboken.isValid(wrapper):
+            continue  # invalidated with a wrapper that kept it
+        if any(shiboken.isValid(kept) and address(kept) in objects for kept in _wrappers_kept_by(wrapper)):
+            continue
+        shiboken.invalidate(wrapper)
+        forgotten += 1
+    return forgotten
 
 
 class ForgetsButtonBox:

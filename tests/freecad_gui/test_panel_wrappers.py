@@ -256,3 +256,35 @@ def test_the_picture_reads_nothing_of_an_event_handed_out_through_another_object
     label.resize(80, 60)
     picture.eventFilter(label, QtGui.QResizeEvent(QtCore.QSize(80, 60), QtCore.QSize(200, 100)))
     assert picture.drawn == 80
+
+
+def test_a_new_panel_forgets_the_wrappers_of_widgets_qt_deleted_that_python_still_holds(tmp_path):
+    # CAM's Job panel leaves the wrappers of its form, its tab widget and its 16 setup sheet op forms held after
+    # FreeCAD deleted its dialog; CAM's next Job panel was handed them for its own widgets and failed ("Internal
+    # C++ object (QTableView) already deleted", or a segfault). Here a form Qt made, held in Python, deleted by Qt.
+    closed, kept = made_by_qt_form(tmp_path, "closed"), made_by_qt_form(tmp_path, "kept")
+    held = [closed, closed.findChild(QtGui.QListWidget), kept, kept.findChild(QtGui.QListWidget)]
+    delete_in_qt(closed)
+    forgotten = qt_wrappers.forget_deleted_widgets()
+    valid = [shiboken.isValid(w) for w in held]
+    text = kept.findChild(QtGui.QTableWidget).item(0, 0).text()
+    delete_in_qt(kept)
+    qt_wrappers.forget_deleted_widgets()
+    assert valid == [False, False, True, True] and forgotten >= 1, (valid, forgotten)
+    assert text == "T1"
+
+
+def test_a_deleted_widget_s_wrapper_that_keeps_a_live_one_is_left(tmp_path, monkeypatch):
+    # Invalidating a wrapper invalidates the wrappers it keeps: one handed out again for a widget built since
+    # (in use) must stay valid, so its keeper is left.
+    closed, live = made_by_qt_form(tmp_path, "closed"), made_by_qt_form(tmp_path, "live")
+    delete_in_qt(closed)
+    real = qt_wrappers._wrappers_kept_by
+    monkeypatch.setattr(qt_wrappers, "_wrappers_kept_by", lambda w: [live] if w is closed else real(w))
+    qt_wrappers.forget_deleted_widgets()
+    left = shiboken.isValid(closed)
+    monkeypatch.undo()
+    qt_wrappers.forget_deleted_widgets()
+    gone = not shiboken.isValid(closed)
+    assert left and gone and shiboken.isValid(live)
+    delete_in_qt(live)
