@@ -167,7 +167,8 @@ def collect_closed_panels() -> None:
     with the dialog; the next panel's widgets built at those addresses were handed these wrappers (FreeCAD 1.0,
     test_model_panel_cases: the Groove page's error label came back as a QTableWidgetItem, the tool page's
     combo box as a QListWidgetItem, and the panel did not open). Then forget what CAM's panels left of their
-    list and table widgets (forget_closed_views)."""
+    list and table widgets (forget_closed_views) and the wrappers of widgets Qt deleted that Python still holds
+    (forget_deleted_widgets: CAM's Job panel leaves 18 or 19 each time it closes)."""
     gc.collect()
     alive = wrappers_alive()
     try:
