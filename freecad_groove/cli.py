@@ -7,9 +7,8 @@
 
 (verify and plot: cli_verify.py.)
 
-Thin layer: argument parsing and error reporting; the work is done by
-freecad_groove.engine (translator.iter_translation, output.program.write_program and
-the cycle classes).
+Thin layer: argument parsing and error reporting; the work is done by freecad_groove.engine
+(translator.iter_translation, output.program.write_program and the cycle classes).
 
 Errors: an invalid cycle or a line the reader cannot translate prints exactly
 one line ``PROGRAM:LINE: message`` on stderr, writes nothing to stdout or OUT
@@ -19,7 +18,7 @@ engine/output/files.py refuses, a full or closed stdout as ``<stdout>:0:``). Bad
 option values are reported by argparse (usage and message on stderr, status 2).
 A broken pipe on stdout ends quietly with status 1. SIGINT, SIGTERM and SIGHUP
 print ``PROGRAM:0: interrupted`` and exit with 128 + the signal's number, the
-temporary file of OUT removed.
+temporary file of OUT removed. Running out of memory is said in one line too.
 
 Warnings: what a cycle cannot do as programmed but does anyway (the engine's
 CycleWarning) prints one line each on stderr, ``PROGRAM:LINE: warning: CYCLE93:
@@ -62,6 +61,7 @@ from .cli_io import (
     read_lines,
     report,
     tool_table,
+    unexpected,
     write_chunks,
     write_stdout,
 )
@@ -487,11 +487,8 @@ def _run(args, name):
     except BrokenPipeError:
         quiet_stdout()
         return 1
-    except MemoryError:
-        report(name, 0, "out of memory: the run needs more memory than this machine gives it (verify and plot hold "
-                        "the whole program's moves)")
     except Exception as exc:  # never a traceback: one line, status 2
-        report(name, 0, "internal error (%s: %s)" % (type(exc).__name__, exc))
+        report(name, 0, unexpected(exc))
     finally:
         warnings.close()
     return EXIT_ERROR

@@ -36,6 +36,14 @@ class Failure(Exception):
         return cls(name, exc.line if exc.line is not None else 0, str(exc))
 
 
+def unexpected(exc: Exception) -> str:
+    """The one line said for an error no check foresaw: running out of memory, else an internal error."""
+    if isinstance(exc, MemoryError):
+        return ("out of memory: the run needs more memory than this machine gives it (verify and plot hold the "
+                "whole program's moves)")
+    return "internal error (%s: %s)" % (type(exc).__name__, exc)
+
+
 def program_name(path: str) -> str:
     """How messages name a file given on the command line ("-": standard input)."""
     return "<stdin>" if path == "-" else path
