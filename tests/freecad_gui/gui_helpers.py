@@ -252,28 +252,28 @@ def screenshot_dock(name):
     return path
 
 
-def open_op_panels():
-    """[(view provider, its task panel)] of the ops (CAM's and the add-on's) with a panel open in any document."""
+def _open_panels(attribute):
+    """[(view provider, its task panel)] of the objects of every document whose view provider holds a panel
+    in ``attribute``."""
     found = []
     for doc in FreeCAD.listDocuments().values():
         for obj in doc.Objects:
             vp = getattr(getattr(obj, "ViewObject", None), "Proxy", None)
-            if getattr(vp, "panel", None) is not None:
-                found.append((vp, vp.panel))
+            if getattr(vp, attribute, None) is not None:
+                found.append((vp, getattr(vp, attribute)))
     return found
+
+
+def open_op_panels():
+    """[(view provider, its task panel)] of the ops (CAM's and the add-on's) with a panel open in any document."""
+    return _open_panels("panel")
 
 
 def open_job_panels():
     """[(view provider, its task panel)] of the CAM Jobs with a panel open in any document (a test that failed
     while one was open left it: its selection observer then answered every later selection with a traceback,
     failing the tests after it)."""
-    found = []
-    for doc in FreeCAD.listDocuments().values():
-        for obj in doc.Objects:
-            vp = getattr(getattr(obj, "ViewObject", None), "Proxy", None)
-            if type(vp).__name__ == "ViewProvider" and getattr(vp, "taskPanel", None) is not None:
-                found.append((vp, vp.taskPanel))
-    return found
+    return [(vp, panel) for vp, panel in _open_panels("taskPanel") if type(vp).__name__ == "ViewProvider"]
 
 
 def cancel_open_panel():
