@@ -5,6 +5,8 @@
 1. A G77 pattern of N grooves (10,000 by default): expand, then write as
    LinuxCNC G-code. Reports time, output moves per second and peak memory
    (tracemalloc), and the same for N/4 and N/2 so the growth can be read.
+   The same for Fanuc's two-block G75 (the same grooves: 2 mm pecks, 5 mm
+   apart; the retract e the default setting's).
 2. A program of 200 CYCLE93 calls (seed-like grooves along a shaft) run
    through the same translator the command-line tool uses.
 Target (issue 2): at least 100,000 output moves per second on one core,
@@ -23,6 +25,7 @@ figures.use_package(__file__)
 
 from freecad_groove.engine import GroovingTool, MachineState, Settings  # noqa: E402
 from freecad_groove.engine.cycles.ab_g77 import G77  # noqa: E402
+from freecad_groove.engine.cycles.fanuc_g75 import FanucG75  # noqa: E402
 from freecad_groove.engine.translator import translate_program  # noqa: E402
 
 write_moves = figures.first_of("write_moves", "freecad_groove.engine.output.program", "freecad_groove.engine.targets")
@@ -42,8 +45,12 @@ def measure(fn):
     return result, min(elapsed, plain), peak
 
 
-def g77_pattern(n):
-    call = G77(X=40.0, Z=-(n - 1) * 5.0, I=2.0, K=5.0, F=0.05, D=0.0)
+def pecking_pattern(n, cycle="G77"):
+    """Expand and write ``n`` grooves 5 mm apart, 2 mm pecks, from X50 (diameter) down to X40."""
+    if cycle == "G77":
+        call = G77(X=40.0, Z=-(n - 1) * 5.0, I=2.0, K=5.0, F=0.05, D=0.0)
+    else:
+        call = FanucG75(X=40.0, Z=-(n - 1) * 5.0, P=2000, Q=5000, R=0.0, F=0.05)
     state = MachineState(x=25.0, z=0.0, feed=0.05)
 
     def run():
@@ -79,17 +86,18 @@ def main():
     args = ap.parse_args()
     figures.start(args)
     print("freecad-groove engine benchmark (Python %s, one core)" % sys.version.split()[0])
-    print("G77 pattern: expand + write LinuxCNC")
-    for n in (args.grooves // 4, args.grooves // 2, args.grooves):
-        (moves, lines), secs, peak = measure(g77_pattern(n))
-        print(
-            "  %6d grooves: %7d moves, %7d lines in %.3f s = %9.0f moves/s, peak memory %6.1f MiB (%.0f bytes/move)"
-            % (n, moves, lines, secs, moves / secs, peak / 2**20, peak / moves)
-        )
-        name = "G77 expand + write, %s grooves" % figures.thousands(n)
-        figures.record(name, moves / secs, "moves/s", figures.HIGHER,
-                       ">= 1,000,000" if n == args.grooves else None)
-        figures.record(name + ": peak memory", peak / 2**20, "MiB", figures.LOWER)
+    for cycle in ("G77", "G75"):
+        print("%s pattern: expand + write LinuxCNC" % cycle)
+        for n in (args.grooves // 4, args.grooves // 2, args.grooves):
+            (moves, lines), secs, peak = measure(pecking_pattern(n, cycle))
+            print(
+                "  %6d grooves: %7d moves, %7d lines in %.3f s = %9.0f moves/s, peak memory %6.1f MiB "
+                "(%.0f bytes/move)" % (n, moves, lines, secs, moves / secs, peak / 2**20, peak / moves)
+            )
+            name = "%s expand + write, %s grooves" % (cycle, figures.thousands(n))
+            figures.record(name, moves / secs, "moves/s", figures.HIGHER,
+                           ">= 1,000,000" if n == args.grooves else None)
+            figures.record(name + ": peak memory", peak / 2**20, "MiB", figures.LOWER)
     print("CYCLE93 program: translate (parse, validate, expand, write)")
     for n in (args.calls // 2, args.calls):
         out_lines, secs, peak = measure(cycle93_program(n))
