@@ -7,6 +7,8 @@ tests/freecad/run_suite.py in FreeCAD 1.1 and 1.0.
 """
 
 import dataclasses
+import re
+import zipfile
 
 import FreeCAD
 import Part
@@ -220,6 +222,41 @@ def test_an_op_changed_while_closed_plans_again_its_siblings_do_not(shop, tmp_pa
         assert plan_calls[0] == calls + 1
         assert texts[1] == _fresh_post(ops[1])
         assert [_post(op) for op in ops] == texts
+
+
+def _saved_with_width(path, op_name, width):
+    """The saved document at ``path`` with the op's Width replaced in its Document.xml (an edit of the file)."""
+    with zipfile.ZipFile(str(path)) as saved:
+        members = [(info, saved.read(info.filename)) for info in saved.infolist()]
+    pattern = re.compile(r'(<Object name="%s"[^>]*>.*?<Property name="Width" type="App::PropertyLength"[^>]*>\s*'
+                         r'<Float value=")[^"]+(")' % op_name, re.S)
+    edited = path.with_name("edited.FCStd")
+    with zipfile.ZipFile(str(edited), "w", zipfile.ZIP_DEFLATED) as out:
+        for info, data in members:
+            if info.filename == "Document.xml":
+                text, count = pattern.subn(r"\g<1>%r\g<2>" % width, data.decode())
+                assert count == 1, "the op's Width not found once in Document.xml"
+                data = text.encode()
+            out.writestr(info, data)
+    return edited
+
+
+def test_an_op_edited_in_the_saved_file_plans_again(shop, tmp_path, plan_calls):
+    # the Width changed in the file's Document.xml, its saved plans not: the first post's fingerprint finds it
+    # (the other tests change a value after opening, as such an edit leaves it)
+    ops = _three_ops(shop)
+    names, before = [op.Name for op in ops], _post(ops[1])
+    shop[0].saveAs(str(tmp_path / "a.FCStd"))
+    FreeCAD.closeDocument(shop[0].Name)
+    edited = _saved_with_width(tmp_path / "a.FCStd", names[1], 3.5)
+    with opened(str(edited)) as doc2:
+        ops = [doc2.getObject(name) for name in names]
+        assert ops[1].Width.Value == 3.5
+        calls = plan_calls[0]
+        texts = [_post(op) for op in ops]
+        assert plan_calls[0] == calls + 1  # the edited op alone
+        assert texts[1] != before  # the 3.5 mm groove, not the saved plans' 4 mm one
+        assert texts[1] == _fresh_post(ops[1])
 
 
 def test_no_post_after_reopening_plans_again(shop, tmp_path, plan_calls):
