@@ -152,6 +152,22 @@ def test_running_out_of_memory_is_said_in_one_line(monkeypatch):
                    "(verify and plot hold the whole program's moves)\n")
 
 
+@pytest.mark.parametrize("command", ["expand", "verify"])
+def test_running_out_of_memory_inside_a_cycle_is_said_as_out_of_memory(monkeypatch, command):
+    # The translator turned any exception on a line into "internal error (...)": MemoryError too, so a cycle
+    # that ran out of memory said "internal error (MemoryError: )" instead of the out-of-memory line.
+    from freecad_groove.engine.cycles import pecking
+
+    def exhausted(*_args, **_kwargs):
+        raise MemoryError()
+
+    monkeypatch.setattr(pecking.PeckingCycle, "expand", exhausted)
+    status, out, err = run_inline([command, "examples/fanuc_g75.nc", "--dialect", "fanuc", "--tool-width", "3"])
+    assert (status, out) == (2, "")
+    assert err == ("examples/fanuc_g75.nc:0: out of memory: the run needs more memory than this machine gives it "
+                   "(verify and plot hold the whole program's moves)\n")
+
+
 # ---------------------------------------------------------------- words that once made internal errors
 
 

@@ -220,6 +220,8 @@ class Translator(MotionTranslation, MachineTranslation, CycleTranslation, Native
             raise
         except CycleError as exc:
             raise ProgramError(exc.message, number) from exc
+        except MemoryError:  # the run's, not this line's: the caller says it (the command line's out-of-memory line)
+            raise
         except Exception as exc:  # a bug, reported on the line that triggered it
             raise ProgramError("internal error (%s: %s)" % (type(exc).__name__, exc), number) from exc
         self._track_block_delete(block, before)
