@@ -94,12 +94,7 @@ class ObjectPlungeGrind(AddonOp):
         self.report_error(obj, error)
 
     def _add_missing_properties(self, obj: object) -> None:
-        for type_id, name, group, tooltip, default in PROPERTIES:
-            if name not in obj.PropertiesList:
-                obj.addProperty(type_id, name, group, tooltip)
-                setattr(obj, name, default)
-                if type_id == "App::PropertyEnumeration":
-                    setattr(obj, name, default[0])
+        super()._add_missing_properties(obj)
         for name in DERIVED:
             obj.setEditorMode(name, 1)
 

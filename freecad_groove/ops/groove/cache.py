@@ -224,7 +224,9 @@ DATACLASSES = {"face": GrooveFace, "cycle": Cycle93, "start": MachineState, "set
                "tool": GroovingTool}
 
 
+@functools.cache  # a dataclass's fields do not change: read 6 times per saved op, 36 ms of opening 500 ops
 def _names(cls: type) -> list[str]:
+    """The field names of dataclass ``cls`` (a list shared by every caller: not to be changed)."""
     return [f.name for f in dataclasses.fields(cls)]
 
 

@@ -158,13 +158,7 @@ class ObjectGroove(KeptPlans, AddonOp):
 
     # -- properties -------------------------------------------------------------
     def _add_missing_properties(self, obj: object) -> None:
-        for type_id, name, group, tooltip, default in PROPERTIES:
-            if name in obj.PropertiesList:
-                continue
-            obj.addProperty(type_id, name, group, tooltip)
-            setattr(obj, name, default)
-            if type_id == "App::PropertyEnumeration":
-                setattr(obj, name, default[0])
+        super()._add_missing_properties(obj)
         # Constraints and editor modes are not stored in the document.
         obj.GrooveCount = (max(1, int(obj.GrooveCount)), 1, MAX_GROOVES, 1)
         for name in DERIVED:

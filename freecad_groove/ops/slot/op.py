@@ -60,11 +60,7 @@ class ObjectCylinderSlot(AddonOp):
 
     # -- FreeCAD op API ---------------------------------------------------------
     def _add_missing_properties(self, obj: object) -> None:
-        for type_id, name, tooltip, default in PROPERTIES:
-            if name not in obj.PropertiesList:
-                obj.addProperty(type_id, name, GROUP, tooltip)
-                if default is not None:
-                    setattr(obj, name, default)
+        super()._add_missing_properties(obj)
         for name in DERIVED:
             obj.setEditorMode(name, 1)
 
