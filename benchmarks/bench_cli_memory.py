@@ -6,8 +6,8 @@ Writes a Siemens program of N featured CYCLE93 calls (flank angles, edge
 radii, base chamfers, allowances; a grooving blade given with --tool-width),
 runs ``python3 -m freecad_groove expand PROGRAM -o OUT`` on it in a child
 process (``--stdout``: to standard output, into the null device) and prints the
-child's peak resident memory (``getrusage(RUSAGE_CHILDREN).ru_maxrss``, one
-child per run so each figure is its own), its time, and the sizes of the
+child's own peak resident memory (figures.CLI_CHILD: Linux's VmHWM, one
+child per run), its time, and the sizes of the
 program and of the output. Flat memory: the peak stays about the same from
 1,000 to 10,000 calls (10,000 take one to two minutes). ``--plain``: plain
 calls instead (a rectangular groove 10 wide and 6 deep, no other feature), the
@@ -53,12 +53,8 @@ def program(n: int, call: str = CALL) -> str:
 
 def run_child(path: str, out: str, to_stdout: bool, root: str, env: dict) -> tuple:
     """Peak memory (MiB) and seconds of one ``expand`` child (``env``: figures.child_env)."""
-    argv = [sys.executable, "-c",
-            "import resource, sys; sys.argv[0] = 'freecad_groove'; "
-            "from freecad_groove import cli; code = cli.main(sys.argv[1:]); "
-            "sys.stderr.write('maxrss %d\\n' % resource.getrusage(resource.RUSAGE_SELF).ru_maxrss); "
-            "sys.exit(code)",
-            "expand", path, "--dialect", "sinumerik", "--tool-width", "3", "--tool-radius", "0.4"]
+    argv = [sys.executable, "-c", figures.CLI_CHILD, "expand", path, "--dialect", "sinumerik", "--tool-width", "3",
+            "--tool-radius", "0.4"]
     if not to_stdout:
         argv += ["-o", out]
     with open(os.devnull, "wb") as null:

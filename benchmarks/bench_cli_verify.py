@@ -6,7 +6,7 @@ Writes a Siemens program of N featured CYCLE93 calls (bench_cli_memory's
 grooves: one every 40 mm along one bar, flank angles, edge radii, base
 chamfers, allowances), runs ``python3 -m freecad_groove verify PROGRAM`` on it
 in a child process (one per run, so each figure is its own) and prints its
-time, its peak resident memory (``ru_maxrss``), its exit status and the
+time, its peak resident memory (its own: figures.CLI_CHILD), its exit status and the
 number of moves simulated. Issue 22's goal: 200 calls verified in 1 s.
 --json: the figures as JSON lines (benchmarks/figures.py).
 """
@@ -22,10 +22,7 @@ import figures
 from bench_cli_memory import program
 
 ROOT = figures.package_root(__file__)
-CHILD = ("import resource, sys; sys.argv[0] = 'freecad_groove'; "
-         "from freecad_groove import cli; code = cli.main(sys.argv[1:]); "
-         "sys.stderr.write('maxrss %d\\n' % resource.getrusage(resource.RUSAGE_SELF).ru_maxrss); "
-         "sys.exit(code)")
+CHILD = figures.CLI_CHILD
 
 
 def run_child(path: str, root: str, env: dict) -> tuple:

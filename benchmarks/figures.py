@@ -104,6 +104,19 @@ def thousands(count: int) -> str:
     return "%d" % count
 
 
+# The code of a command-line child: runs freecad_groove's command line on its arguments, then writes its own peak
+# resident memory as "maxrss KIB" on stderr. Linux's VmHWM (/proc/self/status): getrusage's ru_maxrss is not the
+# child's own peak there, since the child is started with vfork and exec, and exec keeps the larger of the old
+# and new peaks: ru_maxrss gave the benchmark's own peak (a 100k-call program and a 30k-call run's warnings held:
+# 50 MiB) for a command line that peaked at 24 MiB. Elsewhere ru_maxrss (KiB on Linux, bytes on macOS).
+CLI_CHILD = ("import resource, sys; sys.argv[0] = 'freecad_groove'; "
+             "from freecad_groove import cli; code = cli.main(sys.argv[1:]); "
+             "peak = [int(l.split()[1]) for l in open('/proc/self/status') if l.startswith('VmHWM:')] "
+             "if sys.platform.startswith('linux') else []; "
+             "sys.stderr.write('maxrss %d\\n' % (peak[0] if peak else "
+             "resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)); sys.exit(code)")
+
+
 def child_env(folder: str) -> dict:
     """The environment of a benchmark's command-line child: Python's bytecode cached in ``folder`` (outside
     the checkouts; the guard and this machine's shell set PYTHONDONTWRITEBYTECODE), so that after one warm-up

@@ -211,3 +211,21 @@ def test_tree_scripts_measure_the_ref_with_the_tree_s_benchmark_code(tmp_path):
     assert guard_run.Runner(str(ref), "python3", tree_scripts=True).code_roots(bench, guard.REF) == [guard_run.TREE]
     assert guard_run.Runner(str(ref), "python3", tree_scripts=True).code_roots(bench, guard.TREE) == [guard_run.TREE]
     assert guard_run.parse(["--tree-scripts"]).tree_scripts and not guard_run.parse([]).tree_scripts
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="VmHWM is Linux's")
+def test_a_command_line_child_reports_its_own_peak_memory_not_its_parents(tmp_path):
+    # A child started with vfork and exec inherits the parent's peak in ru_maxrss: the 100k-call figure was the
+    # benchmark's own 50 MiB (the program text and the last run's warnings it held), the command line's 24 MiB.
+    import subprocess
+
+    held = bytearray(160 * 2**20)
+    held[::4096] = b"x" * len(held[::4096])  # resident, then freed: the parent's peak stays
+    del held
+    program = tmp_path / "part.nc"
+    program.write_text("G21 G98\nG0 X40. Z2.\nM30\n")
+    proc = subprocess.run([sys.executable, "-c", figures.CLI_CHILD, "expand", str(program), "--dialect", "fanuc"],
+                          cwd=ROOT, capture_output=True, text=True, check=False)
+    assert proc.returncode == 0, proc.stderr
+    peak_mib = int(proc.stderr.split("maxrss")[-1]) / 1024
+    assert 5 < peak_mib < 100, peak_mib
