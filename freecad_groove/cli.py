@@ -488,7 +488,7 @@ def _run(args, name):
         quiet_stdout()
         return 1
     except Exception as exc:  # never a traceback: one line, status 2
-        report(name, 0, unexpected(exc))
+        report(name, 0, unexpected(exc, args.command))
     finally:
         warnings.close()
     return EXIT_ERROR

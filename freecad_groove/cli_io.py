@@ -36,11 +36,12 @@ class Failure(Exception):
         return cls(name, exc.line if exc.line is not None else 0, str(exc))
 
 
-def unexpected(exc: Exception) -> str:
-    """The one line said for an error no check foresaw: running out of memory, else an internal error."""
+def unexpected(exc: Exception, command: str = "") -> str:
+    """The one line said for an error no check foresaw: running out of memory, else an internal error;
+    ``command``: the command that ran (verify and plot hold the program's moves: the line says so)."""
     if isinstance(exc, MemoryError):
-        return ("out of memory: the run needs more memory than this machine gives it (verify and plot hold the "
-                "whole program's moves)")
+        return "out of memory: the run needs more memory than this machine gives it%s" % (
+            " (verify and plot hold the whole program's moves)" if command in ("verify", "plot") else "")
     return "internal error (%s: %s)" % (type(exc).__name__, exc)
 
 

@@ -195,7 +195,7 @@ class _ListReadsCounted:
 
 
 def test_each_op_opening_reads_its_property_list_once_and_adds_what_it_lacks(ops_at_3d18f68):
-    # FreeCAD builds PropertiesList anew at each read: read for each declared property (a Groove op has 32), it
+    # FreeCAD builds PropertiesList anew at each read: read for each declared property (37 reads for a Groove op), it
     # took a third of opening a Job of 500 Groove ops (0.8 ms an op, FreeCAD 1.1).
     for name, (_path, cls) in STORED_OPS.items():
         op = ops_at_3d18f68.getObject(name)
