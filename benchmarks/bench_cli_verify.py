@@ -22,12 +22,11 @@ import figures
 from bench_cli_memory import program
 
 ROOT = figures.package_root(__file__)
-CHILD = figures.CLI_CHILD
 
 
 def run_child(path: str, root: str, env: dict) -> tuple:
     """(seconds, peak MiB, exit status, report) of one ``verify`` child (``env``: figures.child_env)."""
-    argv = [sys.executable, "-c", CHILD, "verify", path, "--dialect", "sinumerik", "--tool-width", "3",
+    argv = [sys.executable, "-c", figures.CLI_CHILD, "verify", path, "--dialect", "sinumerik", "--tool-width", "3",
             "--tool-radius", "0.4"]
     t0 = time.perf_counter()
     proc = subprocess.run(argv, cwd=root, env=env, capture_output=True, check=False)
