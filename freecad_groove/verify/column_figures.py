@@ -49,7 +49,9 @@ def hinted(cut: Flat, grid: Grid, edges: Edges, tol: float) -> Flat:
     for lines, pick in ((grid.centres, None), (grid.edges[:-1], narrow), (grid.edges[1:], narrow)):
         rows = cut if pick is None else col.select(cut, pick[cut[0]])
         if len(rows[0]):
-            core = col.combine(rows, capsule_rows(lines, segments, tol), DIFFERENCE)
+            used = np.unique(rows[0])  # the capsules on the lines of the cut's columns only
+            near, lo, hi = capsule_rows(lines[used], segments, tol)
+            core = col.combine(rows, (used[near], lo, hi), DIFFERENCE)
             deep[core[0][col.lengths(core) > 0]] = True
     return col.select(cut, deep[cut[0]])
 

@@ -100,10 +100,11 @@ def stock_bar(steps: list[Step], approach: Optional[Point], spec: Optional[Stock
     """The bar the program is checked on (see the module)."""
     if approach is None:
         raise ProgramError("no approach point (a G0 to a known X and Z) to derive the stock from: give --stock", 0)
-    points = [(m.x, m.z) for step in steps for m in step.moves] + [p for s in steps for r in s.grooves for p in r]
-    low = min(z for _x, z in points) - CHUCK_MARGIN
-    feeds = [m.z for step in steps for m in step.moves if m.kind == FEED]
-    high = max([approach[1]] + feeds + [z for step in steps for ring in step.grooves for _x, z in ring])
+    # step by step: a list of every move's Z would hold as much as the moves again
+    grooves = [z for step in steps for ring in step.grooves for _x, z in ring]
+    low = min([min(m.z for m in step.moves) for step in steps] + grooves) - CHUCK_MARGIN
+    feeds = [max((m.z for m in step.moves if m.kind == FEED), default=-math.inf) for step in steps]
+    high = max([approach[1]] + feeds + grooves)
     external, faces, internal = (_rings(steps, plunge) for plunge in (MINUS_X, MINUS_Z, PLUS_X))
     radius = approach[0]
     how = "through the first approach point X%.3f Z%.3f" % (2 * approach[0], approach[1])
@@ -141,8 +142,18 @@ def default_stock(steps: list[Step], approach: Optional[Point], spec: Optional[S
 # ---------------------------------------------------------------- steps to ops
 
 
+def _nearest_cycles(steps: list[Step]) -> list[Optional[Step]]:
+    """For each step, the last cycle step before it (None: none)."""
+    out, last = [], None
+    for step in steps:
+        out.append(last)
+        last = step if step.cycle else last
+    return out
+
+
 def _fill_blades(steps: list[Step], tools, default_blade) -> None:
     """Plain steps: the blade of their tool, held as the nearest cycle holds it."""
+    before, after = _nearest_cycles(steps), _nearest_cycles(steps[::-1])[::-1]
     for index, step in enumerate(steps):
         if step.cycle:
             continue
@@ -150,9 +161,7 @@ def _fill_blades(steps: list[Step], tools, default_blade) -> None:
             step.blade = mm_blade(blade_for(step.tool, tools, default_blade), step.scale)
         except ProgramError as exc:
             raise ProgramError("verify needs the blade cutting these moves: %s" % exc, step.line) from None
-        before = [s for s in steps[:index] if s.cycle]
-        after = [s for s in steps[index + 1:] if s.cycle]
-        nearest = before[-1] if before else after[0] if after else None
+        nearest = before[index] if before[index] is not None else after[index]
         step.plunge = nearest.plunge if nearest is not None else MINUS_X
 
 

@@ -18,7 +18,7 @@ import numpy as np
 from . import columns as col
 from .columns import DIFFERENCE, INTERSECTION, UNION, Flat, Grid
 
-SEGMENT_PIECE = 1.0  # mm: longer edges are split (the nearest-edge search looks along Z)
+SEGMENT_PIECE = 1.0  # mm: edges longer along Z are split (the nearest-edge search looks along Z)
 AREA_STEP = 0.005  # mm: the columns a Shape's own area is taken on
 
 
@@ -265,7 +265,8 @@ def padded_rows(grid: Grid, shape: Shape, chunk: int = 1 << 16) -> tuple[np.ndar
 
 class Edges:
     """The edges of a shape's rings, split into pieces at most SEGMENT_PIECE
-    long and sorted along Z, for the distance from points to the shape's
+    long along Z (an edge across Z stays whole: a CYCLE93's air reaches 1000 mm
+    up) and sorted along Z, for the distance from points to the shape's
     boundary: for a point inside a difference or an intersection of rings the
     nearest point outside lies on one of them."""
 
@@ -304,8 +305,8 @@ def corners(shape: Shape, turn: float = 0.05) -> np.ndarray:
 
 
 def _split(p0: np.ndarray, p1: np.ndarray) -> np.ndarray:
-    length = np.hypot(p1[:, 0] - p0[:, 0], p1[:, 1] - p0[:, 1])
-    count = np.maximum(1, np.ceil(length / SEGMENT_PIECE).astype(np.int64))
+    """The edges p0 -> p1 ((z, x) rows) in pieces at most SEGMENT_PIECE long along Z (z0, x0, z1, x1)."""
+    count = np.maximum(1, np.ceil(np.abs(p1[:, 0] - p0[:, 0]) / SEGMENT_PIECE).astype(np.int64))
     edge = np.repeat(np.arange(len(p0)), count)
     k = np.arange(len(edge)) - (np.cumsum(count) - count)[edge]
     t0, t1 = (k / count[edge])[:, None], ((k + 1) / count[edge])[:, None]
