@@ -187,9 +187,12 @@ def _feeds(speed: SpeedState, rapid_rate: float) -> Feeds:
 def step_time(step: Step, rapid_rate: float) -> MachiningTime:
     """The step's time, each move at the feed and speeds in force for it."""
     position, cut, dwell, rapid = step.start, 0.0, 0.0, 0.0
+    known: dict[SpeedState, Feeds] = {}  # the moves of a step share a few states
     for move, speed in zip(step.moves, step.speeds):
         end = (move.x, move.z)
-        feeds = _feeds(speed, rapid_rate)
+        feeds = known.get(speed)
+        if feeds is None:
+            feeds = known[speed] = _feeds(speed, rapid_rate)
         if move.kind == FEED:
             cut += feed_seconds(position, end, feeds) if feeds.feed else 0.0
         elif move.kind == RAPID:
