@@ -18,7 +18,7 @@ from freecad_groove.verify import program_check
 from freecad_groove.verify.column_figures import hinted
 from freecad_groove.verify.columns import Grid
 from freecad_groove.verify.program_record import record_program
-from freecad_groove.verify.shapes import Edges, distances, rings
+from freecad_groove.verify.shapes import Edges, Union, box, distances, rings
 
 AIR = [(0.0, 35.0), (3.0, 35.0), (3.0, 1035.0), (0.0, 1035.0)]  # (z, x): a CYCLE93's air, 1000 mm up
 
@@ -68,6 +68,20 @@ def test_a_rounding_residue_on_the_part_s_wall_in_a_narrow_column_is_not_hinted(
     x = 5.0 - 5.0 * 0.002
     kept = hinted((np.array([10]), np.array([x]), np.array([x + 1e-11])), grid, Edges(part), 0.001)
     assert not len(kept[0])
+
+
+def test_a_union_clipped_keeps_the_parts_that_reach_the_lines_in_their_order():
+    # many short parts and a few long ones (a long one starting far below the lines still reaches them)
+    rng = np.random.default_rng(7)
+    lows = rng.uniform(0.0, 1000.0, 400)
+    lengths = np.where(rng.random(400) < 0.02, rng.uniform(100.0, 600.0, 400), rng.uniform(0.5, 5.0, 400))
+    parts = tuple(box(z, 0.0, z + length, 1.0 + k) for k, (z, length) in enumerate(zip(lows, lengths)))
+    union = Union(parts)
+    for zlo in rng.uniform(-10.0, 1010.0, 50):
+        zhi = zlo + rng.choice([0.0, 0.3, 20.0])
+        expected = [k for k, (z, length) in enumerate(zip(lows, lengths)) if z <= zhi and z + length >= zlo]
+        # each part is a box of its own height 1 + k: the clipped union's parts say which they are
+        assert [int(p.rings[0][:, 1].max()) - 1 for p in union.clipped(zlo, zhi).parts] == expected
 
 
 PROGRAM = """O1
