@@ -2,11 +2,14 @@
 of 200): the shapes' edges are held in pieces short along Z only (the test
 fails with the code before: 2006 pieces of a CYCLE93's air, not 8), a
 gouge's hint takes capsules on the lines of the columns it cuts only and
-leaves a rounding residue alone (fails before: the residue hinted), and a
+leaves a rounding residue alone (fails before: the residue hinted), a union
+clipped to an op's lines finds its parts by their sorted low ends, and a
 plain step finds the cycle nearest it without scanning the program. The
-hint's columns and the plain step keep what the code before did (their tests
-pass on it) and fail when the new code slips: capsules put on the wrong
-columns, the cycle after a plain step taken where one stands before it."""
+hint's columns, the union's parts and the plain step keep what the code
+before did (their tests pass on it) and fail when the new code slips:
+capsules put on the wrong columns, a long part starting far below the lines
+missed or the parts out of order, the cycle after a plain step taken where
+one stands before it."""
 
 import numpy as np
 import pytest
