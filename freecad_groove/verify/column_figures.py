@@ -53,9 +53,11 @@ def hinted(cut: Flat, grid: Grid, edges: Edges, tol: float) -> Flat:
     deep = np.zeros(len(grid), dtype=bool)
     narrow = grid.widths < NARROW
     sides = col.select(cut, narrow[cut[0]] & (col.lengths(cut) > RESIDUE))
-    for lines, rows in ((grid.centres, cut), (grid.edges[:-1], sides), (grid.edges[1:], sides)):
+    side_cols = np.unique(sides[0])
+    # the capsules on the lines of the rows' own columns only
+    for lines, rows, used in ((grid.centres, cut, cols), (grid.edges[:-1], sides, side_cols),
+                              (grid.edges[1:], sides, side_cols)):
         if len(rows[0]):
-            used = np.unique(rows[0])  # the capsules on the lines of the cut's columns only
             near, lo, hi = capsule_rows(lines[used], segments, tol)
             core = col.combine(rows, (used[near], lo, hi), DIFFERENCE)
             deep[core[0][col.lengths(core) > 0]] = True
